@@ -1,0 +1,85 @@
+"""Small whole-array helpers shared by the remeshing operators.
+
+Every operator indexes new vertices in blocks: first the old vertices (when
+kept), then points on edges, then points per face or per half-edge.  These
+helpers compute those blocks from the input's half-edge arrays.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .mesh import Mesh
+
+
+def edge_points(mesh: Mesh, k: int) -> np.ndarray:
+    """Points splitting every edge into ``k + 1`` equal parts.
+
+    Returns
+    -------
+    (E * k, 3) float
+        Point ``j`` (0-based) of edge ``e`` is row ``k * e + j``, at
+        ``(j + 1) / (k + 1)`` of the way from the edge's smaller vertex to its
+        larger one.
+    """
+    a, b = mesh.edges[:, 0], mesh.edges[:, 1]
+    pa, pb = mesh.vertices[a], mesh.vertices[b]
+    t = (np.arange(1, k + 1, dtype=np.float64) / (k + 1))[None, :, None]
+    return (pa[:, None, :] * (1.0 - t) + pb[:, None, :] * t).reshape(-1, 3)
+
+
+def halfedge_edge_point(mesh: Mesh, k: int, j: int) -> np.ndarray:
+    """Index (within :func:`edge_points` ``(mesh, k)``) of the ``j``-th point
+    along every half-edge, counted from the half-edge's tail.
+
+    Returns
+    -------
+    (H,) int
+    """
+    e = mesh.halfedge_edge
+    forward = mesh.corners < mesh.head
+    return k * e + np.where(forward, j, k - 1 - j)
+
+
+def fixed_size(corners_2d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """CSR arrays of faces that all have the same size.
+
+    Parameters
+    ----------
+    corners_2d : (m, k) int
+    """
+    m, k = corners_2d.shape
+    return corners_2d.reshape(-1), np.arange(0, m * k + 1, k, dtype=np.int64)
+
+
+def concat_faces(*parts: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """Concatenate several CSR face blocks into one."""
+    corners = np.concatenate([c for c, _ in parts])
+    offs = [parts[0][1]]
+    shift = parts[0][1][-1]
+    for _, o in parts[1:]:
+        offs.append(o[1:] + shift)
+        shift += o[-1]
+    return corners, np.concatenate(offs)
+
+
+def output(vertices, corners, offsets, twin=None) -> Mesh:
+    """Wrap an operator's output (valid by construction: no re-validation)."""
+    return Mesh.from_csr(vertices, corners, offsets, twin=twin, validate=False)
+
+
+def check_scale(scale: float, name: str = "scale") -> float:
+    """A scale factor must be a finite number strictly between 0 and 1."""
+    try:
+        s = float(scale)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a number in (0, 1), got {scale!r}") from None
+    if not (0.0 < s < 1.0):
+        raise ValueError(f"{name} must be in (0, 1), got {scale!r}")
+    return s
+
+
+def check_mesh(mesh, op: str) -> Mesh:
+    if not isinstance(mesh, Mesh):
+        raise TypeError(f"{op} expects a pentanb.Mesh, got {type(mesh).__name__}")
+    return mesh

@@ -1,0 +1,70 @@
+"""The dual, the paper's smoothing operator (Sections 3 and 5).
+
+"We do not directly compute the weights ... We then apply dual operation
+even number of times to create a smooth mesh."  The dual puts a vertex at
+each face's centroid and makes a face of each vertex; applied twice it gives
+back the mesh's type with every vertex moved to the average of the centroids
+of its neighbouring faces.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ._build import check_mesh, output
+from .mesh import Mesh
+
+__all__ = ["dual", "smooth"]
+
+
+def dual(mesh: Mesh) -> Mesh:
+    """The dual mesh: a vertex at every face centroid, a face for every vertex.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Any closed polygon mesh with V vertices, E edges and F faces.
+
+    Returns
+    -------
+    Mesh
+        F vertices (the plain mean of each face's vertices), E edges and V
+        faces; face ``v`` of the dual goes round vertex ``v`` of ``mesh``
+        counter-clockwise, so the orientation (the sign of the enclosed
+        volume) is kept.  A k-valent vertex becomes a k-gon.
+
+    Notes
+    -----
+    Built from the input's vertex rings; the output's twins are written
+    directly (no sorting): the dual half-edge at the corner of half-edge
+    ``h`` is the twin of the one at ``next[twin[prev[h]]]``.
+    """
+    check_mesh(mesh, "dual")
+    ring, ring_off = mesh.vertex_ring
+    corners = mesh.halfedge_face[ring]
+    pos = np.empty_like(ring)
+    pos[ring] = np.arange(ring.size, dtype=np.int64)
+    twin = pos[mesh.next[mesh.rotation[ring]]]
+    return output(mesh.face_centroids, corners, ring_off, twin)
+
+
+def smooth(mesh: Mesh, duals: int = 2) -> Mesh:
+    """Apply :func:`dual` ``duals`` times (the paper's smoothing).
+
+    An even count keeps the mesh's type (a pentagonal mesh stays pentagonal).
+
+    Parameters
+    ----------
+    mesh : Mesh
+    duals : int, >= 0
+    """
+    duals = _check_count(duals, "duals")
+    for _ in range(duals):
+        mesh = dual(mesh)
+    return mesh
+
+
+def _check_count(value, name: str) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
+        raise ValueError(f"{name} must be a non-negative integer, got {value!r}")
+    return int(value)

@@ -1,0 +1,310 @@
+"""Test shapes: the Platonic solids, tori, higher genus and a low-poly animal.
+
+Every function returns a closed, outward-oriented :class:`~pentanb.Mesh`.
+:data:`SHAPES` lists them by name (with their default sizes) for sliders,
+the command line and the tests; :func:`get` builds one by name.
+"""
+
+from __future__ import annotations
+
+import itertools
+from typing import Callable
+
+import numpy as np
+
+from .dual import dual
+from .mesh import Mesh, MeshError
+
+__all__ = ["tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron", "torus",
+           "hexagonal_torus", "genus_surface", "double_torus", "hexagonal_surface",
+           "voxels", "animal", "SHAPES", "get"]
+
+PHI = (1.0 + 5.0 ** 0.5) / 2.0
+
+
+def _outward(vertices: np.ndarray, faces: np.ndarray) -> Mesh:
+    """A convex solid around the origin, every face turned to face outwards."""
+    faces = np.asarray(faces, dtype=np.int64)
+    p = vertices[faces]
+    normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    flip = np.einsum("ij,ij->i", normal, p.mean(axis=1)) < 0
+    faces[flip] = faces[flip, ::-1]
+    return Mesh(vertices, faces)
+
+
+def tetrahedron() -> Mesh:
+    """Regular tetrahedron inscribed in the cube [-1, 1]^3 (4 triangles)."""
+    v = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], dtype=float)
+    return _outward(v, [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]])
+
+
+def cube() -> Mesh:
+    """The cube [-1, 1]^3 (6 quads); vertex ``4x + 2y + z`` has coordinates (x, y, z) in {-1, 1}."""
+    v = np.array(list(itertools.product([-1.0, 1.0], repeat=3)))
+    faces = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4],
+             [1, 5, 7, 3]]
+    return _outward(v, faces)
+
+
+def octahedron() -> Mesh:
+    """Regular octahedron with vertices at +-1 on the axes (8 triangles)."""
+    v = np.concatenate([np.eye(3), -np.eye(3)])
+    faces = [[a + 3 * sa, b + 3 * sb, c + 3 * sc] for sa, sb, sc in
+             itertools.product([0, 1], repeat=3) for a, b, c in [(0, 1, 2)]]
+    return _outward(v, faces)
+
+
+def icosahedron() -> Mesh:
+    """Regular icosahedron, vertices (0, +-1, +-phi) and cyclic shifts (20 triangles)."""
+    base = [(0.0, s1, s2 * PHI) for s1 in (-1, 1) for s2 in (-1, 1)]
+    v = np.array([np.roll(p, k) for k in range(3) for p in base])
+    d = np.linalg.norm(v[:, None] - v[None], axis=2)
+    near = np.isclose(d, 2.0)
+    faces = [t for t in itertools.combinations(range(12), 3)
+             if near[t[0], t[1]] and near[t[1], t[2]] and near[t[0], t[2]]]
+    return _outward(v, faces)
+
+
+def dodecahedron() -> Mesh:
+    """Regular dodecahedron (12 pentagons): the dual of :func:`icosahedron`."""
+    return dual(icosahedron())
+
+
+def torus(rings: int = 12, sides: int = 8, radius: float = 1.0,
+          tube: float = 0.4) -> Mesh:
+    """A torus as a ``rings x sides`` grid of quads (genus 1).
+
+    Parameters
+    ----------
+    rings : int, >= 3
+        Quads around the central axis (z).
+    sides : int, >= 3
+        Quads around the tube.
+    radius, tube : float
+        Distance of the tube's centre from the axis, and the tube's radius.
+
+    Notes
+    -----
+    Vertex ``(i, j)`` (index ``i * sides + j``) sits at angles
+    ``2 pi (i - 1/2) / rings`` around the axis and ``2 pi (j - 1/2) / sides``
+    around the tube, so face 0 is centred on the outer equator at +x.
+    """
+    rings, sides = _grid_size(rings, sides)
+    if not (0 < tube < radius):
+        raise ValueError(f"need 0 < tube < radius, got tube={tube}, radius={radius}")
+    i, j = np.meshgrid(np.arange(rings), np.arange(sides), indexing="ij")
+    v = _torus_points((i - 0.5) / rings, (j - 0.5) / sides, radius, tube)
+    idx = lambda a, b: (a % rings) * sides + (b % sides)  # noqa: E731
+    quads = np.stack([idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)],
+                     axis=-1).reshape(-1, 4)
+    return Mesh(v.reshape(-1, 3), quads)
+
+
+def hexagonal_torus(rings: int = 12, sides: int = 6, radius: float = 1.0,
+                    tube: float = 0.4) -> Mesh:
+    """A torus of hexagons only, every vertex 3-valent: a (6, 3) mesh (Figure 4A).
+
+    The dual of a torus grid whose quads are cut by parallel diagonals (every
+    vertex of that triangulation is 6-valent); the hexagons' corners are put
+    back on the torus at the triangles' parametric centres.
+
+    Returns
+    -------
+    Mesh
+        ``rings * sides`` hexagons, ``2 rings sides`` vertices; face ``i *
+        sides + j`` surrounds grid point (i, j), face 0 on the outer equator.
+    """
+    rings, sides = _grid_size(rings, sides)
+    if not (0 < tube < radius):
+        raise ValueError(f"need 0 < tube < radius, got tube={tube}, radius={radius}")
+    i, j = np.meshgrid(np.arange(rings), np.arange(sides), indexing="ij")
+    idx = lambda a, b: (a % rings) * sides + (b % sides)  # noqa: E731
+    a, b, c, d = idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)
+    tris = np.concatenate([np.stack([a, b, c], -1).reshape(-1, 3),
+                           np.stack([a, c, d], -1).reshape(-1, 3)])
+    grid = _torus_points(i / rings, j / sides, radius, tube).reshape(-1, 3)
+    hexes = dual(Mesh(grid, tris))
+    # triangle centres in grid units: (i + 2/3, j + 1/3) and (i + 1/3, j + 2/3)
+    ci = np.concatenate([(i + 2 / 3).ravel(), (i + 1 / 3).ravel()])
+    cj = np.concatenate([(j + 1 / 3).ravel(), (j + 2 / 3).ravel()])
+    return hexes.with_vertices(_torus_points(ci / rings, cj / sides, radius, tube))
+
+
+def _torus_points(u, v, radius, tube):
+    t, p = 2 * np.pi * np.asarray(u), 2 * np.pi * np.asarray(v)
+    r = radius + tube * np.cos(p)
+    return np.stack([r * np.cos(t), r * np.sin(t), tube * np.sin(p)], axis=-1)
+
+
+def _grid_size(rings, sides):
+    for name, value in (("rings", rings), ("sides", sides)):
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 3:
+            raise ValueError(f"{name} must be an integer >= 3, got {value!r}")
+    return int(rings), int(sides)
+
+
+def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8,
+                  sides: int = 6) -> Mesh:
+    """A chain of ``genus`` tori joined where they touch (Figure 4B style).
+
+    Each torus loses the face on its outer equator at +x (face 0) and, in
+    the middle of the chain, the one at -x; neighbours are mirror images
+    glued along those faces.  The glued face's corners are flattened onto
+    the mirror plane first.  Every face of ``base`` is kept, so a chain of
+    hexagonal tori is all hexagons (its 6 (g - 1) seam vertices are
+    4-valent, as equation (1) demands for g >= 2).
+
+    Parameters
+    ----------
+    genus : int, >= 1
+    base : Mesh, optional
+        A torus whose face 0 is centred at +x and face ``rings // 2 * sides``
+        at -x, symmetric under a half turn about z -- as :func:`torus` and
+        :func:`hexagonal_torus` build it with an even ``rings``.  Default:
+        ``torus(rings, sides)``.
+    """
+    if isinstance(genus, bool) or not isinstance(genus, (int, np.integer)) or genus < 1:
+        raise ValueError(f"genus must be an integer >= 1, got {genus!r}")
+    if base is None:
+        if rings % 2:
+            raise ValueError(f"rings must be even to chain tori, got {rings}")
+        base = torus(rings, sides)
+    genus = int(genus)
+    if genus == 1:
+        return base
+    right, left = 0, (rings // 2) * sides
+    faces = base.faces
+    v = base.vertices.copy()
+    fr, fl = faces[right], faces[left]
+    a = float(np.abs(np.concatenate([v[fr, 0], v[fl, 0]])).mean())
+    v[fr, 0] = a
+    v[fl, 0] = -a
+    n = base.n_vertices
+    verts, all_faces = [], []
+    rep = np.arange(genus * n, dtype=np.int64)
+    for k in range(genus):
+        if k % 2:
+            pos = v.copy()
+            pos[:, 0] = 2 * a - pos[:, 0]
+            pos[:, 0] += 4 * a * (k // 2)
+            fk = [f[::-1] for f in faces]
+        else:
+            pos = v.copy()
+            pos[:, 0] += 4 * a * (k // 2)
+            fk = list(faces)
+        # glue to the previous copy: odd copies meet it at the right face,
+        # even ones at the left face
+        drop = set()
+        if k > 0:
+            glue = right if k % 2 else left
+            drop.add(glue)
+            rep[k * n + faces[glue]] = rep[(k - 1) * n + faces[glue]]
+        if k < genus - 1:
+            drop.add(left if k % 2 else right)
+        verts.append(pos)
+        all_faces += [k * n + f for idx, f in enumerate(fk) if idx not in drop]
+    used, inverse = np.unique(rep, return_inverse=True)
+    stacked = np.concatenate(verts)[used]
+    return Mesh(stacked, [inverse[f] for f in all_faces])
+
+
+def double_torus(rings: int = 8, sides: int = 6) -> Mesh:
+    """Genus 2: two quad tori glued along a face (see :func:`genus_surface`)."""
+    return genus_surface(2, torus(rings, sides), rings, sides)
+
+
+def hexagonal_surface(genus: int = 2, rings: int = 8, sides: int = 6) -> Mesh:
+    """A mesh of hexagons only with any genus >= 1 (Figure 4B style).
+
+    ``genus`` hexagonal tori glued in a chain; see :func:`genus_surface`.
+    """
+    return genus_surface(genus, hexagonal_torus(rings, sides), rings, sides)
+
+
+def voxels(occupied) -> Mesh:
+    """The boundary of a set of unit cubes, as quads.
+
+    Parameters
+    ----------
+    occupied : (X, Y, Z) bool array_like
+        Which cells are solid.  Cells may touch only face to face (two
+        cells sharing just an edge or a corner make a non-manifold surface,
+        which is refused with :class:`MeshError`).
+    """
+    occ = np.asarray(occupied, dtype=bool)
+    if occ.ndim != 3 or not occ.any():
+        raise MeshError("voxels need a 3-D array with at least one solid cell")
+    pad = np.pad(occ, 1)
+    shape = np.array(pad.shape) + 1
+    quads = []
+    # square of the face at +axis, counter-clockwise seen from outside
+    unit = {0: [(0, 0, 0), (0, 1, 0), (0, 1, 1), (0, 0, 1)],
+            1: [(0, 0, 0), (0, 0, 1), (1, 0, 1), (1, 0, 0)],
+            2: [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]}
+    for axis in range(3):
+        for sign in (1, -1):
+            nb = np.roll(pad, -sign, axis=axis)
+            cells = np.argwhere(pad & ~nb)
+            sq = np.array(unit[axis])
+            if sign == 1:
+                sq = sq + np.eye(3, dtype=int)[axis]
+            else:
+                sq = sq[::-1]
+            corners = cells[:, None, :] + sq[None]
+            quads.append(np.ravel_multi_index(corners.reshape(-1, 3).T, shape).reshape(-1, 4))
+    quads = np.concatenate(quads)
+    used, inverse = np.unique(quads, return_inverse=True)
+    pts = np.stack(np.unravel_index(used, shape), axis=1).astype(float) - 1.0
+    return Mesh(pts, inverse.reshape(-1, 4))
+
+
+def animal() -> Mesh:
+    """A low-poly rabbit of unit cubes standing in for Figure 12's model.
+
+    Genus 0 with hard features: a body, four legs, a head with a snout, two
+    long ears and a tail (a few hundred quads), scaled into [-1, 1]^3.
+    """
+    occ = np.zeros((11, 5, 10), dtype=bool)
+    occ[2:7, 1:4, 2:5] = True                 # body
+    for x in (2, 6):
+        for y in (1, 3):
+            occ[x, y, 0:2] = True             # legs
+    occ[7:9, 1:4, 4:7] = True                 # head
+    occ[9, 2, 5] = True                       # snout
+    occ[7, 1, 7:10] = True                    # ears
+    occ[7, 3, 7:10] = True
+    occ[1, 2, 4] = True                       # tail
+    m = voxels(occ)
+    v = m.vertices - m.vertices.mean(axis=0)
+    return m.with_vertices(v / np.abs(v).max())
+
+
+#: Every named shape with its default size, for menus and tests.
+SHAPES: dict[str, Callable[[], Mesh]] = {
+    "tetrahedron": tetrahedron,
+    "cube": cube,
+    "octahedron": octahedron,
+    "dodecahedron": dodecahedron,
+    "icosahedron": icosahedron,
+    "torus": torus,
+    "hexagonal_torus": hexagonal_torus,
+    "double_torus": double_torus,
+    "hexagonal_genus2": lambda: hexagonal_surface(2),
+    "genus3": lambda: genus_surface(3),
+    "animal": animal,
+}
+
+
+def get(name: str) -> Mesh:
+    """Build the shape called ``name`` (see :data:`SHAPES`).
+
+    Raises
+    ------
+    ValueError
+        For an unknown name; the message lists the known ones.
+    """
+    try:
+        return SHAPES[name]()
+    except (KeyError, TypeError):
+        raise ValueError(f"unknown shape {name!r}; known shapes: {', '.join(SHAPES)}") \
+            from None
