@@ -13,7 +13,7 @@ load when a drawing function is first called.
 
 from __future__ import annotations
 
-from . import shapes
+from . import shapes, topology
 from .classic import (corner_cutting, honeycomb, loop_remesh, preserve_hexagons,
                       sqrt3_remesh, triangulate, vertex_insertion)
 from .dual import dual, smooth
@@ -44,7 +44,7 @@ def __getattr__(name):
         import importlib
         module, attr = _LAZY[name]
         return getattr(importlib.import_module(module), attr)
-    if name in ("figures", "topology"):
+    if name == "figures":
         import importlib
-        return importlib.import_module(f"pentanb.{name}")
+        return importlib.import_module("pentanb.figures")
     raise AttributeError(f"module 'pentanb' has no attribute {name!r}")

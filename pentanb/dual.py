@@ -35,17 +35,38 @@ def dual(mesh: Mesh) -> Mesh:
 
     Notes
     -----
-    Built from the input's vertex rings; the output's twins are written
-    directly (no sorting): the dual half-edge at the corner of half-edge
-    ``h`` is the twin of the one at ``next[twin[prev[h]]]``.
+    Built from the input's vertex rings; the output's twins and vertex
+    rings are written directly (no sorting): the dual half-edge at the
+    corner of half-edge ``h`` is the twin of the one at
+    ``next[twin[prev[h]]]``, and the dual half-edges of a face's half-edges,
+    in face order, go round the dual vertex of that face.  The dual of a
+    dual reuses the connectivity of the mesh it came from.
     """
     check_mesh(mesh, "dual")
+    source = mesh.__dict__.get("_dual_source")
+    if source is not None:
+        # mesh is itself a dual: its dual has the connectivity of the mesh it
+        # came from (dual(dual(m)) has m's faces in m's order), only new positions
+        out = source._placed(mesh.face_centroids)
+    else:
+        out = _dual_connectivity(mesh)
+    out.__dict__["_dual_source"] = mesh._connectivity()
+    return out
+
+
+def _dual_connectivity(mesh: Mesh) -> Mesh:
     ring, ring_off = mesh.vertex_ring
     corners = mesh.halfedge_face[ring]
     pos = np.empty_like(ring)
     pos[ring] = np.arange(ring.size, dtype=np.int64)
-    twin = pos[mesh.next[mesh.rotation[ring]]]
-    return output(mesh.face_centroids, corners, ring_off, twin)
+    out = output(mesh.face_centroids, corners, ring_off)
+    nxt, rot = mesh.next, mesh.rotation
+    out.__dict__["_twin_maker"] = lambda: pos[nxt[rot[ring]]]
+    # the dual's vertex f is surrounded by the dual half-edges of face f's
+    # half-edges, in face order: its rotation order (rotation[pos[h]] == pos[next[h]])
+    out.__dict__["_rings"] = (pos, mesh.offsets)
+    return out
+
 
 
 def smooth(mesh: Mesh, duals: int = 2) -> Mesh:

@@ -129,8 +129,23 @@ class Mesh:
         v = _as_vertices(vertices)
         if v.shape != self._vertices.shape:
             raise MeshError(f"expected {self._vertices.shape} vertices, got {v.shape}")
+        return self._connectivity()._placed(v)
+
+    def _connectivity(self) -> "Mesh":
+        """A vertex-less shell sharing this mesh's faces and cached connectivity."""
+        shell = object.__new__(Mesh)
+        shell._vertices = None
+        shell._corners = self._corners
+        shell._offsets = self._offsets
+        for key in _CONNECTIVITY_CACHE[:-1]:  # not _dual_source: no chains
+            if key in self.__dict__:
+                shell.__dict__[key] = self.__dict__[key]
+        return shell
+
+    def _placed(self, vertices: np.ndarray) -> "Mesh":
+        """This mesh's connectivity (and its caches) with the given positions."""
         out = object.__new__(Mesh)
-        out._init(v, self._corners, self._offsets)
+        out._init(vertices, self._corners, self._offsets)
         for key in _CONNECTIVITY_CACHE:
             if key in self.__dict__:
                 out.__dict__[key] = self.__dict__[key]
@@ -261,6 +276,9 @@ class Mesh:
     @cached_property
     def twin(self) -> IntArray:
         """(H,) int: the opposite half-edge (same edge, other face)."""
+        maker = self.__dict__.pop("_twin_maker", None)
+        if maker is not None:  # an operator that knows the twins, computed on demand
+            return _readonly(maker())
         twin, _ = _match_twins(self._corners, self.head, self.n_vertices)
         return _readonly(twin)
 
@@ -315,8 +333,32 @@ class Mesh:
     @cached_property
     def face_centroids(self) -> FloatArray:
         """(m, 3) float: the plain mean of each face's vertices."""
-        sums = np.add.reduceat(self._vertices[self._corners], self._offsets[:-1], axis=0)
-        return _readonly(sums / self.face_sizes[:, None])
+        return _readonly(self.face_means(self._vertices))
+
+    def face_means(self, values: ArrayLike) -> np.ndarray:
+        """Average per-vertex values over every face.
+
+        Parameters
+        ----------
+        values : (n,) or (n, d) float
+
+        Returns
+        -------
+        (m,) or (m, d) float
+        """
+        values = np.asarray(values, dtype=np.float64)
+        cols = values.reshape(values.shape[0], -1).T
+        m = self.n_faces
+        k = int(self._offsets[1]) if m else 0
+        uniform = k and self._corners.size == k * m and \
+            self._offsets[-2] == k * (m - 1) and not np.any(np.diff(self._offsets) - k)
+        out = np.empty((m, cols.shape[0]))
+        for i, col in enumerate(cols):  # one coordinate at a time: 1-D takes are fastest
+            g = np.ascontiguousarray(col).take(self._corners)
+            out[:, i] = g.reshape(m, k).sum(axis=1) if uniform else \
+                np.add.reduceat(g, self._offsets[:-1])
+        out /= (k if uniform else self.face_sizes[:, None])
+        return out.reshape((m,) + values.shape[1:])
 
     @cached_property
     def face_normals(self) -> FloatArray:
@@ -443,7 +485,7 @@ class Mesh:
 
 _CONNECTIVITY_CACHE = ("faces", "face_sizes", "valences", "n_components", "halfedge_face",
                        "next", "prev", "head", "twin", "halfedge_edge", "edge_halfedge",
-                       "edges", "rotation", "_rings", "component_labels")
+                       "edges", "rotation", "_rings", "component_labels", "_dual_source")
 
 
 # ---------------------------------------------------------------------- helpers
@@ -494,22 +536,35 @@ def _as_csr(faces) -> tuple[IntArray, IntArray]:
 
 
 def _match_twins(tail, head, n, check=False):
-    """Pair every half-edge (u, w) with its opposite (w, u) by sorting keys once."""
-    key = tail * np.int64(n) + head
+    """Pair every half-edge (u, w) with its opposite (w, u) by sorting once.
+
+    The key of a half-edge is its undirected edge with the direction as the
+    lowest bit, so after one (radix-friendly, stable) argsort the two halves
+    of every edge sit side by side.  When that pattern breaks, a slower
+    search names the first duplicate directed edge or boundary edge
+    (``problem = (kind, halfedge)``; only with ``check``).
+    """
+    n = np.int64(n)
+    lo = np.minimum(tail, head)
+    key = (lo * n + (tail + head - lo)) * 2 + (tail > head)
     order = np.argsort(key, kind="stable")
     skey = key[order]
-    problem = None
-    if check:
-        dup = np.flatnonzero(skey[1:] == skey[:-1])
-        if dup.size:
-            problem = ("duplicate", int(order[dup[0]]))
-    want = head * np.int64(n) + tail
-    pos = np.searchsorted(skey, want)
-    pos = np.minimum(pos, skey.size - 1)
-    found = skey[pos] == want
-    if check and problem is None and not found.all():
-        problem = ("boundary", int(np.flatnonzero(~found)[0]))
-    return order[pos], problem
+    if skey.size % 2 == 0:
+        a, b = skey[0::2], skey[1::2]
+        if not np.any(a & 1) and np.array_equal(a + 1, b):
+            twin = np.empty_like(order)
+            twin[order[0::2]] = order[1::2]
+            twin[order[1::2]] = order[0::2]
+            return twin, None
+    if not check:
+        raise MeshError("the faces do not pair up into a closed, oriented manifold")
+    dup = np.flatnonzero(skey[1:] == skey[:-1])
+    if dup.size:
+        return None, ("duplicate", int(order[dup[0]]))
+    want = (lo * n + (tail + head - lo)) * 2 + (tail < head)
+    pos = np.minimum(np.searchsorted(skey, want), skey.size - 1)
+    missing = np.flatnonzero(skey[pos] != want)
+    return None, ("boundary", int(missing[0]))
 
 
 def _vertex_rings(rotation, tail, valences):
@@ -527,16 +582,21 @@ def _vertex_rings(rotation, tail, valences):
     # any outgoing half-edge per vertex: the last one written wins
     start[tail] = np.arange(tail.size, dtype=np.int64)
     ring = np.empty(tail.size, dtype=np.int64)
-    cur = start
-    verts = np.arange(n, dtype=np.int64)
-    base = ring_off[:-1]
-    for k in range(int(valences.max(initial=0))):
+    top = int(valences.max(initial=0))
+    # vertices by valence (a radix sort on small ints): at step k the vertices
+    # still walking are a suffix of this order
+    small = valences.astype(np.uint16 if top < 65536 else np.int64)
+    order = np.argsort(small, kind="stable")
+    first = np.searchsorted(small[order], np.arange(top), side="right")
+    cur = start[order]
+    base = ring_off[:-1][order]
+    for k in range(top):
+        lo = int(first[k])
+        c = cur[lo:]
         if k:
-            keep = valences[verts] > k
-            verts = verts[keep]
-            cur = rotation[cur[keep]]
-            base = base[keep]
-        ring[base + k] = cur
+            c = rotation[c]
+            cur[lo:] = c
+        ring[base[lo:] + k] = c
     return ring, ring_off
 
 

@@ -54,7 +54,31 @@ def pentagonalize(mesh: Mesh) -> Mesh:
                          5 * nxt + 4, 5 * prv + 3], axis=1)
     vertices = np.concatenate([mesh.vertices, edge_points(mesh, 2), mesh.face_centroids])
     corners, offsets = fixed_size(faces)
-    return output(vertices, corners, offsets, new_twin.reshape(-1))
+    out = output(vertices, corners, offsets, new_twin.reshape(-1))
+    out.__dict__["_rings"] = _pentagonalized_rings(mesh, t1 - n)
+    return out
+
+
+def _pentagonalized_rings(mesh: Mesh, t1: np.ndarray):
+    """The vertex rings of ``pentagonalize(mesh)``, written from ``mesh``'s.
+
+    Half-edge ``5h + s`` is slot ``s`` of the pentagon of ``h``.  Around an
+    old vertex v: ``5 prev[h] + 2`` for v's outgoing h, in v's order; around
+    the trisection point t1(h): ``5h, 5 prev[h] + 3, 5 twin[h] + 1``; around
+    the centre of f: ``5h + 4`` for f's half-edges in face order.
+    """
+    prv, twin = mesh.prev, mesh.twin
+    ring, ring_off = mesh.vertex_ring
+    H = mesh.n_halfedges
+    h_of_point = np.empty(H, dtype=np.int64)
+    h_of_point[t1] = np.arange(H, dtype=np.int64)
+    h = h_of_point
+    trisection = np.stack([5 * h, 5 * prv[h] + 3, 5 * twin[h] + 1], axis=1).reshape(-1)
+    rings = np.concatenate([5 * prv[ring] + 2, trisection,
+                            5 * np.arange(H, dtype=np.int64) + 4])
+    offsets = np.concatenate([ring_off, ring_off[-1] + 3 * np.arange(1, H + 1),
+                              ring_off[-1] + 3 * H + mesh.offsets[1:]])
+    return rings, offsets
 
 
 def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
