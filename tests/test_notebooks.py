@@ -77,8 +77,10 @@ def _execute(path: Path, kernel_dir: str):
     client = nbclient.NotebookClient(
         nb, km=km, kernel_name=KERNEL_NAME, timeout=CELL_TIMEOUT,
         resources={"metadata": {"path": str(NOTEBOOK_DIR)}},
-        allow_errors=False, store_widget_state=True)
-    client.execute(cwd=str(NOTEBOOK_DIR), env=_kernel_env())
+        allow_errors=False, store_widget_state=True, shutdown_kernel="immediate")
+    # cleanup_kc: shut the kernel down afterwards although the client did not
+    # create its manager
+    client.execute(cwd=str(NOTEBOOK_DIR), env=_kernel_env(), cleanup_kc=True)
     return nb
 
 
