@@ -413,21 +413,26 @@ class Mesh:
 
     @cached_property
     def component_labels(self) -> IntArray:
-        """(n,) int: a component label (its smallest vertex index) per vertex."""
-        u = self._corners
-        w = self.head
+        """(n,) int: a component label (its smallest vertex index) per vertex.
+
+        Shiloach-Vishkin style: hook the larger root of every edge whose ends
+        disagree onto the smaller one, then jump pointers until every vertex
+        points at its root; a few rounds on any mesh.
+        """
+        u, w = self.edges[:, 0], self.edges[:, 1]
         lab = np.arange(self.n_vertices, dtype=np.int64)
         while True:
-            old = lab.copy()
-            np.minimum.at(lab, u, lab[w])
-            lab = lab[lab]  # pointer jumping
+            lu, lw = lab[u], lab[w]
+            differ = lu != lw
+            if not differ.any():
+                return _readonly(lab)
+            lu, lw = lu[differ], lw[differ]
+            np.minimum.at(lab, np.maximum(lu, lw), np.minimum(lu, lw))
             while True:
                 jumped = lab[lab]
                 if np.array_equal(jumped, lab):
                     break
                 lab = jumped
-            if np.array_equal(lab, old):
-                return _readonly(lab)
 
     # ------------------------------------------------------------------ checks
     def _validate(self) -> None:
