@@ -1,0 +1,512 @@
+"""Tests of :mod:`pentanb.mesh`: construction, validation messages, derived arrays.
+
+Expected values are hand computations on tiny meshes (the cube [-1, 1]^3 of
+:func:`pentanb.shapes.cube`, whose vertex ``4x + 2y + z`` sits at (x, y, z)
+with x, y, z in {-1, 1} written as bits) or Euler's formula.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+from helpers import face_lists, two_cubes
+
+from pentanb import Mesh, MeshError, shapes
+
+CUBE_FACES = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4],
+              [1, 5, 7, 3]]
+
+
+def cube_vertices() -> np.ndarray:
+    # vertex 4x + 2y + z at (x, y, z), bits mapped 0 -> -1, 1 -> +1
+    return np.array([[2 * ((i >> 2) & 1) - 1, 2 * ((i >> 1) & 1) - 1, 2 * (i & 1) - 1]
+                     for i in range(8)], dtype=float)
+
+
+def tetra_faces(a, b, c, d):
+    """The four faces of an outward tetrahedron whose vertices a, b, c, d sit
+    like the origin, x, y and z of ``TETRA``."""
+    return [[a, c, b], [a, b, d], [b, c, d], [a, d, c]]
+
+
+TETRA = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
+
+
+# ====================================================================== construction
+def test_cube_from_ragged_list():
+    m = Mesh(cube_vertices(), CUBE_FACES)
+    assert [f.tolist() for f in m.faces] == CUBE_FACES
+    assert m.offsets.tolist() == [0, 4, 8, 12, 16, 20, 24]
+    assert m.corners.tolist() == sum(CUBE_FACES, [])
+
+
+def test_faces_as_int_array_and_as_list_agree():
+    a = Mesh(cube_vertices(), np.array(CUBE_FACES, dtype=np.int32))
+    b = Mesh(cube_vertices().tolist(), CUBE_FACES)
+    assert np.array_equal(a.corners, b.corners)
+    assert np.array_equal(a.offsets, b.offsets)
+    assert a.corners.dtype == np.int64
+    assert np.array_equal(a.vertices, b.vertices)
+
+
+def test_faces_as_float_array_of_whole_numbers_are_accepted():
+    m = Mesh(cube_vertices(), np.array(CUBE_FACES, dtype=float))
+    assert m.corners.tolist() == sum(CUBE_FACES, [])
+
+
+def test_non_integer_face_indices_are_refused():
+    with pytest.raises(MeshError, match="integers"):
+        Mesh(cube_vertices(), np.array(CUBE_FACES, dtype=float) + 0.5)
+    faces = [list(f) for f in CUBE_FACES]
+    faces[2] = [0, 4.5, 5, 1]
+    with pytest.raises(MeshError, match=r"face 2 has non-integer vertex indices"):
+        Mesh(cube_vertices(), faces)
+
+
+def test_mixed_face_sizes_in_one_list():
+    # a square pyramid: one quad and four triangles
+    v = [[1, 1, 0], [-1, 1, 0], [-1, -1, 0], [1, -1, 0], [0, 0, 1]]
+    faces = [[3, 2, 1, 0], [0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]]
+    m = Mesh(v, faces)
+    assert m.face_sizes.tolist() == [4, 3, 3, 3, 3]
+    assert m.offsets.tolist() == [0, 4, 7, 10, 13, 16]
+    assert m.valences.tolist() == [3, 3, 3, 3, 4]
+    assert (m.n_vertices, m.n_edges, m.n_faces) == (5, 8, 5)
+
+
+def test_mesh_error_is_a_value_error():
+    assert issubclass(MeshError, ValueError)
+
+
+# ====================================================================== validation messages
+def test_error_index_out_of_range_names_face_and_index():
+    faces = [list(f) for f in CUBE_FACES]
+    faces[3] = [2, 3, 8, 6]
+    with pytest.raises(MeshError, match=r"face 3 uses vertex index 8, out of range for 8 "
+                                        r"vertices"):
+        Mesh(cube_vertices(), faces)
+
+
+def test_error_negative_index_names_face_and_index():
+    faces = [list(f) for f in CUBE_FACES]
+    faces[1] = [4, 6, -1, 5]
+    with pytest.raises(MeshError, match=r"face 1 uses vertex index -1"):
+        Mesh(cube_vertices(), faces)
+
+
+def test_error_face_with_fewer_than_3_vertices():
+    with pytest.raises(MeshError, match=r"face 4 has 2 vertices \[0, 1\]"):
+        Mesh(TETRA, tetra_faces(0, 1, 2, 3) + [[0, 1]])
+
+
+def test_error_face_with_repeated_vertex():
+    faces = [list(f) for f in CUBE_FACES]
+    faces[5] = [1, 5, 5, 3]
+    with pytest.raises(MeshError, match=r"face 5 \[1, 5, 5, 3\] repeats vertex 5 "
+                                        r"\(3 distinct vertices\)"):
+        Mesh(cube_vertices(), faces)
+
+
+def test_error_flipped_face_names_the_directed_edge_and_both_faces():
+    faces = [list(f) for f in CUBE_FACES]
+    faces[2] = faces[2][::-1]          # [1, 5, 4, 0]: every edge now runs like its neighbour's
+    with pytest.raises(MeshError, match=r"directed edge \((\d+), (\d+)\) is used by faces "
+                                        r"\[(\d+), (\d+)\]: inconsistent orientation") as info:
+        Mesh(cube_vertices(), faces)
+    u, w, f, g = map(int, re.search(r"\((\d+), (\d+)\).*\[(\d+), (\d+)\]",
+                                         str(info.value)).groups())
+    assert 2 in (f, g)
+    for k in (f, g):
+        fk = faces[k]
+        assert any(fk[i] == u and fk[(i + 1) % 4] == w for i in range(4))
+
+
+def test_error_three_faces_on_one_edge():
+    # three triangles hinge on edge {0, 1}: two of them run 0 -> 1
+    v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]], dtype=float)
+    with pytest.raises(MeshError, match=r"directed edge \(0, 1\) is used by faces \[0, 2\]: "
+                                        r".*non-manifold edge"):
+        Mesh(v, [[0, 1, 2], [1, 0, 3], [0, 1, 4]])
+
+
+def test_error_two_tetrahedra_sharing_an_edge():
+    # closed, consistently oriented pieces, but edge {0, 1} has four faces
+    v = np.concatenate([TETRA, [[0, -1, 0], [0, 0, -1]]])
+    faces = tetra_faces(0, 1, 2, 3) + tetra_faces(0, 1, 4, 5)
+    with pytest.raises(MeshError, match=r"directed edge \((0, 1|1, 0)\) is used by faces"):
+        Mesh(v, faces)
+
+
+def test_error_boundary_names_the_edge_and_face():
+    faces = [list(f) for f in CUBE_FACES]
+    removed = faces.pop(5)             # [1, 5, 7, 3]
+    with pytest.raises(MeshError, match=r"edge \((\d+), (\d+)\) of face (\d+) has only one "
+                                        r"side \(a boundary\)") as info:
+        Mesh(cube_vertices(), faces)
+    u, w, f = map(int, re.search(r"\((\d+), (\d+)\) of face (\d+)", str(info.value)).groups())
+    # the edge runs opposite to one of the removed face's edges, inside face f
+    assert any(removed[i] == w and removed[(i + 1) % 4] == u for i in range(4))
+    assert any(faces[f][i] == u and faces[f][(i + 1) % 4] == w for i in range(4))
+
+
+def test_error_vertex_with_two_fans():
+    # two tetrahedra touching at vertex 3 = (0, 0, 1) only: the second is
+    # the first moved up by 1, its vertex 0 landing on vertex 3
+    v = np.concatenate([TETRA, TETRA[1:] + [0, 0, 1]])
+    faces = tetra_faces(0, 1, 2, 3) + tetra_faces(3, 4, 5, 6)
+    with pytest.raises(MeshError, match=r"vertex 3 is non-manifold: its faces form more than "
+                                        r"one fan"):
+        Mesh(v, faces)
+
+
+def test_error_unused_vertex_names_it_and_counts():
+    v = np.concatenate([cube_vertices(), [[0, 0, 0], [5, 5, 5]]])
+    with pytest.raises(MeshError, match=r"vertex 8 is not used by any face "
+                                        r"\(2 unused vertices\)"):
+        Mesh(v, CUBE_FACES)
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_error_non_finite_coordinate(bad):
+    v = cube_vertices()
+    v[3, 1] = bad
+    with pytest.raises(MeshError, match=r"vertex 3 has a non-finite coordinate"):
+        Mesh(v, CUBE_FACES)
+
+
+@pytest.mark.parametrize("shape", [(8, 2), (8, 4), (24,), (2, 4, 3)])
+def test_error_wrong_vertex_shape(shape):
+    v = np.zeros(shape)
+    with pytest.raises(MeshError, match=r"vertices must be an \(n, 3\) array, got shape "
+                                        + repr(shape).replace("(", r"\(").replace(")", r"\)")):
+        Mesh(v, CUBE_FACES)
+
+
+def test_error_vertices_not_numbers():
+    v = cube_vertices().tolist()
+    v[0] = ["a", 0, 0]
+    with pytest.raises(MeshError, match="vertices must be an"):
+        Mesh(v, CUBE_FACES)
+
+
+def test_error_no_faces():
+    with pytest.raises(MeshError, match="no faces"):
+        Mesh(cube_vertices(), [])
+
+
+def test_error_faces_array_of_wrong_rank():
+    with pytest.raises(MeshError, match="faces must be"):
+        Mesh(cube_vertices(), np.zeros((2, 2, 3), dtype=int))
+
+
+def test_valid_meshes_raise_nothing():
+    Mesh(TETRA, tetra_faces(0, 1, 2, 3))
+    Mesh(cube_vertices(), CUBE_FACES)
+    two_cubes()
+
+
+# ====================================================================== from_csr, with_vertices
+def test_from_csr_validates_by_default():
+    c = np.array(sum(CUBE_FACES[:5], []))
+    o = np.arange(0, 21, 4)
+    with pytest.raises(MeshError, match="boundary"):
+        Mesh.from_csr(cube_vertices(), c, o)
+
+
+@pytest.mark.parametrize("offsets", [[1, 4, 8], [0, 4, 9], [0, 5, 4, 8]])
+def test_from_csr_refuses_bad_offsets(offsets):
+    with pytest.raises(MeshError, match="offsets must start at 0"):
+        Mesh.from_csr(cube_vertices(), np.arange(8) % 8, offsets)
+
+
+def test_from_csr_equals_constructor():
+    m = Mesh.from_csr(cube_vertices(), sum(CUBE_FACES, []), np.arange(0, 25, 4))
+    n = Mesh(cube_vertices(), CUBE_FACES)
+    assert np.array_equal(m.corners, n.corners) and np.array_equal(m.twin, n.twin)
+
+
+def test_from_csr_copies_its_inputs():
+    # a mesh is immutable: it must not alias (nor freeze) the caller's arrays
+    base = np.array(sum(CUBE_FACES, []), dtype=np.int64)
+    offsets = np.arange(0, 25, 4, dtype=np.int64)
+    view = base[:]
+    m = Mesh.from_csr(cube_vertices(), view, offsets)
+    assert base.flags.writeable and offsets.flags.writeable
+    before = m.corners.copy()
+    base[:] = 0
+    offsets[:] = 0
+    assert np.array_equal(m.corners, before)
+    assert m.offsets.tolist() == [0, 4, 8, 12, 16, 20, 24]
+
+
+def test_with_vertices_keeps_faces_and_leaves_original():
+    m = shapes.cube()
+    m2 = m.with_vertices(m.vertices * 2)
+    assert np.array_equal(m2.corners, m.corners)
+    assert np.array_equal(m2.twin, m.twin)
+    assert np.array_equal(m2.vertices, 2 * m.vertices)
+    assert np.array_equal(m.vertices, cube_vertices())
+    assert m2.volume == pytest.approx(64.0)
+
+
+def test_with_vertices_refuses_wrong_shape_and_nan():
+    m = shapes.cube()
+    with pytest.raises(MeshError, match=r"expected \(8, 3\) vertices, got \(7, 3\)"):
+        m.with_vertices(np.zeros((7, 3)))
+    v = m.vertices.copy()
+    v[2, 0] = np.nan
+    with pytest.raises(MeshError, match="vertex 2 has a non-finite"):
+        m.with_vertices(v)
+
+
+# ====================================================================== immutability
+def test_arrays_are_read_only():
+    m = Mesh(cube_vertices(), CUBE_FACES)
+    for arr in (m.vertices, m.corners, m.offsets, m.twin, m.next, m.prev, m.head,
+                m.face_sizes, m.valences, m.halfedge_edge, m.edges, m.face_centroids):
+        with pytest.raises(ValueError):
+            arr[0] = 1
+
+
+def test_constructor_copies_its_inputs():
+    v = cube_vertices()
+    f = np.array(CUBE_FACES)
+    m = Mesh(v, f)
+    v[:] = 0
+    f[:] = 0
+    assert np.array_equal(m.vertices, cube_vertices())
+    assert m.corners.tolist() == sum(CUBE_FACES, [])
+
+
+# ====================================================================== counts
+def test_cube_counts_by_hand():
+    m = Mesh(cube_vertices(), CUBE_FACES)
+    assert (m.n_vertices, m.n_edges, m.n_faces, m.n_halfedges) == (8, 12, 6, 24)
+    assert m.valences.tolist() == [3] * 8
+    assert m.face_sizes.tolist() == [4] * 6
+    assert m.euler_characteristic == 2
+    assert m.genus == 0 and m.n_components == 1
+    assert m.face_size_histogram() == {4: 6}
+    assert m.valence_histogram() == {3: 8}
+    assert m.counts() == {"V": 8, "E": 12, "F": 6, "faces": {4: 6}, "valences": {3: 8},
+                          "chi": 2, "genus": 0}
+    assert repr(m) == "Mesh(V=8, E=12, F=6, faces={4:6})"
+
+
+def test_cube_edges_are_the_one_bit_pairs():
+    m = Mesh(cube_vertices(), CUBE_FACES)
+    # cube edges join vertices differing in one coordinate, i.e. one bit of 4x+2y+z
+    expected = sorted((a, a | b) for a in range(8) for b in (1, 2, 4) if not a & b)
+    assert sorted(map(tuple, m.edges.tolist())) == expected
+    assert m.edges.shape == (12, 2)
+
+
+def test_torus_genus_1():
+    m = shapes.torus(5, 4)
+    # a 5 x 4 grid of quads: V = 20, E = 40, F = 20
+    assert (m.n_vertices, m.n_edges, m.n_faces) == (20, 40, 20)
+    assert m.euler_characteristic == 0 and m.genus == 1
+
+
+def test_double_torus_genus_2():
+    assert shapes.double_torus().genus == 2
+    assert shapes.double_torus().euler_characteristic == -2
+
+
+def test_genus_surface_3():
+    m = shapes.genus_surface(3)
+    assert m.genus == 3 and m.euler_characteristic == -4 and m.n_components == 1
+
+
+def test_hexagonal_genus_2_surface_equation_1():
+    m = shapes.hexagonal_surface(2)
+    assert m.face_size_histogram() == {6: m.n_faces}
+    # all hexagons: 2E = 6F and V - E + F = 2 - 2g give sum(valence - 3) = 6(g - 1)
+    assert int(np.sum(m.valences - 3)) == 6
+    assert m.valence_histogram() == {3: m.n_vertices - 6, 4: 6}
+    assert m.genus == 2
+
+
+def test_two_disjoint_cubes():
+    m = two_cubes()
+    assert m.n_components == 2
+    assert m.euler_characteristic == 4
+    assert m.genus == 0
+    # labels are each component's smallest vertex index
+    assert m.component_labels.tolist() == [0] * 8 + [8] * 8
+    assert m.component_labels_of_faces().tolist() == [0] * 6 + [8] * 6
+    assert m.volume == pytest.approx(16.0)
+
+
+def test_cube_with_torus_components_and_genus():
+    c, t = shapes.cube(), shapes.torus(3, 3)
+    v = np.concatenate([c.vertices, t.vertices + [10.0, 0, 0]])
+    m = Mesh(v, face_lists(c) + [[i + 8 for i in f] for f in face_lists(t)])
+    # chi = 2 + 0, two components: genus = (2 * 2 - 2) / 2 = 1
+    assert m.n_components == 2 and m.genus == 1
+
+
+# ====================================================================== half-edges
+def test_next_prev_head_by_hand():
+    m = Mesh(cube_vertices(), CUBE_FACES)
+    # face 0 = corners 0..3 = [0, 1, 3, 2]
+    assert m.next[:4].tolist() == [1, 2, 3, 0]
+    assert m.prev[:4].tolist() == [3, 0, 1, 2]
+    assert m.head[:4].tolist() == [1, 3, 2, 0]
+    assert m.tail[:4].tolist() == [0, 1, 3, 2]
+    assert m.halfedge_face.tolist() == [f for f in range(6) for _ in range(4)]
+
+
+def test_next_and_prev_are_inverse(corpus_mesh):
+    m = corpus_mesh
+    H = np.arange(m.n_halfedges)
+    assert np.array_equal(m.next[m.prev], H)
+    assert np.array_equal(m.prev[m.next], H)
+    assert np.array_equal(m.halfedge_face[m.next], m.halfedge_face)
+    assert np.array_equal(m.head, m.corners[m.next])
+
+
+def test_twin_is_an_involution_reversing_edges(corpus_mesh):
+    m = corpus_mesh
+    H = np.arange(m.n_halfedges)
+    t = m.twin
+    assert np.array_equal(t[t], H)
+    assert not np.any(t == H)
+    assert np.array_equal(m.tail[t], m.head)
+    assert np.array_equal(m.head[t], m.tail)
+
+
+def test_edges_unique_and_halfedge_edge_consistent(corpus_mesh):
+    m = corpus_mesh
+    E = m.n_edges
+    edges = m.edges
+    assert edges.shape == (E, 2)
+    assert np.all(edges[:, 0] < edges[:, 1])
+    assert len({tuple(e) for e in edges.tolist()}) == E
+    he = m.halfedge_edge
+    assert np.array_equal(he[m.twin], he)                   # twins share their edge
+    assert np.bincount(he, minlength=E).tolist() == [2] * E  # each edge twice
+    lo = np.minimum(m.tail, m.head)
+    hi = np.maximum(m.tail, m.head)
+    assert np.array_equal(edges[he], np.stack([lo, hi], axis=1))
+    eh = m.edge_halfedge
+    assert np.array_equal(he[eh], np.arange(E))
+    assert np.all(m.tail[eh] < m.head[eh])
+
+
+def test_rotation_orbits_have_valence_length(corpus_mesh):
+    m = corpus_mesh
+    rot = m.rotation
+    assert np.array_equal(m.tail[rot], m.tail)
+    # walk every orbit in plain Python
+    seen = np.zeros(m.n_halfedges, dtype=bool)
+    for h in range(m.n_halfedges):
+        if seen[h]:
+            continue
+        length, x = 0, h
+        while True:
+            seen[x] = True
+            length += 1
+            x = int(rot[x])
+            if x == h:
+                break
+        assert length == m.valences[m.tail[h]]
+
+
+def test_vertex_ring_is_csr_of_rotation_orbits(corpus_mesh):
+    m = corpus_mesh
+    ring, off = m.vertex_ring
+    assert off[0] == 0 and off[-1] == m.n_halfedges
+    assert np.array_equal(np.diff(off), m.valences)
+    assert np.array_equal(np.sort(ring), np.arange(m.n_halfedges))
+    for v in range(m.n_vertices):
+        r = ring[off[v]:off[v + 1]]
+        assert np.all(m.tail[r] == v)
+        assert np.array_equal(m.rotation[r], np.roll(r, -1))
+
+
+@pytest.mark.parametrize("name", ["tetrahedron", "cube", "octahedron", "dodecahedron",
+                                  "icosahedron"])
+def test_rotation_is_counter_clockwise_seen_from_outside(name):
+    # convex solids centred at the origin: consecutive outgoing edges turn
+    # counter-clockwise about the outward direction (the vertex position)
+    m = shapes.get(name)
+    ring, off = m.vertex_ring
+    for v in range(m.n_vertices):
+        r = ring[off[v]:off[v + 1]]
+        d = m.vertices[m.head[r]] - m.vertices[v]
+        turn = np.cross(d, np.roll(d, -1, axis=0)) @ m.vertices[v]
+        assert np.all(turn > 0)
+
+
+# ====================================================================== geometry
+def test_cube_face_centroids_and_normals():
+    m = Mesh(cube_vertices(), CUBE_FACES)
+    # face [4, 6, 7, 5] is the face x = 1, and so on
+    expected = [[-1, 0, 0], [1, 0, 0], [0, -1, 0], [0, 1, 0], [0, 0, -1], [0, 0, 1]]
+    assert np.array_equal(m.face_centroids, np.array(expected, dtype=float))
+    assert np.allclose(m.face_normals, expected)
+
+
+def test_degenerate_face_normal_is_zero():
+    v = np.zeros((4, 3))
+    m = Mesh(v, tetra_faces(0, 1, 2, 3))
+    assert np.array_equal(m.face_normals, np.zeros((4, 3)))
+    assert m.volume == 0.0
+
+
+@pytest.mark.parametrize("name, volume", [
+    ("cube", 8.0),
+    ("tetrahedron", 8.0 - 4 * (8.0 / 6.0)),           # cube minus 4 corner tetrahedra
+    ("octahedron", 4.0 / 3.0),                         # 2 pyramids of base 2, height 1
+    ("icosahedron", 5.0 / 12.0 * (3 + 5 ** 0.5) * 8),  # edge length 2
+])
+def test_volume_of_platonic_solids(name, volume):
+    assert shapes.get(name).volume == pytest.approx(volume, rel=1e-12)
+
+
+def test_volume_is_signed_and_translation_invariant():
+    m = shapes.cube()
+    assert m.with_vertices(m.vertices + [3.0, -7.0, 11.0]).volume == pytest.approx(8.0)
+    flipped = Mesh(m.vertices, [f[::-1] for f in face_lists(m)])
+    assert flipped.volume == pytest.approx(-8.0)
+
+
+def test_bounds():
+    m = shapes.cube()
+    assert m.bounds.tolist() == [[-1, -1, -1], [1, 1, 1]]
+
+
+def test_fan_triangles_of_cube_cover_faces_and_volume():
+    m = Mesh(cube_vertices(), CUBE_FACES)
+    tris, tf = m.fan_triangles()
+    # 24 corners - 2 * 6 faces = 12 triangles, 2 per quad: (0,1,2), (0,2,3)
+    assert tris.shape == (12, 3)
+    assert tf.tolist() == [0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5]
+    assert tris[:2].tolist() == [[0, 1, 3], [0, 3, 2]]
+    p = m.vertices[tris]
+    vol = np.einsum("ij,ij->", p[:, 0], np.cross(p[:, 1], p[:, 2])) / 6
+    assert vol == pytest.approx(8.0)
+
+
+def test_fan_triangles_count_and_cover(corpus_mesh):
+    m = corpus_mesh
+    tris, tf = m.fan_triangles()
+    assert tris.shape == (m.n_halfedges - 2 * m.n_faces, 3)
+    assert np.array_equal(np.bincount(tf, minlength=m.n_faces), m.face_sizes - 2)
+    faces = face_lists(m)
+    covered = [set() for _ in faces]
+    for t, f in zip(tris.tolist(), tf.tolist()):
+        assert t[0] == faces[f][0]
+        assert set(t) <= set(faces[f])
+        covered[f] |= set(t)
+    assert all(c == set(f) for c, f in zip(covered, faces))
+
+
+def test_faces_property_round_trips(corpus_mesh):
+    m = corpus_mesh
+    again = Mesh(m.vertices, m.faces)
+    assert np.array_equal(again.corners, m.corners)
+    assert np.array_equal(again.offsets, m.offsets)
