@@ -1,0 +1,136 @@
+"""The command line: ``python -m pentanb [demo | figures --out DIR]``.
+
+``demo`` (the default) runs every scheme of :data:`pentanb.SCHEMES` on the
+Platonic solids and a torus and prints V, E, F, face sizes and valences.
+``figures`` redraws every figure of the paper into a folder, then prints what
+the paper claims of each figure next to what our meshes measure; it exits
+with status 1 if a claim does not hold.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from typing import Sequence
+
+from . import shapes
+from .subdivision import SCHEMES
+
+__all__ = ["main", "demo_table"]
+
+#: Meshes of the demo table.
+DEMO_SHAPES = ("tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron", "torus")
+
+
+def _hist(h: dict) -> str:
+    return " ".join(f"{k}:{v}" for k, v in h.items())
+
+
+def demo_table(shape_names: Sequence[str] = DEMO_SHAPES,
+               scheme_names: Sequence[str] | None = None) -> str:
+    """Every scheme once on every shape: a text table of V, E, F, face sizes, valences.
+
+    Rows are grouped by scheme; each group starts with the scheme's label,
+    Conway name and count formula.  Face sizes and valences are written
+    ``size:count``.
+    """
+    from .figures import formula
+    scheme_names = list(SCHEMES) if scheme_names is None else list(scheme_names)
+    meshes = {name: shapes.get(name) for name in shape_names}
+    width = max(len(n) for n in shape_names)
+    head = f"  {'shape':<{width}}  {'V':>6} {'E':>6} {'F':>6}  {'faces (sides:count)':<24} " \
+           "valences (valence:count)"
+    lines = [f"{'input':<{width + 2}}"]
+    lines.append(head)
+    for name, m in meshes.items():
+        lines.append(f"  {name:<{width}}  {m.n_vertices:>6} {m.n_edges:>6} {m.n_faces:>6}  "
+                     f"{_hist(m.face_size_histogram()):<24} {_hist(m.valence_histogram())}")
+    for key in scheme_names:
+        s = SCHEMES[key]
+        conway = f", Conway {s.conway}" if s.conway else ""
+        lines.append("")
+        lines.append(f"{key}: {s.label} ({s.paper}{conway}); (V, E, F) -> {formula(key)}")
+        lines.append(head)
+        for name, m in meshes.items():
+            r = s(m)
+            lines.append(f"  {name:<{width}}  {r.n_vertices:>6} {r.n_edges:>6} "
+                         f"{r.n_faces:>6}  {_hist(r.face_size_histogram()):<24} "
+                         f"{_hist(r.valence_histogram())}")
+    return "\n".join(lines)
+
+
+def _progress(done: int, total: int, message: str) -> None:
+    print(f"[{done:>2}/{total}] {message}", file=sys.stderr, flush=True)
+
+
+def _figures(args) -> int:
+    import matplotlib
+    matplotlib.use("Agg")
+    from . import figures
+    names = args.only or list(figures.FIGURES)
+    try:
+        names = [figures._get(n).name for n in names]
+    except ValueError as exc:
+        print(f"pentanb figures: {exc}", file=sys.stderr)
+        return 2
+    print(f"drawing {len(names)} figures into {args.out}/", file=sys.stderr, flush=True)
+    t0 = time.perf_counter()
+    figures.render_all(args.out, names, progress=_progress)
+    t1 = time.perf_counter()
+    print(f"checking the paper's claims ...", file=sys.stderr, flush=True)
+    results = figures.check_all(names)
+    t2 = time.perf_counter()
+    print(figures.report(results))
+    print(f"drawn in {t1 - t0:.1f} s, checked in {t2 - t1:.1f} s", file=sys.stderr)
+    ok = all(c.holds for cl in results.values() for c in cl)
+    return 0 if ok else 1
+
+
+def _demo(args) -> int:
+    print(demo_table())
+    return 0
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="pentanb",
+        description="Semiregular pentagonal subdivisions (Akleman et al.): the paper's "
+                    "schemes, figures and claims.")
+    sub = p.add_subparsers(dest="command")
+    d = sub.add_parser("demo", help="run every scheme on the Platonic solids and a torus "
+                                    "(the default)")
+    d.set_defaults(func=_demo)
+    f = sub.add_parser("figures", help="redraw every figure of the paper and check its "
+                                       "claims")
+    f.add_argument("--out", default="figures", help="folder for the PNGs (default: figures)")
+    f.add_argument("--only", nargs="+", metavar="NAME",
+                   help="only these figures (fig01 ... fig13, equation1, convergence, "
+                        "or numbers)")
+    f.set_defaults(func=_figures)
+    return p
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of ``python -m pentanb`` and the ``pentanb`` script.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        Arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        Exit status: 0, or 1 when a claim of the paper does not hold.
+    """
+    args = _parser().parse_args(argv)
+    if args.command is None:
+        return _demo(args)
+    if getattr(args, "only", None):
+        args.only = [f"fig{int(n):02d}" if str(n).isdigit() else n for n in args.only]
+    return args.func(args)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,376 @@
+"""Drawing meshes with matplotlib (mplot3d): the paper's figures as static images.
+
+Every face is one polygon of a :class:`~mpl_toolkits.mplot3d.art3d.Poly3DCollection`
+(no triangulation), coloured by its number of sides with
+:func:`pentanb.colors.face_rgb` and shaded with a Lambert term from its
+normal, so that a pentagon is the same green here as in the pythreejs views.
+Polygons are built with whole-array indexing (``vertices[corners]``), so a
+mesh of ten thousand faces draws in well under a second.
+
+Nothing here uses :mod:`matplotlib.pyplot`: figures are plain
+:class:`matplotlib.figure.Figure` objects (no global state, nothing to close),
+which Jupyter displays and :func:`save_figure` writes byte for byte the same
+on every run.
+
+Examples
+--------
+>>> import pentanb
+>>> from pentanb.viz.mpl import plot_mesh
+>>> fig = plot_mesh(pentanb.smooth(pentanb.pentagonalize(pentanb.shapes.cube())))
+>>> fig.axes[0].get_title()
+''
+"""
+
+from __future__ import annotations
+
+import contextlib
+from typing import Iterable, Mapping, Sequence
+
+import matplotlib
+import numpy as np
+from matplotlib.collections import LineCollection, PolyCollection
+from matplotlib.figure import Figure
+from matplotlib.patches import Patch
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+from ..colors import EDGE_COLOR, face_color, face_label, face_rgb
+from ..mesh import Mesh
+
+__all__ = ["draw_mesh", "plot_mesh", "add_face_legend", "panel_figure", "label_panel",
+           "draw_flat", "face_polygons", "shaded_colors", "view_direction", "fit_view",
+           "save_figure", "style", "DPI", "ELEV", "AZIM"]
+
+#: Resolution of every saved figure (dots per inch).
+DPI = 120
+#: Default camera: elevation and azimuth in degrees (mplot3d conventions).
+ELEV, AZIM = 22.0, -58.0
+#: Lambert shading: share of the colour that does not depend on the light.
+AMBIENT = 0.42
+#: Share of the key light in the Lambert term (the rest is a headlight).
+KEY = 0.62
+
+#: rcParams every figure is built and saved with, on top of matplotlib's
+#: defaults, so that a user's matplotlibrc does not change the images.
+_RC = {
+    "font.family": "DejaVu Sans",
+    "font.size": 9.0,
+    "axes.titlesize": 9.0,
+    "legend.fontsize": 8.5,
+    "figure.dpi": DPI,
+    "savefig.dpi": DPI,
+    "savefig.facecolor": "white",
+    "figure.facecolor": "white",
+    "path.simplify": False,
+}
+
+
+@contextlib.contextmanager
+def style():
+    """Context in which figures are built and saved: matplotlib's defaults plus
+    the package's fonts and dpi, whatever the user's rcParams are."""
+    with matplotlib.rc_context():
+        matplotlib.rcdefaults()
+        matplotlib.rcParams.update(_RC)
+        yield
+
+
+# ---------------------------------------------------------------------- geometry
+def face_polygons(mesh: Mesh, faces: np.ndarray | None = None):
+    """The corner positions of every face, for a polygon collection.
+
+    Parameters
+    ----------
+    mesh : Mesh
+    faces : (k,) int, optional
+        Which faces (default: all).
+
+    Returns
+    -------
+    (m, n, 3) float array when all the faces have ``n`` sides, else a list of
+    ``(n_f, 3)`` arrays.  Built with one fancy index, not a loop over faces.
+    """
+    sizes = mesh.face_sizes
+    offsets = mesh.offsets
+    if faces is None:
+        corners = mesh.corners
+        sel_sizes = sizes
+    else:
+        faces = np.asarray(faces, dtype=np.int64)
+        sel_sizes = sizes[faces]
+        # corner indices of the chosen faces, still in CSR order
+        start = np.repeat(offsets[faces], sel_sizes)
+        local = np.arange(sel_sizes.sum()) - np.repeat(np.cumsum(sel_sizes) - sel_sizes,
+                                                        sel_sizes)
+        corners = mesh.corners[start + local]
+    pts = mesh.vertices[corners]
+    if sel_sizes.size and np.all(sel_sizes == sel_sizes[0]):
+        return pts.reshape(sel_sizes.size, int(sel_sizes[0]), 3)
+    return np.split(pts, np.cumsum(sel_sizes)[:-1])
+
+
+def view_direction(elev: float = ELEV, azim: float = AZIM) -> np.ndarray:
+    """(3,) float: unit vector from the scene towards an mplot3d camera."""
+    e, a = np.radians(elev), np.radians(azim)
+    return np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+
+
+def _lights(elev: float, azim: float) -> tuple[np.ndarray, np.ndarray]:
+    """A key light over the viewer's left shoulder and a headlight (along the view),
+    both fixed relative to the camera."""
+    eye = view_direction(elev, azim)
+    a = np.radians(azim)
+    right = np.array([-np.sin(a), np.cos(a), 0.0])
+    up = np.cross(eye, right)
+    key = eye + 0.6 * up - 0.7 * right
+    return key / np.linalg.norm(key), eye
+
+
+def shaded_colors(mesh: Mesh, elev: float = ELEV, azim: float = AZIM, *,
+                  shade: bool = True, ambient: float = AMBIENT,
+                  faces: np.ndarray | None = None) -> np.ndarray:
+    """RGB colour of every face: its face-size colour times a Lambert term.
+
+    Parameters
+    ----------
+    mesh : Mesh
+    elev, azim : float
+        Camera, in degrees; the light moves with it.
+    shade : bool
+        False gives the flat face-size colours.
+    ambient : float in [0, 1]
+        Brightness of a face turned away from the light.
+    faces : (k,) int, optional
+        Which faces (default: all).
+
+    Returns
+    -------
+    (m, 3) float in [0, 1]
+    """
+    sizes = mesh.face_sizes if faces is None else mesh.face_sizes[faces]
+    rgb = face_rgb(sizes)
+    if not shade:
+        return rgb
+    normals = mesh.face_normals if faces is None else mesh.face_normals[faces]
+    key, head = _lights(elev, azim)
+    lambert = (KEY * np.clip(normals @ key, 0.0, 1.0)
+               + (1.0 - KEY) * np.clip(normals @ head, 0.0, 1.0))
+    return rgb * np.minimum(ambient + (1.0 - ambient) * lambert, 1.0)[:, None]
+
+
+def fit_view(ax, points: np.ndarray, zoom: float = 1.0) -> None:
+    """Equal aspect, axis off, limits and box shaped to ``points`` ((k, 3) float)."""
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    span = np.maximum(hi - lo, 1e-9 * max(float((hi - lo).max()), 1.0))
+    mid = (lo + hi) / 2
+    ax.set_xlim(mid[0] - span[0] / 2, mid[0] + span[0] / 2)
+    ax.set_ylim(mid[1] - span[1] / 2, mid[1] + span[1] / 2)
+    ax.set_zlim(mid[2] - span[2] / 2, mid[2] + span[2] / 2)
+    ax.set_box_aspect(tuple(span / span.max()), zoom=zoom)
+    ax.set_axis_off()
+
+
+def _edge_width(n_faces: int) -> float:
+    return float(np.clip(0.9 * np.sqrt(150.0 / max(n_faces, 1)), 0.12, 0.9))
+
+
+# ---------------------------------------------------------------------- drawing
+def draw_mesh(ax, mesh: Mesh, *, wireframe: bool = True, shade: bool = True,
+              title: str | None = None, elev: float = ELEV, azim: float = AZIM,
+              zoom: float = 1.0, edge_width: float | None = None,
+              faces: np.ndarray | None = None, proj: str = "persp") -> Poly3DCollection:
+    """Draw a mesh into a 3-D axes: one shaded polygon per face, coloured by sides.
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+    mesh : Mesh
+    wireframe : bool
+        Draw the edges (in :data:`pentanb.colors.EDGE_COLOR`).
+    shade : bool
+        Lambert shading from the face normals (:func:`shaded_colors`).
+    title : str, optional
+        Panel label, drawn under the panel (e.g. ``"(B) pentagonalized"``).
+    elev, azim : float
+        Camera angles in degrees.
+    zoom : float
+        Passed to ``set_box_aspect``; > 1 fills more of the panel.
+    edge_width : float, optional
+        Line width of the edges; default shrinks with the number of faces.
+    faces : (k,) int, optional
+        Draw only these faces.
+    proj : {"persp", "ortho"}
+
+    Returns
+    -------
+    Poly3DCollection
+    """
+    polys = face_polygons(mesh, faces)
+    colors = shaded_colors(mesh, elev, azim, shade=shade, faces=faces)
+    n = len(polys)
+    lw = _edge_width(n) if edge_width is None else edge_width
+    coll = Poly3DCollection(polys, facecolors=colors,
+                            edgecolors=EDGE_COLOR if wireframe else colors,
+                            linewidths=lw if wireframe else 0.15)
+    ax.add_collection3d(coll)
+    ax.view_init(elev=elev, azim=azim)
+    ax.set_proj_type(proj)
+    fit_view(ax, mesh.vertices if faces is None else _poly_points(polys), zoom=zoom)
+    if title is not None:
+        label_panel(ax, title)
+    return coll
+
+
+def _poly_points(polys) -> np.ndarray:
+    if isinstance(polys, np.ndarray):
+        return polys.reshape(-1, polys.shape[-1])
+    return np.concatenate(polys)
+
+
+def label_panel(ax, text: str) -> None:
+    """Put a panel's label, e.g. ``"(A) initial mesh"``, under the panel (as the paper does).
+
+    It is the axes' title (``ax.get_title()``), placed at the bottom.
+    """
+    ax.set_title(text, y=-0.02, va="top", pad=0)
+
+
+def draw_flat(ax, mesh: Mesh, faces: np.ndarray | None = None, *,
+              wireframe: bool = True, alpha: float = 1.0, edge_width: float = 1.2,
+              zorder: float = 1.0) -> PolyCollection:
+    """Draw faces of a planar mesh (z ignored) into a 2-D axes, coloured by sides.
+
+    Used for the single-polygon diagrams (Figures 6 and 10).
+    """
+    polys = face_polygons(mesh, faces)
+    sizes = mesh.face_sizes if faces is None else mesh.face_sizes[np.asarray(faces)]
+    flat = [np.asarray(p)[:, :2] for p in polys]
+    coll = PolyCollection(flat, facecolors=face_rgb(sizes), alpha=alpha,
+                          edgecolors=EDGE_COLOR if wireframe else "none",
+                          linewidths=edge_width, zorder=zorder)
+    ax.add_collection(coll)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    return coll
+
+
+def draw_segments(ax, segments: np.ndarray, **kwargs) -> LineCollection:
+    """Draw 2-D segments ((k, 2, 2) float) into a 2-D axes."""
+    coll = LineCollection(np.asarray(segments)[..., :2], **kwargs)
+    ax.add_collection(coll)
+    return coll
+
+
+def panel_figure(n_panels: int, ncols: int | None = None, *, panel_size: float = 3.0,
+                 projection: str | None = "3d", suptitle: str | None = None,
+                 legend_space: float = 0.0, label_space: float = 0.42,
+                 aspect: float = 1.0) -> tuple[Figure, list]:
+    """A figure with a grid of panels (3-D axes by default), room for labels under each.
+
+    Parameters
+    ----------
+    n_panels : int
+    ncols : int, optional
+        Panels per row (default: all in one row up to 3).
+    panel_size : float
+        Width of a panel in inches.
+    projection : "3d" or None
+    suptitle : str, optional
+    legend_space : float
+        Inches at the bottom for a legend.
+    label_space : float
+        Inches under every panel for its label (:func:`label_panel`).
+    aspect : float
+        Panel height / width.
+
+    Returns
+    -------
+    fig : Figure
+    axes : list of axes, row by row
+    """
+    ncols = min(n_panels, 3) if ncols is None else ncols
+    nrows = -(-n_panels // ncols)
+    top = 0.42 if suptitle else 0.08
+    ph = panel_size * aspect
+    width = ncols * panel_size
+    height = top + nrows * (ph + label_space) + legend_space
+    fig = Figure(figsize=(width, height), dpi=DPI)
+    axes = []
+    for i in range(n_panels):
+        r, c = divmod(i, ncols)
+        bottom = legend_space + (nrows - 1 - r) * (ph + label_space) + label_space
+        axes.append(fig.add_axes((c * panel_size / width, bottom / height,
+                                  panel_size / width, ph / height), projection=projection))
+    if suptitle:
+        fig.suptitle(suptitle, y=1 - 0.1 / height, va="top", fontsize=10.5)
+    return fig, axes
+
+
+def _sizes_of(sizes) -> list[int]:
+    if isinstance(sizes, Mesh):
+        return sorted(sizes.face_size_histogram())
+    if isinstance(sizes, Mapping):
+        return sorted(int(k) for k in sizes)
+    out: set[int] = set()
+    for s in sizes:
+        if isinstance(s, Mesh):
+            out.update(s.face_size_histogram())
+        else:
+            out.update(int(x) for x in np.atleast_1d(s))
+    return sorted(out)
+
+
+def add_face_legend(fig_or_ax, sizes, *, loc: str | None = None, ncol: int | None = None,
+                    title: str | None = "faces by number of sides"):
+    """A legend of the face-size colours.
+
+    Parameters
+    ----------
+    fig_or_ax : Figure or Axes
+        A figure gets one legend centred at its bottom.
+    sizes : Mesh, sequence of meshes, ``{n: count}`` or iterable of ints
+        Which face sizes to list.
+    loc : str, optional
+        Legend location (default "lower center" for a figure, "best" for axes).
+    ncol : int, optional
+        Columns (default: one row).
+
+    Returns
+    -------
+    matplotlib.legend.Legend
+    """
+    present = _sizes_of(sizes)
+    handles = [Patch(facecolor=face_color(n), edgecolor=EDGE_COLOR, linewidth=0.6,
+                     label=f"{face_label(n)} ({n})") for n in present]
+    ncol = len(handles) if ncol is None else ncol
+    if isinstance(fig_or_ax, Figure):
+        return fig_or_ax.legend(handles=handles, loc=loc or "lower center", ncol=ncol,
+                                frameon=False, title=title, title_fontsize=8.5,
+                                bbox_to_anchor=(0.5, 0.0))
+    return fig_or_ax.legend(handles=handles, loc=loc or "best", ncol=ncol, frameon=False,
+                            title=title, title_fontsize=8.5)
+
+
+def plot_mesh(mesh: Mesh, *, wireframe: bool = True, shade: bool = True,
+              title: str | None = None, legend: bool = True, size: float = 4.0,
+              **kwargs) -> Figure:
+    """One mesh in a figure of its own, with a face-size legend.
+
+    Keyword arguments go to :func:`draw_mesh`.
+    """
+    with style():
+        fig, (ax,) = panel_figure(1, panel_size=size, legend_space=0.5 if legend else 0,
+                                  label_space=0.42 if title else 0.05)
+        draw_mesh(ax, mesh, wireframe=wireframe, shade=shade, title=title, **kwargs)
+        if legend:
+            add_face_legend(fig, mesh)
+    return fig
+
+
+def save_figure(fig: Figure, path, dpi: int = DPI) -> None:
+    """Write a figure as a PNG that is byte-identical on every run.
+
+    No software version or timestamp is written into the file; the image is
+    rendered in :func:`style` at a fixed dpi.
+    """
+    with style():
+        fig.savefig(path, dpi=dpi, format="png", metadata={"Software": None})
