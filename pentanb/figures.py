@@ -452,8 +452,8 @@ def claims3() -> list[Claim]:
 
 
 # ====================================================================== Figures 4, 5
-_TORUS_VIEW = {"elev": 38.0, "azim": -60.0, "zoom": 1.3}
-_GENUS2_VIEW = {"elev": 40.0, "azim": -75.0, "zoom": 1.3}
+_TORUS_VIEW = {"elev": 38.0, "azim": -60.0}
+_GENUS2_VIEW = {"elev": 40.0, "azim": -75.0}
 
 
 def figure4() -> Figure:
@@ -461,7 +461,7 @@ def figure4() -> Figure:
     return _mesh_figure([
         (_m("hex_torus"), "genus 1", _TORUS_VIEW),
         (_m("hex_genus2"), "genus 2", _GENUS2_VIEW),
-    ], suptitle="Figure 4. Hexagonal meshes for g > 0", panel_size=3.8, aspect=0.62)
+    ], suptitle="Figure 4. Hexagonal meshes for g > 0", panel_size=4.0, aspect=0.6)
 
 
 def _valence_claims(panel: str, mesh: Mesh, n: int) -> list[Claim]:
@@ -492,7 +492,7 @@ def figure5() -> Figure:
         (_m("fig5A"), "genus 1, two iterations", _TORUS_VIEW),
         (_m("fig5B"), "genus 2, two iterations", _GENUS2_VIEW),
     ], suptitle="Figure 5. Two iterations of hexagon preservation (dual of Loop)",
-        panel_size=3.8, aspect=0.62)
+        panel_size=4.0, aspect=0.6)
 
 
 def claims5() -> list[Claim]:
@@ -763,7 +763,7 @@ def figure9() -> Figure:
         (_m("fig9A"), "one iteration, two duals", _TORUS_VIEW),
         (_m("fig9B"), "dual of (A)", _TORUS_VIEW),
     ], suptitle="Figure 9. 6.3.3.3.3 semi-regular tiling from pentagonalizing "
-                "the hexagonal torus", panel_size=3.8, aspect=0.62)
+                "the hexagonal torus", panel_size=4.0, aspect=0.6)
 
 
 def claims9() -> list[Claim]:
@@ -806,7 +806,7 @@ def claims11() -> list[Claim]:
 def figure12() -> Figure:
     """Figure 12: a low-poly animal (A), pentagonalized twice with two duals after each
     (B), and (B) shaded without wireframe (C)."""
-    kw = {"elev": 12.0, "azim": -62.0, "zoom": 1.1}
+    kw = {"elev": 18.0, "azim": -55.0}
     return _mesh_figure([
         (_m("animal"), "initial mesh", kw),
         (_m("fig12B"), "pentagonalized twice", kw),

@@ -31,6 +31,7 @@ import numpy as np
 from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch
+from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from ..colors import EDGE_COLOR, face_color, face_label, face_rgb
@@ -157,16 +158,38 @@ def shaded_colors(mesh: Mesh, elev: float = ELEV, azim: float = AZIM, *,
     return rgb * np.minimum(ambient + (1.0 - ambient) * lambert, 1.0)[:, None]
 
 
-def fit_view(ax, points: np.ndarray, zoom: float = 1.0) -> None:
-    """Equal aspect, axis off, limits and box shaped to ``points`` ((k, 3) float)."""
+def fit_view(ax, points: np.ndarray, zoom: float = 1.0, fill: float = 0.94) -> None:
+    """Equal aspect, axis off, and the camera zoomed so ``points`` fill the panel.
+
+    mplot3d draws into the largest square inside the axes; the zoom is
+    chosen from the projected extent of ``points`` ((k, 3) float) so that
+    they fill ``fill`` of the axes' own rectangle (wide panels included),
+    then multiplied by ``zoom``.
+    """
     lo, hi = points.min(axis=0), points.max(axis=0)
     span = np.maximum(hi - lo, 1e-9 * max(float((hi - lo).max()), 1.0))
     mid = (lo + hi) / 2
     ax.set_xlim(mid[0] - span[0] / 2, mid[0] + span[0] / 2)
     ax.set_ylim(mid[1] - span[1] / 2, mid[1] + span[1] / 2)
     ax.set_zlim(mid[2] - span[2] / 2, mid[2] + span[2] / 2)
-    ax.set_box_aspect(tuple(span / span.max()), zoom=zoom)
     ax.set_axis_off()
+    aspect = tuple(span / span.max())
+    pos = ax.get_position(original=True)
+    fw, fh = ax.figure.get_size_inches()
+    pw, ph = pos.width * fw, pos.height * fh           # the panel, inches
+    side = min(pw, ph)                                 # mplot3d's square, inches
+    view = ax.viewLim
+    unit = side / max(view.width, view.height)         # inches per projected unit
+    z = 1.0
+    for _ in range(3):                                 # perspective: refine twice
+        ax.set_box_aspect(aspect, zoom=z)
+        xs, ys, _ = proj3d.proj_transform(*points.T, ax.get_proj())
+        hx = (max(xs.max() - view.x0 - view.width / 2, view.x0 + view.width / 2 - xs.min())
+              * unit)
+        hy = (max(ys.max() - view.y0 - view.height / 2, view.y0 + view.height / 2 - ys.min())
+              * unit)
+        z *= fill * min(pw / 2 / max(hx, 1e-12), ph / 2 / max(hy, 1e-12))
+    ax.set_box_aspect(aspect, zoom=z * zoom)
 
 
 def _edge_width(n_faces: int) -> float:
@@ -193,7 +216,7 @@ def draw_mesh(ax, mesh: Mesh, *, wireframe: bool = True, shade: bool = True,
     elev, azim : float
         Camera angles in degrees.
     zoom : float
-        Passed to ``set_box_aspect``; > 1 fills more of the panel.
+        Multiplies the zoom that makes the mesh fill its panel (:func:`fit_view`).
     edge_width : float, optional
         Line width of the edges; default shrinks with the number of faces.
     faces : (k,) int, optional
@@ -211,6 +234,7 @@ def draw_mesh(ax, mesh: Mesh, *, wireframe: bool = True, shade: bool = True,
     coll = Poly3DCollection(polys, facecolors=colors,
                             edgecolors=EDGE_COLOR if wireframe else colors,
                             linewidths=lw if wireframe else 0.15)
+    coll.set_clip_on(False)   # mplot3d's square may be narrower than a wide panel
     ax.add_collection3d(coll)
     ax.view_init(elev=elev, azim=azim)
     ax.set_proj_type(proj)

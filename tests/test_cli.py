@@ -1,0 +1,88 @@
+"""The command line: ``python -m pentanb`` (demo) and its argument handling.
+
+The ``figures`` subcommand is run end to end in :mod:`test_figures`.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+from pentanb import SCHEMES, shapes
+from pentanb.cli import DEMO_SHAPES, demo_table, main
+
+
+def _block(table: str, scheme: str) -> dict[str, list[str]]:
+    """The rows of one scheme's block of the demo table, by shape."""
+    lines = table.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith(f"{scheme}:"))
+    rows = {}
+    for line in lines[start + 2:]:
+        if not line.strip():
+            break
+        cells = line.split()
+        rows[cells[0]] = cells[1:]
+    return rows
+
+
+@pytest.fixture(scope="module")
+def table() -> str:
+    return demo_table()
+
+
+def test_demo_pentagonalize_cube_row(table):
+    # V + 2E + F, 5E, 2E with V, E, F = 8, 12, 6
+    row = _block(table, "pentagonalize")["cube"]
+    assert row[:3] == ["38", "60", "24"]
+    assert row[3] == "5:24"
+    assert row[4:] == ["3:32", "4:6"]
+
+
+def test_demo_lists_every_scheme_and_shape_with_its_formula(table):
+    for name, scheme in SCHEMES.items():
+        rows = _block(table, name)
+        assert list(rows) == list(DEMO_SHAPES)
+        for shape, row in rows.items():
+            out = scheme(shapes.get(shape))
+            assert [int(x) for x in row[:3]] == [out.n_vertices, out.n_edges, out.n_faces]
+    assert "pentagonalize: Pentagonalization" in table
+    assert "(V, E, F) -> (V+2E+F, 5E, 2E)" in table
+    assert "Conway gyro" in table
+
+
+def test_main_without_arguments_runs_the_demo(capsys):
+    assert main([]) == 0
+    out = capsys.readouterr().out
+    assert _block(out, "pentagonalize")["cube"][:3] == ["38", "60", "24"]
+    assert main(["demo"]) == 0
+    assert capsys.readouterr().out == out
+
+
+def test_python_dash_m_runs(tmp_path):
+    done = subprocess.run([sys.executable, "-m", "pentanb"], capture_output=True, text=True,
+                          check=True, cwd=tmp_path)
+    assert _block(done.stdout, "pentagonalize")["cube"][:3] == ["38", "60", "24"]
+
+
+def test_unknown_figure_is_refused(capsys, tmp_path):
+    assert main(["figures", "--out", str(tmp_path), "--only", "fig99"]) == 2
+    err = capsys.readouterr().err
+    assert "unknown figure 'fig99'" in err and "fig07" in err
+    assert not list(tmp_path.iterdir())
+
+
+def test_only_one_figure(capsys, tmp_path):
+    assert main(["figures", "--out", str(tmp_path / "x"), "--only", "7"]) == 0
+    assert [p.name for p in (tmp_path / "x").iterdir()] == ["fig07.png"]
+    out = capsys.readouterr().out
+    assert out.startswith("fig07  Tetrahedron to dodecahedron")
+
+
+def test_help_names_the_subcommands(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["--help"])
+    assert exc.value.code == 0
+    out = capsys.readouterr().out
+    assert "demo" in out and "figures" in out

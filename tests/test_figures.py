@@ -1,0 +1,339 @@
+"""Every figure: its claims hold, its panels are there, the PNGs are reproducible.
+
+``python -m pentanb figures`` runs once per session (fixture ``figures_run``)
+into a temporary folder; the tests then check its exit status, its report
+and its files.  Each figure function is called once more to inspect the
+returned :class:`~matplotlib.figure.Figure` (panel count and labels), and
+the claims are checked figure by figure, with a few numbers recomputed here
+without the claim code.
+
+Byte-identity: the committed PNGs in ``figures/`` were written with
+matplotlib :data:`COMMITTED_WITH`; a run with that version must rewrite
+them byte for byte.  With another matplotlib version (fonts, antialiasing
+and PNG encoding may differ) that comparison is skipped, and only the
+in-run check remains: drawing the same figure twice gives the same bytes.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import subprocess
+import sys
+from collections import Counter
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+matplotlib = pytest.importorskip("matplotlib")
+matplotlib.use("Agg")
+
+import pentanb  # noqa: E402
+from pentanb import figures  # noqa: E402
+from pentanb.cli import main  # noqa: E402
+from pentanb.viz import mpl as vz  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+COMMITTED = ROOT / "figures"
+#: matplotlib version the committed PNGs were rendered with.
+COMMITTED_WITH = "3.11.2"
+EXPECTED_FILES = [f"fig{i:02d}.png" for i in range(1, 14)] + ["equation1.png",
+                                                              "convergence.png"]
+
+
+# ---------------------------------------------------------------------- the command
+@pytest.fixture(scope="session")
+def figures_run(tmp_path_factory):
+    """``python -m pentanb figures --out TMP`` run once (in process): (status, report, dir)."""
+    out = tmp_path_factory.mktemp("figures")
+    buf, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(buf), contextlib.redirect_stderr(err):
+        status = main(["figures", "--out", str(out)])
+    return status, buf.getvalue(), err.getvalue(), out
+
+
+@pytest.fixture(scope="session")
+def drawn():
+    """Every figure drawn once: {name: Figure}."""
+    return {name: spec.draw() for name, spec in figures.FIGURES.items()}
+
+
+def test_command_succeeds_and_writes_every_png(figures_run):
+    status, report, progress, out = figures_run
+    assert status == 0, report
+    assert sorted(p.name for p in out.glob("*.png")) == sorted(EXPECTED_FILES)
+    for name in EXPECTED_FILES:
+        assert (out / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_command_shows_progress(figures_run):
+    _, _, progress, _ = figures_run
+    assert "[ 1/15]" in progress and "[15/15]" in progress
+    assert "fig07.png" in progress
+
+
+def test_report_lists_every_figure_and_marks_each_claim(figures_run):
+    _, report, _, _ = figures_run
+    lines = report.splitlines()
+    for name in figures.FIGURES:
+        assert any(line.startswith(f"{name}  ") for line in lines), name
+    claim_lines = [line for line in lines if line.startswith("  [")]
+    assert claim_lines and all(line.startswith("  [ok  ]") for line in claim_lines)
+    total = len(claim_lines)
+    assert lines[-1] == f"{total} of {total} claims hold"
+    # the Conway names with their count formulas, checked
+    assert "Conway's gyro: (V, E, F) -> (V+2E+F, 5E, 2E)" in report
+    assert "Conway's quinto (scale 0.5)" in report
+    assert "Conway's chamfer" in report and "Conway's zip" in report
+
+
+def test_report_shows_configurations(figures_run):
+    _, report, _, _ = figures_run
+    assert "3.3.4.3.4: 192" in report        # Figure 8: 4.3.3.4.3 regions
+    assert "3.3.3.3.6: 432" in report        # Figure 9: 6.3.3.3.3 everywhere
+
+
+def test_pngs_are_byte_identical_to_the_committed_ones(figures_run):
+    _, _, _, out = figures_run
+    if matplotlib.__version__ != COMMITTED_WITH:
+        pytest.skip(f"committed PNGs were drawn with matplotlib {COMMITTED_WITH}, "
+                    f"this is {matplotlib.__version__}")
+    missing = [n for n in EXPECTED_FILES if not (COMMITTED / n).exists()]
+    assert not missing, f"not committed: {missing}"
+    differ = [n for n in EXPECTED_FILES
+              if (COMMITTED / n).read_bytes() != (out / n).read_bytes()]
+    assert not differ, f"rewritten differently: {differ}"
+
+
+def test_drawing_twice_gives_the_same_bytes(figures_run, tmp_path):
+    _, _, _, out = figures_run
+    for name in ("fig07", "fig06"):
+        path = figures.render(name, tmp_path)
+        assert path.read_bytes() == (out / f"{name}.png").read_bytes(), name
+
+
+def test_png_carries_no_version_or_time(figures_run):
+    _, _, _, out = figures_run
+    data = (out / "fig01.png").read_bytes()
+    for key in (b"Software", b"Creation Time", b"matplotlib", b"tIME"):
+        assert key not in data
+
+
+def test_failing_claim_gives_nonzero_exit(monkeypatch, tmp_path):
+    spec = figures.FIGURES["fig02"]
+    bad = figures.Claim("a claim that does not hold", 1, 2, False)
+    monkeypatch.setitem(figures.FIGURES, "fig02",
+                        figures.FigureSpec(spec.name, spec.title, spec.caption, spec.draw,
+                                           lambda: [bad], spec.panels))
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf), contextlib.redirect_stderr(io.StringIO()):
+        status = main(["figures", "--out", str(tmp_path), "--only", "2"])
+    assert status == 1
+    assert "[FAIL] a claim that does not hold" in buf.getvalue()
+    assert buf.getvalue().splitlines()[-1].endswith(
+        "claims hold; FAILED: fig02: a claim that does not hold")
+
+
+# ---------------------------------------------------------------------- every figure
+def test_registry_has_every_figure_of_the_paper():
+    names = list(figures.FIGURES)
+    assert names[:13] == [f"fig{i:02d}" for i in range(1, 14)]
+    assert "equation1" in names and "convergence" in names
+    for i in range(1, 14):
+        assert callable(getattr(figures, f"figure{i}"))
+        assert figures.FIGURES[f"fig{i:02d}"].draw is getattr(figures, f"figure{i}")
+
+
+@pytest.mark.parametrize("name", list(figures.FIGURES))
+def test_claims_hold(name):
+    claims = figures.claims(name)
+    assert claims, f"{name} checks no claim"
+    for c in claims:
+        assert isinstance(c, figures.Claim)
+        assert c.holds, str(c)
+
+
+@pytest.mark.parametrize("name", list(figures.FIGURES))
+def test_figure_has_its_labelled_panels(drawn, name):
+    fig = drawn[name]
+    spec = figures.FIGURES[name]
+    assert isinstance(fig, matplotlib.figure.Figure)
+    titles = [ax.get_title() for ax in fig.axes]
+    labels = [t for t in titles if t.startswith("(")]
+    assert [t[1] for t in labels] == list(spec.panels), titles
+    assert fig._suptitle is not None and fig._suptitle.get_text()
+
+
+@pytest.mark.parametrize("name", [f"fig{i:02d}" for i in range(1, 14) if i not in (6, 10)])
+def test_mesh_figures_are_3d_with_a_face_legend(drawn, name):
+    fig = drawn[name]
+    assert all(ax.name == "3d" for ax in fig.axes)
+    assert len(fig.legends) == 1
+    texts = [t.get_text() for t in fig.legends[0].get_texts()]
+    for ax in fig.axes:   # one collection of polygons, axis off
+        assert not ax.axison
+        assert len(ax.collections) == 1
+    assert texts and all(t.endswith(")") and t.split("(")[-1][:-1].isdigit() for t in texts)
+
+
+def test_flat_figures_are_2d(drawn):
+    for name in ("fig06", "fig10"):
+        assert all(ax.name == "rectilinear" for ax in drawn[name].axes)
+
+
+def test_panel_polygons_are_the_faces(drawn):
+    """Figure 7 draws one polygon per face of each mesh, coloured by its size."""
+    fig = drawn["fig07"]
+    expected = [4, 12, 20, 12, 20, 12]
+    assert [len(ax.collections[0].get_facecolor()) for ax in fig.axes] == expected
+
+
+# ---------------------------------------------------------------------- the numbers
+def test_fig01_counts_follow_the_formulas():
+    cube = figures.hard_edged_cube()
+    V, E, F = cube.n_vertices, cube.n_edges, cube.n_faces
+    b = pentanb.subdivide(cube, "pentagonalize", 1, 2)
+    assert (b.n_vertices, b.n_edges, b.n_faces) == (V + 2 * E + F, 5 * E, 2 * E)
+    d = pentanb.subdivide(b, "preserve_pentagons", 1, 2)
+    assert d.face_size_histogram() == {5: b.n_faces + 2 * b.n_edges}
+
+
+def test_fig02_second_triangulation_is_null():
+    b = pentanb.triangulate(pentanb.shapes.cube())
+    c = pentanb.triangulate(b)
+    assert np.array_equal(b.corners, c.corners) and np.array_equal(b.vertices, c.vertices)
+
+
+def test_fig07_tetrahedron_becomes_dodecahedron():
+    d = pentanb.pentagonalize(pentanb.shapes.tetrahedron())
+    assert d.face_size_histogram() == {5: 12} and d.valence_histogram() == {3: 20}
+
+
+@pytest.mark.parametrize("name, expected", [
+    ("fig08", {"3.3.4.3.4": 192, "3.3.3.3.4": 24}),
+    ("fig09", {"3.3.3.3.6": 432}),
+])
+def test_semiregular_configurations(name, expected):
+    a = figures._m(f"{name[:3]}{int(name[3:])}A")
+    b = pentanb.dual(a)
+    assert dict(Counter(_slow_face_configs(a))) == expected
+    assert dict(Counter(_slow_vertex_configs(b))) == expected
+
+
+def test_equation1_matches_meshes():
+    for mesh in (pentanb.shapes.dodecahedron(), figures._m("fig12B"),
+                 pentanb.shapes.hexagonal_surface(2)):
+        n = int(mesh.face_sizes[0])
+        eq = Fraction(2 * n, n - 2) * (1 + Fraction(2 * mesh.genus - 2, mesh.n_vertices))
+        assert eq == Fraction(2 * mesh.n_edges, mesh.n_vertices)
+
+
+def test_fig13_soccer_ball():
+    ball = pentanb.honeycomb(pentanb.shapes.dodecahedron())
+    assert ball.face_size_histogram() == {5: 12, 6: 20}
+    assert ball.valence_histogram() == {3: 60}
+
+
+# ---------------------------------------------------------------------- configurations
+def _canon(seq):
+    seq = list(seq)
+    n = len(seq)
+    cands = [seq[i:] + seq[:i] for i in range(n)]
+    cands += [list(reversed(c)) for c in cands]
+    return ".".join(map(str, min(cands)))
+
+
+def _slow_vertex_configs(mesh):
+    """Walk every vertex's faces in Python (reference for the vectorized version)."""
+    nxt, twin, face = mesh.next, mesh.twin, mesh.halfedge_face
+    prev = mesh.prev
+    out = {}
+    for h in range(mesh.n_halfedges):
+        v = int(mesh.corners[h])
+        if v in out:
+            continue
+        sizes, g = [], h
+        while True:
+            sizes.append(int(mesh.face_sizes[face[g]]))
+            g = int(twin[prev[g]])
+            if g == h:
+                break
+        out[v] = _canon(sizes)
+    return [out[v] for v in range(mesh.n_vertices)]
+
+
+def _slow_face_configs(mesh):
+    return [_canon(mesh.valences[f].tolist()) for f in mesh.faces]
+
+
+@pytest.mark.parametrize("shape", ["cube", "icosahedron", "torus", "hexagonal_genus2",
+                                   "animal"])
+def test_configurations_match_slow_reference(shape):
+    mesh = pentanb.preserve_pentagons(pentanb.shapes.get(shape))
+    assert figures.vertex_configurations(mesh) == _slow_vertex_configs(mesh)
+    assert figures.face_configurations(mesh) == _slow_face_configs(mesh)
+
+
+def test_canonical_configuration():
+    assert figures.canonical_configuration("4.3.3.4.3") == "3.3.4.3.4"
+    assert figures.canonical_configuration("3.4.3.4.3") == "3.3.4.3.4"
+    assert figures.canonical_configuration("6.3.3.3.3") == "3.3.3.3.6"
+    assert figures.canonical_configuration([4, 6, 8]) == "4.6.8"
+    assert figures.canonical_configuration([4, 8, 6]) == "4.6.8"   # a reflection
+    assert figures.configuration_counts(["5.5.5", "3.3.3", "5.5.5"]) == {"5.5.5": 2,
+                                                                         "3.3.3": 1}
+
+
+def test_dual_swaps_vertex_and_face_configurations():
+    mesh = figures._m("fig11A")
+    assert sorted(figures.face_configurations(mesh)) == \
+        sorted(figures.vertex_configurations(pentanb.dual(mesh)))
+
+
+# ---------------------------------------------------------------------- drawing module
+def test_face_polygons_vectorized_equals_per_face():
+    mesh = figures._m("fig3B")                                   # triangles, quads, pentagon
+    polys = vz.face_polygons(mesh)
+    assert len(polys) == mesh.n_faces
+    for f, p in zip(mesh.faces, polys):
+        assert np.array_equal(p, mesh.vertices[f])
+    pick = np.array([5, 0, 17])
+    sub = vz.face_polygons(mesh, pick)
+    for f, p in zip(pick, sub):
+        assert np.array_equal(p, mesh.vertices[mesh.faces[f]])
+    uniform = vz.face_polygons(pentanb.shapes.dodecahedron())
+    assert isinstance(uniform, np.ndarray) and uniform.shape == (12, 5, 3)
+
+
+def test_shading_keeps_hue_and_darkens_faces_turned_away():
+    mesh = pentanb.shapes.cube()
+    flat = vz.shaded_colors(mesh, shade=False)
+    lit = vz.shaded_colors(mesh)
+    ratio = lit.sum(axis=1) / flat.sum(axis=1)
+    assert np.allclose(lit, flat * ratio[:, None])               # same colour, scaled
+    assert ratio.min() >= vz.AMBIENT - 1e-12 and ratio.max() <= 1 + 1e-12
+    assert ratio.max() - ratio.min() > 0.2
+
+
+def test_plot_mesh_and_legend():
+    fig = vz.plot_mesh(pentanb.preserve_pentagons(pentanb.shapes.cube()), title="(A) x")
+    assert fig.axes[0].get_title() == "(A) x"
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert labels == ["quads (4)", "pentagons (5)"]
+
+
+def test_big_mesh_draws_quickly():
+    import time
+    mesh = pentanb.subdivide(pentanb.shapes.animal(), "pentagonalize", 2, 2)
+    t = time.perf_counter()
+    fig = vz.plot_mesh(mesh)
+    fig.savefig(io.BytesIO(), format="png")
+    assert time.perf_counter() - t < 10.0
+
+
+def test_import_pentanb_does_not_import_matplotlib():
+    code = ("import sys, pentanb, pentanb.convergence, pentanb.cli; "
+            "assert 'matplotlib' not in sys.modules, 'matplotlib imported'")
+    subprocess.run([sys.executable, "-c", code], check=True)
