@@ -10,6 +10,9 @@ continuity".  Two measurements turn that into numbers:
 * :func:`subdivision_convergence`: the same after every subdivision level
   (one remeshing and two duals).  On a G1 (tangent-continuous) limit
   surface the largest crease angle must fall towards 0 as the mesh refines.
+* :func:`edge_waviness`: Section 1's "lateral artifact": how much the
+  surface's distance from a straight edge's axis varies along the edge (a
+  wave pattern makes it oscillate).
 
 Both need only numpy.
 """
@@ -27,7 +30,8 @@ from .dual import dual
 from .mesh import Mesh
 from .subdivision import get_scheme, subdivide
 
-__all__ = ["Convergence", "radius_spread", "normal_angles", "dual_convergence",
+__all__ = ["Convergence", "radius_spread", "normal_angles", "ray_distances", "edge_waviness",
+           "dual_convergence",
            "subdivision_convergence", "study", "STUDY_MESHES", "STUDY_SCHEMES",
            "ROUND_MESHES"]
 
@@ -77,6 +81,68 @@ def normal_angles(mesh: Mesh) -> NDArray[np.float64]:
     n = mesh.face_normals
     cos = np.einsum("ij,ij->i", n[f], n[g])
     return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
+
+
+def ray_distances(mesh: Mesh, origins: NDArray[np.float64],
+                  direction: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Distance from every origin to the farthest crossing of the mesh along ``direction``.
+
+    Every face is fanned from its centroid (one triangle per half-edge) and
+    all rays are intersected with all triangles at once (Moller-Trumbore).
+
+    Parameters
+    ----------
+    mesh : Mesh
+    origins : (k, 3) float
+        Points inside the mesh.
+    direction : (3,) float
+        Unit direction of the rays.
+
+    Returns
+    -------
+    (k,) float
+        NaN where a ray misses.
+    """
+    d = np.asarray(direction, dtype=np.float64)
+    o = np.atleast_2d(np.asarray(origins, dtype=np.float64))
+    a = mesh.face_centroids[mesh.halfedge_face]
+    e1 = mesh.vertices[mesh.corners] - a
+    e2 = mesh.vertices[mesh.head] - a
+    pvec = np.cross(d, e2)
+    det = np.einsum("ij,ij->i", e1, pvec)
+    good = np.abs(det) > 1e-14
+    a, e1, e2, pvec, det = a[good], e1[good], e2[good], pvec[good], det[good]
+    tvec = o[:, None, :] - a[None]                                  # (k, T, 3)
+    u = np.einsum("ktj,tj->kt", tvec, pvec) / det
+    q = np.cross(tvec, e1[None])
+    v = (q @ d) / det
+    t = np.einsum("tj,ktj->kt", e2, q) / det
+    eps = 1e-9
+    hit = (u >= -eps) & (v >= -eps) & (u + v <= 1 + eps) & (t > 0)
+    return np.where(hit.any(axis=1), np.where(hit, t, -np.inf).max(axis=1), np.nan)
+
+
+def edge_waviness(mesh: Mesh, start=(-0.5, 0.0, 0.0), end=(0.5, 0.0, 0.0),
+                  direction=(0.0, 1.0, 1.0), samples: int = 41) -> float:
+    """How much a surface wobbles along a straight edge: the range of its distance
+    from the edge's axis, measured along rays perpendicular to the edge.
+
+    The defaults probe the middle half of the edge ``y = z = 1`` of a cube
+    ``[-1, 1]^3`` along its bisecting direction: rays from
+    ``samples`` points between ``start`` and ``end`` towards ``direction``.
+    A surface without "lateral artifacts" (Section 1: a smooth wave
+    pattern along a straight edge) keeps that distance constant.
+
+    Returns
+    -------
+    float
+        ``max - min`` of the distances (in the mesh's units).
+    """
+    s, e = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    d = np.asarray(direction, dtype=float)
+    t = np.linspace(0.0, 1.0, samples)[:, None]
+    dist = ray_distances(mesh, s + t * (e - s), d / np.linalg.norm(d))
+    return float(np.nanmax(dist) - np.nanmin(dist))
 
 
 def _measure(meshes, scheme_name):

@@ -76,3 +76,33 @@ def test_study_covers_both_schemes_on_every_mesh():
     assert set(data["pairs"]) == keys and set(data["levels"]) == keys
     for res in data["levels"].values():
         assert np.all(np.diff(res.max_normal_angle) < 0)
+
+
+def test_ray_distances_on_a_cube():
+    cube = shapes.cube()
+    d = np.array([1.0, 0.3, 0.2])
+    d /= np.linalg.norm(d)
+    got = cv.ray_distances(cube, np.zeros((1, 3)), d)
+    assert got == pytest.approx([1.0 / d[0]])
+    # from two points, straight up: the top face at z = 1
+    got = cv.ray_distances(cube, [[0.1, 0.2, 0.0], [0.0, 0.0, 0.5]], [0.0, 0.0, 1.0])
+    assert got == pytest.approx([1.0, 0.5])
+
+
+def test_edge_waviness_is_zero_on_a_straight_edge_and_sees_a_wave():
+    from pentanb.figures import hard_edged_cube
+    cube = hard_edged_cube(1 / 3)
+    assert cv.edge_waviness(cube) == pytest.approx(0.0, abs=1e-9)
+    v = cube.vertices.copy()
+    ridge = (v[:, 1] == 1) & (v[:, 2] == 1)
+    v[ridge, 1:] += 0.05 * np.cos(np.pi * v[ridge, 0])[:, None]   # bend the edge
+    assert cv.edge_waviness(cube.with_vertices(v)) > 0.02
+
+
+def test_pentagonalization_makes_smaller_waves_than_honeycomb():
+    # Section 1: no lateral artifact on the hard-edged cube of Figure 1
+    from pentanb.figures import hard_edged_cube
+    cube = hard_edged_cube()
+    ours = cv.edge_waviness(pentanb.subdivide(cube, "pentagonalize", 1, 2))
+    theirs = cv.edge_waviness(pentanb.subdivide(cube, "honeycomb", 1, 2))
+    assert ours < theirs / 2
