@@ -1,0 +1,355 @@
+"""Tests of :mod:`pentanb.io`: OBJ and OFF, exact round trips and precise errors."""
+
+from __future__ import annotations
+
+import os
+import re
+import pathlib
+
+import numpy as np
+import pytest
+from helpers import face_lists
+
+from pentanb import MeshError, read, shapes, write
+from pentanb.io import read_obj, read_off, write_obj, write_off
+
+CUBE_OBJ_FACES = [[1, 2, 4, 3], [5, 7, 8, 6], [1, 5, 6, 2], [3, 4, 8, 7], [1, 3, 7, 5],
+                  [2, 6, 8, 4]]
+
+
+def cube_v_lines():
+    return [f"v {x} {y} {z}" for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
+
+
+def esc(path) -> str:
+    """A path as a regular expression matching itself."""
+    return re.escape(str(path))
+
+
+def write_text(path, lines):
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def expected_cube():
+    return shapes.cube()
+
+
+# ====================================================================== round trips
+@pytest.mark.parametrize("ext", [".obj", ".off", ".OBJ", ".Off"])
+def test_round_trip_is_exact(tmp_path, corpus_mesh, ext):
+    m = corpus_mesh
+    path = tmp_path / f"mesh{ext}"
+    write(m, path)
+    back = read(path)
+    assert back.vertices.tobytes() == m.vertices.tobytes()      # bitwise
+    assert face_lists(back) == face_lists(m)
+    assert not list(tmp_path.glob("*.part"))
+
+
+def test_round_trip_of_awkward_numbers(tmp_path):
+    m = shapes.cube()
+    v = m.vertices * np.array([1 / 3, 1e-300, 1e300]) + [0.1, -0.0, 5e-324]
+    m = m.with_vertices(v)
+    for ext in (".obj", ".off"):
+        write(m, tmp_path / f"x{ext}")
+        assert read(tmp_path / f"x{ext}").vertices.tobytes() == v.tobytes()
+
+
+def test_write_accepts_str_paths(tmp_path):
+    path = str(tmp_path / "c.obj")
+    write(shapes.cube(), path)
+    assert face_lists(read(path)) == face_lists(shapes.cube())
+
+
+def test_written_obj_is_one_based_and_off_has_counts(tmp_path):
+    write(shapes.tetrahedron(), tmp_path / "t.obj")
+    lines = (tmp_path / "t.obj").read_text().splitlines()
+    f_lines = [l for l in lines if l.startswith("f ")]
+    assert len(f_lines) == 4
+    assert min(int(x) for l in f_lines for x in l.split()[1:]) == 1
+    write(shapes.cube(), tmp_path / "c.off")
+    lines = (tmp_path / "c.off").read_text().splitlines()
+    assert lines[0] == "OFF" and lines[1].split() == ["8", "6", "12"]
+    assert lines[2 + 8].split()[0] == "4"
+
+
+def test_write_obj_and_write_off_fix_the_suffix(tmp_path):
+    write_obj(shapes.cube(), tmp_path / "a.txt")
+    write_off(shapes.cube(), tmp_path / "b.txt")
+    assert (tmp_path / "a.obj").exists() and (tmp_path / "b.off").exists()
+    assert face_lists(read_obj(tmp_path / "a.obj")) == face_lists(shapes.cube())
+    assert face_lists(read_off(tmp_path / "b.off")) == face_lists(shapes.cube())
+
+
+# ====================================================================== OBJ reading
+def test_obj_with_slashes_negative_indices_and_other_lines(tmp_path):
+    lines = ["# a cube", "mtllib cube.mtl", "o cube", "g box", "s 1", ""]
+    lines += cube_v_lines()
+    lines += ["vn 0 0 1", "vt 0.5 0.5", "usemtl red",
+              "f 1/1/1 2/2/2 4/3/3 3/4/4",           # v/vt/vn
+              "f 5//1 7//1 8//1 6//1",               # v//vn
+              "f 1/1 5/2 6/3 2/4  # an inline comment",
+              "f -6 -5 -1 -2",                       # relative: 3 4 8 7
+              "f 1 3 7 5",
+              "f 2 6 8 4", "", "   "]
+    m = read(write_text(tmp_path / "cube.obj", lines))
+    assert face_lists(m) == [[i - 1 for i in f] for f in CUBE_OBJ_FACES]
+    assert np.array_equal(m.vertices, shapes.cube().vertices)
+
+
+def test_obj_negative_indices_are_relative_to_vertices_so_far(tmp_path):
+    lines = ["v 0 0 0", "v 1 0 0", "v 0 1 0", "f -3 -1 -2",        # (0, 2, 1)
+             "v 0 0 1", "f -4 -3 -1", "f -3 -2 -1", "f -4 -1 -2"]  # (0,1,3) (1,2,3) (0,3,2)
+    m = read(write_text(tmp_path / "t.obj", lines))
+    assert face_lists(m) == [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]]
+
+
+def test_obj_extra_vertex_components_are_ignored(tmp_path):
+    # "v x y z w" and "v x y z r g b" (vertex colours) keep x, y, z
+    lines = [l + " 1.0 0.5 0.25" for l in cube_v_lines()]
+    lines += ["f " + " ".join(map(str, f)) for f in CUBE_OBJ_FACES]
+    m = read(write_text(tmp_path / "c.obj", lines))
+    assert np.array_equal(m.vertices, shapes.cube().vertices)
+
+
+def _cube_obj_lines():
+    return cube_v_lines() + ["f " + " ".join(map(str, f)) for f in CUBE_OBJ_FACES]
+
+
+def test_obj_bad_number_names_file_and_line(tmp_path):
+    lines = _cube_obj_lines()
+    lines[2] = "v 1 x 3"
+    path = write_text(tmp_path / "bad.obj", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:3: bad number in 'v 1 x 3'"):
+        read(path)
+
+
+def test_obj_short_vertex_line(tmp_path):
+    lines = _cube_obj_lines()
+    lines[4] = "v 1 2"
+    path = write_text(tmp_path / "bad.obj", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:5: a 'v' line needs 3 coordinates"):
+        read(path)
+
+
+def test_obj_face_index_out_of_range(tmp_path):
+    lines = _cube_obj_lines()
+    lines[10] = "f 5 7 9 6"                 # line 11: only 8 vertices
+    path = write_text(tmp_path / "bad.obj", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:11: face index 9 out of range "
+                                        r"\(8 vertices so far\)"):
+        read(path)
+
+
+def test_obj_negative_index_out_of_range(tmp_path):
+    lines = _cube_obj_lines()
+    lines[9] = "f -9 -7 -5 -6"
+    path = write_text(tmp_path / "bad.obj", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:10: face index -9 out of range"):
+        read(path)
+
+
+def test_obj_zero_index(tmp_path):
+    lines = _cube_obj_lines()
+    lines[12] = "f 0 1 2 3"
+    path = write_text(tmp_path / "bad.obj", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:13: face index 0 \(OBJ counts from 1\)"):
+        read(path)
+
+
+def test_obj_bad_face_token(tmp_path):
+    lines = _cube_obj_lines()
+    lines[8] = "f 1 two 4 3"
+    path = write_text(tmp_path / "bad.obj", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:9: bad face index 'two'"):
+        read(path)
+
+
+def test_obj_without_faces(tmp_path):
+    path = write_text(tmp_path / "empty.obj", cube_v_lines())
+    with pytest.raises(MeshError, match=rf"{esc(path)}: no faces"):
+        read(path)
+
+
+def test_obj_non_manifold_raises_the_mesh_message_prefixed_with_the_file(tmp_path):
+    lines = _cube_obj_lines()[:-1]                  # the cube minus its last face
+    path = write_text(tmp_path / "open.obj", lines)
+    with pytest.raises(MeshError, match=rf"^{esc(path)}: edge \(\d+, \d+\) of face \d+ has only "
+                                        r"one side \(a boundary\)"):
+        read(path)
+
+
+def test_obj_with_a_nan_coordinate(tmp_path):
+    lines = _cube_obj_lines()
+    lines[6] = "v nan 1 -1"
+    path = write_text(tmp_path / "nan.obj", lines)
+    with pytest.raises(MeshError, match=rf"^{esc(path)}: vertex 6 has a non-finite"):
+        read(path)
+
+
+def test_obj_with_a_two_vertex_face(tmp_path):
+    lines = _cube_obj_lines() + ["f 1 2"]
+    path = write_text(tmp_path / "bad.obj", lines)
+    with pytest.raises(MeshError, match=rf"^{esc(path)}: face 6 has 2 vertices"):
+        read(path)
+
+
+# ====================================================================== OFF reading
+def _cube_off_lines():
+    lines = ["OFF", "8 6 12"]
+    lines += [l[2:] for l in cube_v_lines()]
+    lines += ["4 " + " ".join(str(i - 1) for i in f) for f in CUBE_OBJ_FACES]
+    return lines
+
+
+def test_off_reads_the_cube(tmp_path):
+    m = read(write_text(tmp_path / "c.off", _cube_off_lines()))
+    assert face_lists(m) == face_lists(shapes.cube())
+    assert np.array_equal(m.vertices, shapes.cube().vertices)
+
+
+def test_off_counts_on_the_header_line_and_comments(tmp_path):
+    lines = _cube_off_lines()
+    lines = ["OFF 8 6 12  # counts here", "# a comment", ""] + lines[2:]
+    lines[5] = lines[5] + "   # trailing comment"
+    m = read(write_text(tmp_path / "c.off", lines))
+    assert face_lists(m) == face_lists(shapes.cube())
+
+
+def test_off_missing_header(tmp_path):
+    path = write_text(tmp_path / "bad.off", _cube_off_lines()[1:])
+    with pytest.raises(MeshError, match=rf"{esc(path)}:1: not an OFF file \(no 'OFF' header\)"):
+        read(path)
+
+
+def test_off_empty_file(tmp_path):
+    path = write_text(tmp_path / "empty.off", [])
+    with pytest.raises(MeshError, match="not an OFF file"):
+        read(path)
+
+
+def test_off_missing_counts(tmp_path):
+    path = write_text(tmp_path / "bad.off", ["OFF"])
+    with pytest.raises(MeshError, match=rf"{esc(path)}: missing the vertex and face counts"):
+        read(path)
+
+
+def test_off_bad_counts_line(tmp_path):
+    lines = _cube_off_lines()
+    lines[1] = "8 six 12"
+    path = write_text(tmp_path / "bad.off", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:2: bad counts line '8 six 12'"):
+        read(path)
+
+
+def test_off_count_mismatch(tmp_path):
+    lines = _cube_off_lines()[:-1]                  # header says 6 faces, 5 given
+    path = write_text(tmp_path / "bad.off", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}: header says 8 vertices and 6 faces "
+                                        r"\(14 lines\) but the file has 13 data lines"):
+        read(path)
+
+
+def test_off_bad_vertex_line(tmp_path):
+    lines = _cube_off_lines()
+    lines[4] = "1.0 nope 1.0"                       # line 5
+    path = write_text(tmp_path / "bad.off", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:5: bad vertex line '1.0 nope 1.0'"):
+        read(path)
+
+
+def test_off_short_vertex_line(tmp_path):
+    lines = _cube_off_lines()
+    lines[3] = "1.0 1.0"                            # line 4
+    path = write_text(tmp_path / "bad.off", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:4: bad vertex line"):
+        read(path)
+
+
+def test_off_bad_face_line(tmp_path):
+    lines = _cube_off_lines()
+    lines[11] = "4 0 x 3 2"                         # line 12
+    path = write_text(tmp_path / "bad.off", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:12: bad face line '4 0 x 3 2'"):
+        read(path)
+
+
+def test_off_face_with_too_few_indices(tmp_path):
+    lines = _cube_off_lines()
+    lines[10] = "4 0 1 3"                           # line 11
+    path = write_text(tmp_path / "bad.off", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:11: face says 4 vertices but lists 3"):
+        read(path)
+
+
+def test_off_face_index_out_of_range(tmp_path):
+    lines = _cube_off_lines()
+    lines[13] = "4 1 5 8 3"                         # line 14
+    path = write_text(tmp_path / "bad.off", lines)
+    with pytest.raises(MeshError, match=rf"{esc(path)}:14: face index 8 out of range "
+                                        r"\(8 vertices\)"):
+        read(path)
+
+
+def test_off_non_manifold_raises_the_mesh_message_prefixed_with_the_file(tmp_path):
+    lines = _cube_off_lines()
+    lines[1] = "8 5 12"
+    lines = lines[:-1]
+    path = write_text(tmp_path / "open.off", lines)
+    with pytest.raises(MeshError, match=rf"^{esc(path)}: edge .* \(a boundary\)"):
+        read(path)
+
+
+# ====================================================================== file names, failures
+@pytest.mark.parametrize("name", ["mesh.stl", "mesh", "mesh.obj.bak"])
+def test_unknown_extension(tmp_path, name):
+    path = tmp_path / name
+    path.write_text("")
+    with pytest.raises(ValueError, match="unknown mesh format"):
+        read(path)
+    with pytest.raises(ValueError, match="unknown mesh format"):
+        write(shapes.cube(), path)
+
+
+def test_write_into_a_missing_directory_leaves_nothing(tmp_path):
+    target = tmp_path / "no" / "such" / "dir" / "m.obj"
+    with pytest.raises(OSError):
+        write(shapes.cube(), target)
+    assert not (tmp_path / "no").exists()
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_write_over_a_directory_leaves_no_partial_file(tmp_path):
+    target = tmp_path / "m.obj"
+    target.mkdir()
+    with pytest.raises(OSError):
+        write(shapes.cube(), target)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["m.obj"]
+    assert target.is_dir()
+
+
+def test_failed_write_keeps_the_old_file_and_leaves_no_part(tmp_path, monkeypatch):
+    target = tmp_path / "m.off"
+    write(shapes.tetrahedron(), target)
+    old = target.read_text()
+    real = pathlib.Path.write_text
+
+    def half_then_fail(self, text, *args, **kwargs):
+        real(self, text[: len(text) // 2], *args, **kwargs)
+        raise OSError("disk full")
+
+    monkeypatch.setattr(pathlib.Path, "write_text", half_then_fail)
+    with pytest.raises(OSError, match="disk full"):
+        write(shapes.cube(), target)
+    monkeypatch.undo()
+    assert target.read_text() == old
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["m.off"]
+
+
+def test_write_replaces_an_existing_file(tmp_path):
+    target = tmp_path / "m.obj"
+    write(shapes.tetrahedron(), target)
+    write(shapes.cube(), target)
+    assert face_lists(read(target)) == face_lists(shapes.cube())
+    assert os.listdir(tmp_path) == ["m.obj"]

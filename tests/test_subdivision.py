@@ -1,0 +1,281 @@
+"""Tests of :mod:`pentanb.subdivision`: the registry, ``subdivide`` and its guards,
+and every operator of the registry (plus the dual) run over the whole corpus.
+"""
+
+from __future__ import annotations
+
+import inspect
+import re
+import time
+
+import numpy as np
+import pytest
+from helpers import (OPERATORS, check_valid, corpus, expected_counts, expected_face_histogram,
+                     face_lists, two_cubes)
+
+import pentanb
+from pentanb import SCHEMES, MeshError, Scheme, dual, predict_counts, shapes, smooth, subdivide
+
+OPERATOR_NAMES = ["pentagonalize", "preserve_pentagons", "triangulate", "loop_remesh",
+                  "sqrt3_remesh", "vertex_insertion", "corner_cutting", "preserve_hexagons",
+                  "honeycomb"]
+
+
+# ====================================================================== every operator x corpus
+def test_operator_output_is_valid(corpus_mesh, operator_name):
+    check_valid(OPERATORS[operator_name](corpus_mesh))
+
+
+def test_operator_keeps_euler_characteristic_and_genus(corpus_mesh, operator_name):
+    m = corpus_mesh
+    out = OPERATORS[operator_name](m)
+    assert out.euler_characteristic == m.euler_characteristic
+    assert out.genus == m.genus
+    assert out.n_components == m.n_components
+
+
+def test_operator_counts_follow_the_formulas(corpus_mesh, operator_name):
+    m = corpus_mesh
+    out = OPERATORS[operator_name](m)
+    assert (out.n_vertices, out.n_edges, out.n_faces) == expected_counts(operator_name, m)
+    assert out.face_size_histogram() == expected_face_histogram(operator_name, m)
+
+
+def test_operator_keeps_orientation(corpus_mesh, operator_name):
+    # the corpus is outward oriented; so are the results, and a flipped
+    # input gives a flipped (negative-volume) output
+    m = corpus_mesh
+    op = OPERATORS[operator_name]
+    assert m.volume > 0
+    assert op(m).volume > 0
+    flipped = pentanb.Mesh(m.vertices, [f[::-1] for f in face_lists(m)])
+    assert op(flipped).volume < 0
+
+
+@pytest.mark.parametrize("name", list(OPERATORS))
+def test_operator_on_two_components(name):
+    m = two_cubes()
+    out = OPERATORS[name](m)
+    check_valid(out)
+    assert out.n_components == 2
+    assert (out.n_vertices, out.n_edges, out.n_faces) == expected_counts(name, m)
+
+
+# ====================================================================== registry
+def test_registry_lists_every_operator_exported_at_top_level():
+    assert sorted(SCHEMES) == sorted(OPERATOR_NAMES)
+    for name, scheme in SCHEMES.items():
+        assert isinstance(scheme, Scheme)
+        assert scheme.name == name
+        assert scheme.func is getattr(pentanb, name)
+        assert scheme.func.__name__ == name
+        assert name in pentanb.__all__
+    # and nothing exported at top level that maps meshes to meshes is missing
+    for name in pentanb.__all__:
+        obj = getattr(pentanb, name, None)
+        if inspect.isfunction(obj) and obj.__module__ in ("pentanb.classic",
+                                                          "pentanb.pentagonal"):
+            assert name in SCHEMES
+
+
+def test_registry_families_and_references():
+    assert {n for n, s in SCHEMES.items() if s.family == "pentagonal"} == \
+        {"pentagonalize", "preserve_pentagons"}
+    assert SCHEMES["pentagonalize"].conway == "gyro"
+    assert "quinto" in SCHEMES["preserve_pentagons"].conway
+    for s in SCHEMES.values():
+        assert s.label and s.paper
+
+
+def test_registry_options_are_the_functions_keyword_defaults():
+    for s in SCHEMES.values():
+        params = inspect.signature(s.func).parameters
+        defaults = {k: p.default for k, p in params.items()
+                    if p.default is not inspect.Parameter.empty}
+        assert dict(s.options) == defaults
+
+
+def test_registry_counts_agree_with_the_formulas(corpus_mesh):
+    m = corpus_mesh
+    for name, s in SCHEMES.items():
+        got = s.counts(m.n_vertices, m.n_edges, m.n_faces)
+        want = expected_counts(name, m)
+        if name == "triangulate":    # documented as an upper bound
+            assert all(g >= w for g, w in zip(got, want))
+            if 3 not in m.face_sizes:
+                assert got == want
+        else:
+            assert got == want
+
+
+def test_scheme_is_callable_with_options():
+    m = shapes.cube()
+    s = SCHEMES["preserve_pentagons"]
+    assert np.array_equal(s(m, scale=0.5).vertices,
+                          pentanb.preserve_pentagons(m, 0.5).vertices)
+
+
+# ====================================================================== subdivide
+@pytest.mark.parametrize("name", OPERATOR_NAMES)
+@pytest.mark.parametrize("duals", [0, 1, 2])
+def test_subdivide_equals_manual_composition(name, duals):
+    m = corpus("cube_split")
+    manual = m
+    for _ in range(2):
+        manual = OPERATORS[name](manual)
+        for _ in range(duals):
+            manual = dual(manual)
+    got = subdivide(m, name, iterations=2, duals=duals)
+    assert np.array_equal(got.vertices, manual.vertices)
+    assert np.array_equal(got.corners, manual.corners)
+    assert np.array_equal(got.offsets, manual.offsets)
+
+
+def test_subdivide_defaults_are_one_pentagonalization_and_two_duals():
+    m = shapes.cube()
+    got = subdivide(m)
+    want = dual(dual(pentanb.pentagonalize(m)))
+    assert np.array_equal(got.vertices, want.vertices)
+    assert np.array_equal(got.corners, want.corners)
+
+
+def test_subdivide_passes_options():
+    m = shapes.dodecahedron()
+    got = subdivide(m, "preserve_pentagons", 1, duals=0, scale=0.3)
+    assert np.array_equal(got.vertices, pentanb.preserve_pentagons(m, 0.3).vertices)
+
+
+def test_subdivide_takes_a_scheme_or_a_callable():
+    m = shapes.tetrahedron()
+    a = subdivide(m, SCHEMES["loop_remesh"], 1, 0)
+    b = subdivide(m, pentanb.loop_remesh, 1, 0)
+    c = subdivide(m, lambda x: pentanb.loop_remesh(x), 1, 0)
+    assert np.array_equal(a.corners, b.corners) and np.array_equal(b.corners, c.corners)
+
+
+def test_subdivide_zero_iterations_returns_the_mesh():
+    m = shapes.cube()
+    assert subdivide(m, "pentagonalize", iterations=0) is m
+    assert smooth(m, 0) is m
+
+
+def test_subdivide_unknown_scheme_lists_the_known_ones():
+    with pytest.raises(ValueError, match="unknown scheme 'pentagonalise'") as info:
+        subdivide(shapes.cube(), "pentagonalise")
+    for name in OPERATOR_NAMES:
+        assert name in str(info.value)
+
+
+@pytest.mark.parametrize("arg", ["iterations", "duals"])
+@pytest.mark.parametrize("bad", [-1, 1.5, "2", None, True])
+def test_subdivide_refuses_bad_counts(arg, bad):
+    with pytest.raises(ValueError, match=f"{arg} must be a non-negative integer"):
+        subdivide(shapes.cube(), "pentagonalize", **{arg: bad})
+
+
+def test_subdivide_refuses_unknown_options():
+    with pytest.raises(ValueError, match=r"'pentagonalize' takes no options; got \['scale'\]"):
+        subdivide(shapes.cube(), "pentagonalize", scale=0.5)
+    with pytest.raises(ValueError, match=r"'preserve_pentagons' takes scale; got \['sclae'\]"):
+        subdivide(shapes.cube(), "preserve_pentagons", sclae=0.5)
+
+
+def test_subdivide_refuses_bad_option_values():
+    with pytest.raises(ValueError, match="scale must be"):
+        subdivide(shapes.cube(), "corner_cutting", scale=1.5)
+
+
+@pytest.mark.parametrize("name", OPERATOR_NAMES)
+def test_predict_counts_matches_the_built_meshes(name):
+    m = corpus("cube_split")
+    iterations, duals = 2, 2
+    steps = predict_counts((m.n_vertices, m.n_edges, m.n_faces), name, iterations, duals)
+    assert len(steps) == iterations * (1 + duals)
+    built = []
+    mesh = m
+    for _ in range(iterations):
+        mesh = OPERATORS[name](mesh)
+        built.append((mesh.n_vertices, mesh.n_edges, mesh.n_faces))
+        for _ in range(duals):
+            mesh = dual(mesh)
+            built.append((mesh.n_vertices, mesh.n_edges, mesh.n_faces))
+    if name == "triangulate":     # an upper bound (triangles are kept)
+        assert all(p >= b for ps, bs in zip(steps, built) for p, b in zip(ps, bs))
+    else:
+        assert steps == built
+
+
+def test_predict_counts_by_hand():
+    # cube, pentagonalize: (8 + 24 + 6, 60, 24), then duals swap V and F
+    assert predict_counts((8, 12, 6), "pentagonalize", 1, 2) == [
+        (38, 60, 24), (24, 60, 38), (38, 60, 24)]
+    assert predict_counts((8, 12, 6), "honeycomb", 2, 0) == [(24, 36, 14), (72, 108, 38)]
+
+
+def test_predict_counts_needs_a_registered_scheme():
+    with pytest.raises(ValueError, match="registered scheme"):
+        predict_counts((8, 12, 6), pentanb.pentagonalize)
+
+
+def test_memory_guard_refuses_before_building():
+    m = shapes.cube()
+    t0 = time.perf_counter()
+    with pytest.raises(MeshError) as info:
+        subdivide(m, "pentagonalize", iterations=12, max_bytes=10**6)
+    assert time.perf_counter() - t0 < 5
+    msg = str(info.value)
+    # every pentagonalization multiplies E by 5 and makes 2E faces; duals keep
+    # the counts after an even number: after the 12th, E = 12 * 5**12,
+    # F = 2 * 12 * 5**11 and (Euler, chi = 2) V = 2 + E - F
+    E = 12 * 5 ** 12
+    F = 2 * 12 * 5 ** 11
+    V = 2 + E - F
+    got = re.search(r"([\d,]+) faces \(([\d,]+) vertices, ([\d,]+) edges\)", msg)
+    assert got, msg
+    faces, verts, edges = (int(x.replace(",", "")) for x in got.groups())
+    assert (faces, verts, edges) in {(F, V, E), (V, F, E)}   # the mesh or its dual
+    assert f"{faces:,} faces" in msg
+    need = int(re.search(r"([\d,]+) bytes", msg).group(1).replace(",", ""))
+    assert need >= 8 * 2 * E > 10**6             # at least one int64 per corner
+    assert "1,000,000" in msg
+
+
+def test_memory_guard_lets_small_requests_through():
+    m = shapes.cube()
+    out = subdivide(m, "pentagonalize", iterations=1, max_bytes=10**9)
+    assert out.n_faces == 24
+    with pytest.raises(MeshError, match="24 faces"):
+        subdivide(m, "pentagonalize", iterations=1, max_bytes=100)
+
+
+def test_progress_callback_is_called_after_every_step():
+    calls = []
+    m = shapes.cube()
+    subdivide(m, "pentagonalize", iterations=2, duals=2,
+              progress=lambda *a: calls.append(a))
+    assert [c[0] for c in calls] == [1, 2, 3, 4, 5, 6]
+    assert all(c[1] == 6 for c in calls)
+    assert all(isinstance(c[2], str) for c in calls)
+    assert "pentagonalize" in calls[0][2] and "24 faces" in calls[0][2]
+    assert "dual" in calls[1][2] and "38 faces" in calls[1][2]
+    # second pentagonalization: 2 * 60 = 120 faces
+    assert "120 faces" in calls[3][2]
+
+
+def test_progress_true_prints_to_stderr(capsys):
+    subdivide(shapes.tetrahedron(), "loop_remesh", iterations=1, duals=1, progress=True)
+    err = capsys.readouterr().err
+    assert "2/2" in err and "loop_remesh" in err
+
+
+def test_progress_with_zero_duals():
+    calls = []
+    subdivide(shapes.cube(), "honeycomb", iterations=3, duals=0,
+              progress=lambda *a: calls.append(a[:2]))
+    assert calls == [(1, 3), (2, 3), (3, 3)]
+
+
+@pytest.mark.parametrize("bad", [5, None, ["pentagonalize"]])
+def test_subdivide_refuses_non_scheme_values(bad):
+    with pytest.raises(ValueError, match="unknown scheme"):
+        subdivide(shapes.cube(), bad)
