@@ -78,7 +78,7 @@ def _figures(args) -> int:
     t0 = time.perf_counter()
     figures.render_all(args.out, names, progress=_progress)
     t1 = time.perf_counter()
-    print(f"checking the paper's claims ...", file=sys.stderr, flush=True)
+    print("checking the paper's claims ...", file=sys.stderr, flush=True)
     results = figures.check_all(names)
     t2 = time.perf_counter()
     print(figures.report(results))

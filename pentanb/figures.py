@@ -28,6 +28,7 @@ from typing import Callable, Iterable, Sequence
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.patches import Patch
 
 from . import shapes, topology
 from .classic import honeycomb, loop_remesh, preserve_hexagons, triangulate
@@ -425,7 +426,7 @@ def figure2() -> Figure:
 
 
 def claims2() -> list[Claim]:
-    a, b, c = _m("cube"), _m("fig2B"), _m("fig2C")
+    b, c = _m("fig2B"), _m("fig2C")
     same = (np.array_equal(b.vertices, c.vertices) and np.array_equal(b.corners, c.corners)
             and np.array_equal(b.offsets, c.offsets))
     return [
@@ -584,7 +585,7 @@ def figure6() -> Figure:
 
 def _flat_legend(fig, sizes):
     from matplotlib.lines import Line2D
-    handles = [vz.Patch(facecolor=face_color(n), edgecolor=EDGE_COLOR,
+    handles = [Patch(facecolor=face_color(n), edgecolor=EDGE_COLOR,
                         label=f"{face_label(n)} ({n})") for n in sizes]
     handles += [Line2D([], [], ls="none", marker="o", markersize=5, color=EDGE_COLOR,
                        label="old vertex"),
@@ -707,12 +708,6 @@ def figure7() -> Figure:
 def _radius_spread(mesh: Mesh) -> float:
     r = np.linalg.norm(mesh.vertices - mesh.vertices.mean(axis=0), axis=1)
     return float(r.std() / r.mean())
-
-
-def _edge_spread(mesh: Mesh) -> float:
-    e = mesh.edges
-    length = np.linalg.norm(mesh.vertices[e[:, 0]] - mesh.vertices[e[:, 1]], axis=1)
-    return float(length.std() / length.mean())
 
 
 def claims7() -> list[Claim]:
@@ -901,8 +896,7 @@ def equation1() -> Figure:
                 ax.plot(v, np.where(m >= 3, m, np.nan), color=face_color(n), lw=1.7,
                         label=f"n = {n}")
                 ax.plot(v, m, color=face_color(n), lw=1.2, alpha=0.35)
-            ax.axhline(3, color=EDGE_COLOR, lw=1.0, ls="--",
-                       label="m = 3" if g == 0 else None)
+            ax.axhline(3, color=EDGE_COLOR, lw=1.0, ls="--", label="m = 3")
             for (n, gg, vv, name, dy) in samples:
                 if gg == g:
                     mm = topology.average_valence(n, g, vv)
@@ -918,17 +912,13 @@ def equation1() -> Figure:
             ax.grid(alpha=0.25)
             vz.label_panel(ax, f"({'ABC'[g]}) genus g = {g}")
             ax.title.set_y(-0.2)
-        axes[2].legend(ncol=2, fontsize=7.5, loc="upper right", frameon=True,
-                       title="faint: m < 3", title_fontsize=7.5)
+        axes[1].legend(ncol=4, fontsize=7.5, loc="upper center", frameon=True,
+                       title="faint where m < 3", title_fontsize=7.5, columnspacing=1.0,
+                       handlelength=1.6)
         _chart_panel(axes[3])
         vz.label_panel(axes[3], "(D) the (n, m) chart: limits v -> inf (= g = 1)")
         axes[3].title.set_y(-0.2)
     return fig
-
-
-def _faces_for(n, g, v):
-    """f of an n-gonal mesh of genus g with v vertices (from Euler and 2e = nf)."""
-    return (2 - 2 * g - v) / (1 - n / 2)
 
 
 def _chart_panel(ax) -> None:
@@ -1277,6 +1267,6 @@ def report(results: dict[str, list[Claim]]) -> str:
     total = sum(len(c) for c in results.values())
     failed = [(n, c) for n, cl in results.items() for c in cl if not c.holds]
     lines.append(f"{total - len(failed)} of {total} claims hold"
-                 + ("" if not failed else f"; FAILED: " +
+                 + ("" if not failed else "; FAILED: " +
                     "; ".join(f"{n}: {c.text}" for n, c in failed)))
     return "\n".join(lines)

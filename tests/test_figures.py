@@ -247,7 +247,7 @@ def _canon(seq):
 
 def _slow_vertex_configs(mesh):
     """Walk every vertex's faces in Python (reference for the vectorized version)."""
-    nxt, twin, face = mesh.next, mesh.twin, mesh.halfedge_face
+    twin, face = mesh.twin, mesh.halfedge_face
     prev = mesh.prev
     out = {}
     for h in range(mesh.n_halfedges):

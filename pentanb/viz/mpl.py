@@ -24,7 +24,7 @@ Examples
 from __future__ import annotations
 
 import contextlib
-from typing import Iterable, Mapping, Sequence
+from typing import Mapping
 
 import matplotlib
 import numpy as np
@@ -38,7 +38,8 @@ from ..colors import EDGE_COLOR, face_color, face_label, face_rgb
 from ..mesh import Mesh
 
 __all__ = ["draw_mesh", "plot_mesh", "add_face_legend", "panel_figure", "label_panel",
-           "draw_flat", "face_polygons", "shaded_colors", "view_direction", "fit_view",
+           "draw_flat", "draw_segments", "face_polygons", "shaded_colors", "view_direction",
+           "fit_view",
            "save_figure", "style", "DPI", "ELEV", "AZIM"]
 
 #: Resolution of every saved figure (dots per inch).
