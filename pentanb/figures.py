@@ -31,6 +31,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 
 from . import shapes, topology
+from .cli import count_formula
 from .classic import honeycomb, loop_remesh, preserve_hexagons, triangulate
 from .colors import EDGE_COLOR, face_color, face_label
 from .dual import dual
@@ -112,35 +113,10 @@ def _counts_claims(panel: str, before: Mesh, after: Mesh, scheme: str,
                 f"{formula(scheme)} from (V, E, F) = {_vef(before)}", vef, _vef(after))]
 
 
-class _Lin:
-    """A linear form in V, E, F, to print a scheme's count formula."""
-
-    def __init__(self, c):
-        self.c = tuple(c)
-
-    def __add__(self, o):
-        o = o if isinstance(o, _Lin) else _Lin((0, 0, 0))
-        return _Lin(a + b for a, b in zip(self.c, o.c))
-
-    __radd__ = __add__
-
-    def __mul__(self, k):
-        return _Lin(k * a for a in self.c)
-
-    __rmul__ = __mul__
-
-    def __str__(self):
-        parts = []
-        for k, name in zip(self.c, "VEF"):
-            if k:
-                parts.append(name if k == 1 else f"{k}{name}")
-        return "+".join(parts) or "0"
-
-
 def formula(scheme: str) -> str:
-    """A scheme's count formula as text, e.g. ``"(V+2E+F, 5E, 2E)"``."""
-    out = SCHEMES[scheme].counts(_Lin((1, 0, 0)), _Lin((0, 1, 0)), _Lin((0, 0, 1)))
-    return "(" + ", ".join(str(x) for x in out) + ")"
+    """A scheme's count formula as text, e.g. ``"(V+2E+F, 5E, 2E)"`` (see
+    :func:`pentanb.cli.count_formula`)."""
+    return count_formula(scheme)
 
 
 # ====================================================================== configurations

@@ -335,5 +335,6 @@ def test_big_mesh_draws_quickly():
 
 def test_import_pentanb_does_not_import_matplotlib():
     code = ("import sys, pentanb, pentanb.convergence, pentanb.cli; "
+            "pentanb.cli.demo_table(['cube']); "
             "assert 'matplotlib' not in sys.modules, 'matplotlib imported'")
     subprocess.run([sys.executable, "-c", code], check=True)
