@@ -216,20 +216,31 @@ def darts(faces: list[list[int]]) -> tuple[list[int], list[int], list[int], list
 
 # ---------------------------------------------------------------------- checks
 def check_valid(out: Mesh) -> None:
-    """Assert that an operator's output is a valid mesh whose twins are right.
+    """Assert that an operator's output is a valid mesh whose derived arrays are right.
 
-    The constructor re-validates the faces; the operator-provided ``twin``
-    is compared with the constructor's and with a dictionary of directed
-    edges built here.
+    The constructor re-validates the faces; the arrays an operator may hand
+    over with its output (``twin``, the vertex rings, ...) are compared with
+    the rebuilt mesh's, and ``twin`` with a dictionary of directed edges
+    built here.
     """
     assert isinstance(out, Mesh)
     assert out.vertices.shape == (out.n_vertices, 3)
     assert np.isfinite(out.vertices).all()
     assert out.offsets[0] == 0 and out.offsets[-1] == out.corners.size
     rebuilt = Mesh(out.vertices, face_lists(out))   # raises MeshError when invalid
-    assert np.array_equal(rebuilt.twin, out.twin)
     _, _, _, twin = darts(face_lists(out))
     assert out.twin.tolist() == twin
+    for name in ("twin", "next", "prev", "head", "rotation", "halfedge_face",
+                 "halfedge_edge", "edge_halfedge", "edges", "valences", "face_sizes",
+                 "component_labels"):
+        assert np.array_equal(getattr(out, name), getattr(rebuilt, name)), name
+    assert np.allclose(out.face_centroids, rebuilt.face_centroids, rtol=0, atol=1e-12)
+    ring, off = out.vertex_ring
+    ring2, off2 = rebuilt.vertex_ring
+    assert np.array_equal(off, off2)
+    for v in range(out.n_vertices):
+        assert same_faces_up_to_rotation([ring[off[v]:off[v + 1]].tolist()],
+                                         [ring2[off[v]:off[v + 1]].tolist()]), v
 
 
 def same_faces_up_to_rotation(a: list[list[int]], b: list[list[int]]) -> bool:

@@ -11,9 +11,9 @@ import re
 
 import numpy as np
 import pytest
-from helpers import face_lists, two_cubes
+from helpers import check_valid, corpus, face_lists, two_cubes
 
-from pentanb import Mesh, MeshError, shapes
+from pentanb import Mesh, MeshError, dual, pentagonalize, shapes
 
 CUBE_FACES = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4],
               [1, 5, 7, 3]]
@@ -268,6 +268,37 @@ def test_arrays_are_read_only():
                 m.face_sizes, m.valences, m.halfedge_edge, m.edges, m.face_centroids):
         with pytest.raises(ValueError):
             arr[0] = 1
+
+
+def test_derived_arrays_are_read_only():
+    # the mesh caches what it derives; nothing it hands out may be written to,
+    # or the cache (and every later result) would be corrupted
+    meshes = []
+    for m0 in (shapes.cube(), corpus("cube_split"), shapes.torus(3, 4)):
+        meshes += [m0, dual(m0), dual(dual(m0)), pentagonalize(m0)]
+    for m in meshes:
+        ring, ring_off = m.vertex_ring
+        arrays = {"vertices": m.vertices, "corners": m.corners, "offsets": m.offsets,
+                  "twin": m.twin, "next": m.next, "prev": m.prev, "head": m.head,
+                  "rotation": m.rotation, "halfedge_face": m.halfedge_face,
+                  "halfedge_edge": m.halfedge_edge, "edge_halfedge": m.edge_halfedge,
+                  "edges": m.edges, "face_sizes": m.face_sizes, "valences": m.valences,
+                  "face_centroids": m.face_centroids, "face_normals": m.face_normals,
+                  "component_labels": m.component_labels, "face 0": m.faces[0],
+                  "vertex_ring": ring, "vertex_ring offsets": ring_off}
+        writable = [name for name, a in arrays.items() if a.flags.writeable]
+        assert writable == [], repr(m)
+
+
+def test_writing_to_a_vertex_ring_cannot_corrupt_the_mesh():
+    m = shapes.cube()
+    ring, _ = m.vertex_ring
+    try:
+        ring[:] = 0
+    except ValueError:
+        pass
+    assert np.array_equal(np.sort(m.vertex_ring[0]), np.arange(24))
+    check_valid(dual(m))
 
 
 def test_constructor_copies_its_inputs():
