@@ -205,6 +205,24 @@ def test_genus_surface_refuses_bad_genus(genus):
         shapes.genus_surface(genus)
 
 
+@pytest.mark.parametrize("rings, sides", [(6, 4), (10, 6)])
+def test_genus_surface_with_a_base_of_another_size(rings, sides):
+    # a base torus whose size differs from the rings/sides defaults (8, 6):
+    # chained from its own +x and -x faces, or refused with a ValueError
+    base = shapes.torus(rings, sides)
+    try:
+        m = shapes.genus_surface(2, base=base)
+    except ValueError:
+        return
+    check_valid(m)
+    n = rings * sides
+    assert (m.n_vertices, m.n_faces, m.genus) == (2 * n - 4, 2 * n - 2, 2)
+    # the glued square lies on the mirror plane between the two copies, at
+    # the largest |x| of the base's vertices on its outer equator
+    a = float(np.abs(base.vertices[face_lists(base)[0], 0]).mean())
+    assert np.sum(np.isclose(m.vertices[:, 0], a)) == 4
+
+
 def test_genus_surface_refuses_odd_rings():
     with pytest.raises(ValueError, match="rings must be even"):
         shapes.genus_surface(2, rings=7)
