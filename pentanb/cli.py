@@ -96,7 +96,8 @@ def _progress(done: int, total: int, message: str) -> None:
 
 
 def _figures(args) -> int:
-    os.environ["MPLBACKEND"] = "Agg"     # no display needed (figures never use pyplot)
+    if "matplotlib" not in sys.modules:   # no display needed (figures never use pyplot)
+        os.environ.setdefault("MPLBACKEND", "Agg")
     from . import figures
     names = args.only or list(figures.FIGURES)
     try:
