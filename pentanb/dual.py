@@ -64,7 +64,7 @@ def _dual_connectivity(mesh: Mesh) -> Mesh:
     out.__dict__["_twin_maker"] = lambda: pos[nxt[rot[ring]]]
     # the dual's vertex f is surrounded by the dual half-edges of face f's
     # half-edges, in face order: its rotation order (rotation[pos[h]] == pos[next[h]])
-    out.__dict__["_rings"] = (pos, mesh.offsets)
+    out._set_rings(pos, mesh.offsets)
     return out
 
 

@@ -221,8 +221,12 @@ def pillow(n: int, radius: float = 1.0) -> Mesh:
     """
     t = 2 * np.pi * (np.arange(n) / n) + np.pi / 2
     v = np.stack([radius * np.cos(t), radius * np.sin(t), np.zeros(n)], axis=1)
-    poly = list(range(n))
-    return Mesh(v, [poly, poly[::-1]])
+    poly = np.arange(n)
+    # two faces sharing all their edges: a valid 2-manifold (a "dihedron"), but
+    # its 2-valent vertices are refused by the Mesh constructor (whose dual
+    # they would break); pentagonalize and preserve_pentagons handle it
+    return Mesh.from_csr(v, np.concatenate([poly, poly[::-1]]), [0, n, 2 * n],
+                         validate=False)
 
 
 @functools.lru_cache(maxsize=None)

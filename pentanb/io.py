@@ -110,6 +110,7 @@ def read_obj(path) -> Mesh:
     (relative) indices are understood; all other lines are skipped."""
     vertices: list[list[float]] = []
     faces: list[list[int]] = []
+    face_lines: list[int] = []
     with open(path) as fh:
         for lineno, line in enumerate(fh, 1):
             parts = line.split("#", 1)[0].split()
@@ -133,18 +134,25 @@ def read_obj(path) -> Mesh:
                         raise MeshError(f"{path}:{lineno}: bad face index {token!r}") \
                             from None
                     if i > 0:
-                        i -= 1
+                        i -= 1  # may refer to a vertex defined further down
                     elif i < 0:
                         i += len(vertices)
+                        if i < 0:
+                            raise MeshError(f"{path}:{lineno}: face index {token} out of range "
+                                            "(a relative index before the first vertex; "
+                                            f"{len(vertices)} vertices so far)")
                     else:
                         raise MeshError(f"{path}:{lineno}: face index 0 (OBJ counts from 1)")
-                    if not 0 <= i < len(vertices):
-                        raise MeshError(f"{path}:{lineno}: face index {token} out of range "
-                                        f"({len(vertices)} vertices so far)")
                     face.append(i)
                 faces.append(face)
+                face_lines.append(lineno)
     if not faces:
         raise MeshError(f"{path}: no faces")
+    for face, lineno in zip(faces, face_lines):
+        bad = [i for i in face if i >= len(vertices)]
+        if bad:
+            raise MeshError(f"{path}:{lineno}: face index {bad[0] + 1} out of range "
+                            f"({len(vertices)} vertices in the file)")
     return _mesh_or_error(path, vertices, faces)
 
 

@@ -57,7 +57,10 @@ class Mesh:
         polygon mesh: an index out of range, a face with repeated or fewer
         than 3 vertices, a directed edge used twice, a boundary edge, a
         vertex whose faces form more than one fan, an unused vertex or a
-        non-finite coordinate.  The message names the culprit.
+        non-finite coordinate.  Also refused, because the dual (the paper's
+        smoothing) cannot be built from them: a vertex with fewer than 3
+        edges, and two faces that share more than one edge.  The message
+        names the culprit.
 
     Notes
     -----
@@ -111,8 +114,8 @@ class Mesh:
         self = object.__new__(cls)
         if validate:
             v = _as_vertices(vertices)
-            c = np.ascontiguousarray(corners, dtype=np.int64).ravel()
-            o = np.ascontiguousarray(offsets, dtype=np.int64).ravel()
+            c = np.array(corners, dtype=np.int64).ravel()  # copies: the caller's
+            o = np.array(offsets, dtype=np.int64).ravel()  # arrays stay theirs
             if o.size == 0 or o[0] != 0 or o[-1] != c.size or np.any(np.diff(o) < 0):
                 raise MeshError("offsets must start at 0, rise, and end at len(corners)")
             self._init(v, c, o)
@@ -314,7 +317,12 @@ class Mesh:
 
     @cached_property
     def _rings(self) -> tuple[IntArray, IntArray]:
-        return _vertex_rings(self.rotation, self._corners, self.valences)
+        ring, off = _vertex_rings(self.rotation, self._corners, self.valences)
+        return _readonly(ring), _readonly(off)
+
+    def _set_rings(self, ring: np.ndarray, ring_offsets: np.ndarray) -> None:
+        """Cache vertex rings an operator wrote directly (see :attr:`vertex_ring`)."""
+        self.__dict__["_rings"] = (_readonly(ring), _readonly(ring_offsets))
 
     @property
     def vertex_ring(self) -> tuple[IntArray, IntArray]:
@@ -480,6 +488,26 @@ class Mesh:
         if unused.size:
             raise MeshError(f"vertex {int(unused[0])} is not used by any face "
                             f"({unused.size} unused vertices)")
+        few = np.flatnonzero(self.valences < 3)
+        if few.size:
+            v = int(few[0])
+            raise MeshError(f"vertex {v} has only {int(self.valences[v])} edges; every vertex "
+                            "needs at least 3 (Section 4 rules out 1- and 2-valent vertices, "
+                            "and the dual of such a vertex would be a face of fewer than "
+                            "3 sides)")
+        eh = self.edge_halfedge
+        f1, f2 = fid[eh], fid[twin[eh]]
+        # (a face on both sides of an edge would repeat a vertex: refused above)
+        m = np.int64(self.n_faces)
+        pair = np.minimum(f1, f2) * m + np.maximum(f1, f2)
+        order = np.argsort(pair, kind="stable")
+        dup = np.flatnonzero(pair[order][1:] == pair[order][:-1])
+        if dup.size:
+            a, b = order[dup[0]], order[dup[0] + 1]
+            e1, e2 = (tuple(int(x) for x in self.edges[i]) for i in (a, b))
+            raise MeshError(f"faces {int(min(f1[a], f2[a]))} and {int(max(f1[a], f2[a]))} "
+                            f"share more than one edge ({e1} and {e2}); the dual would "
+                            "have a double edge")
         ring, _ = self._rings
         if not np.array_equal(np.sort(ring), np.arange(c.size)):
             # a vertex whose rotation orbit is shorter than its valence
@@ -515,6 +543,8 @@ def _as_csr(faces) -> tuple[IntArray, IntArray]:
                 raise MeshError("face indices must be integers")
         arr = faces.astype(np.int64)
         m, k = arr.shape
+        if m == 0:
+            raise MeshError("the mesh has no faces")
         return arr.ravel().copy(), np.arange(0, (m + 1) * k, k, dtype=np.int64)[: m + 1]
     if isinstance(faces, np.ndarray) and faces.ndim != 1:
         raise MeshError(f"faces must be a list of index sequences or an (m, k) array, "

@@ -55,7 +55,7 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     vertices = np.concatenate([mesh.vertices, edge_points(mesh, 2), mesh.face_centroids])
     corners, offsets = fixed_size(faces)
     out = output(vertices, corners, offsets, new_twin.reshape(-1))
-    out.__dict__["_rings"] = _pentagonalized_rings(mesh, t1 - n)
+    out._set_rings(*_pentagonalized_rings(mesh, t1 - n))
     return out
 
 

@@ -147,35 +147,37 @@ def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8,
                   sides: int = 6) -> Mesh:
     """A chain of ``genus`` tori joined where they touch (Figure 4B style).
 
-    Each torus loses the face on its outer equator at +x (face 0) and, in
-    the middle of the chain, the one at -x; neighbours are mirror images
-    glued along those faces.  The glued face's corners are flattened onto
-    the mirror plane first.  Every face of ``base`` is kept, so a chain of
-    hexagonal tori is all hexagons (its 6 (g - 1) seam vertices are
+    Each torus loses its face furthest along +x and, in the middle of the
+    chain, the one furthest along -x; neighbours are mirror images glued
+    along those faces.  The glued faces' corners are flattened onto the
+    mirror planes first.  Every other face of ``base`` is kept, so a chain
+    of hexagonal tori is all hexagons (its 6 (g - 1) seam vertices are
     4-valent, as equation (1) demands for g >= 2).
 
     Parameters
     ----------
     genus : int, >= 1
     base : Mesh, optional
-        A torus whose face 0 is centred at +x and face ``rings // 2 * sides``
-        at -x, symmetric under a half turn about z -- as :func:`torus` and
-        :func:`hexagonal_torus` build it with an even ``rings``.  Default:
-        ``torus(rings, sides)``.
+        A torus (any mesh whose +x-most and -x-most faces share no vertex).
+        Default: ``torus(rings, sides)``.
+    rings, sides : int
+        Size of the default base (ignored when ``base`` is given).
     """
     if isinstance(genus, bool) or not isinstance(genus, (int, np.integer)) or genus < 1:
         raise ValueError(f"genus must be an integer >= 1, got {genus!r}")
     if base is None:
-        if rings % 2:
-            raise ValueError(f"rings must be even to chain tori, got {rings}")
         base = torus(rings, sides)
     genus = int(genus)
     if genus == 1:
         return base
-    right, left = 0, (rings // 2) * sides
     faces = base.faces
+    x = base.face_centroids[:, 0]
+    right, left = int(np.argmax(x)), int(np.argmin(x))
     v = base.vertices.copy()
     fr, fl = faces[right], faces[left]
+    if np.intersect1d(fr, fl).size:
+        raise MeshError(f"faces {right} and {left} of the base share a vertex; "
+                        "cannot chain copies along them")
     a = float(np.abs(np.concatenate([v[fr, 0], v[fl, 0]])).mean())
     v[fr, 0] = a
     v[fl, 0] = -a
@@ -303,8 +305,6 @@ def get(name: str) -> Mesh:
     ValueError
         For an unknown name; the message lists the known ones.
     """
-    try:
-        return SHAPES[name]()
-    except (KeyError, TypeError):
-        raise ValueError(f"unknown shape {name!r}; known shapes: {', '.join(SHAPES)}") \
-            from None
+    if not isinstance(name, str) or name not in SHAPES:
+        raise ValueError(f"unknown shape {name!r}; known shapes: {', '.join(SHAPES)}")
+    return SHAPES[name]()

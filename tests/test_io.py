@@ -138,7 +138,7 @@ def test_obj_face_index_out_of_range(tmp_path):
     lines[10] = "f 5 7 9 6"                 # line 11: only 8 vertices
     path = write_text(tmp_path / "bad.obj", lines)
     with pytest.raises(MeshError, match=rf"{esc(path)}:11: face index 9 out of range "
-                                        r"\(8 vertices so far\)"):
+                                        r"\(8 vertices in the file\)"):
         read(path)
 
 
@@ -353,3 +353,19 @@ def test_write_replaces_an_existing_file(tmp_path):
     write(shapes.cube(), target)
     assert face_lists(read(target)) == face_lists(shapes.cube())
     assert os.listdir(tmp_path) == ["m.obj"]
+
+
+def test_obj_face_may_refer_to_a_vertex_defined_later(tmp_path):
+    # OBJ readers commonly accept faces before the vertices they use
+    lines = ["f 1 2 3", "f 1 3 4", "f 1 4 2", "f 2 4 3",
+             "v 1 1 1", "v 1 -1 -1", "v -1 1 -1", "v -1 -1 1"]
+    path = write_text(tmp_path / "late.obj", lines)
+    m = read(path)
+    assert (m.n_vertices, m.n_edges, m.n_faces) == (4, 6, 4)
+    assert m.faces[0].tolist() == [0, 1, 2]
+
+
+def test_obj_relative_index_before_first_vertex(tmp_path):
+    path = write_text(tmp_path / "rel.obj", ["v 0 0 0", "f -1 -2 -3"])
+    with pytest.raises(MeshError, match=rf"{esc(path)}:2: face index -2 out of range"):
+        read(path)

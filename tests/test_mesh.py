@@ -541,3 +541,22 @@ def test_faces_property_round_trips(corpus_mesh):
     again = Mesh(m.vertices, m.faces)
     assert np.array_equal(again.corners, m.corners)
     assert np.array_equal(again.offsets, m.offsets)
+
+
+# ---------------------------------------------------------------- meshes the dual cannot take
+def test_two_valent_vertex_is_refused():
+    # the "dihedron": two triangles glued along their whole boundary
+    with pytest.raises(MeshError, match=r"vertex 0 has only 2 edges; every vertex needs "
+                                        r"at least 3"):
+        Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 1]])
+
+
+def test_faces_sharing_two_edges_are_refused():
+    # a 3 x 3 quad torus with two neighbouring quads merged into a hexagon:
+    # quad [2, 5, 3, 0] now meets the hexagon along (2, 5) and along (0, 3)
+    t = shapes.torus(3, 3)
+    faces = [[2, 5, 3, 0], [3, 6, 7, 4], [4, 7, 8, 5], [5, 8, 6, 3], [6, 0, 1, 7],
+             [7, 1, 2, 8], [8, 2, 0, 6], [1, 0, 3, 4, 5, 2]]
+    with pytest.raises(MeshError, match=r"faces 0 and 7 share more than one edge "
+                                        r"\(\(2, 5\) and \(0, 3\)\)"):
+        Mesh(t.vertices, faces)

@@ -223,9 +223,16 @@ def test_genus_surface_with_a_base_of_another_size(rings, sides):
     assert np.sum(np.isclose(m.vertices[:, 0], a)) == 4
 
 
-def test_genus_surface_refuses_odd_rings():
-    with pytest.raises(ValueError, match="rings must be even"):
-        shapes.genus_surface(2, rings=7)
+def test_genus_surface_with_odd_rings():
+    # the glued faces are found by position (+x-most, -x-most), so any torus works
+    m = shapes.genus_surface(2, rings=7, sides=5)
+    assert m.genus == 2
+    assert m.n_faces == 2 * (7 * 5 - 1)
+
+
+def test_genus_surface_refuses_a_base_whose_end_faces_touch():
+    with pytest.raises(MeshError, match="share a vertex"):
+        shapes.genus_surface(2, base=shapes.tetrahedron())
 
 
 # ====================================================================== voxels, animal
