@@ -31,6 +31,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 
 from . import shapes, topology
+from .shapes import hard_edged_cube  # re-exported: the cube of Figures 1, 8 and 11
 from .cli import count_formula
 from .classic import honeycomb, loop_remesh, preserve_hexagons, triangulate
 from .colors import EDGE_COLOR, face_color, face_label
@@ -195,24 +196,6 @@ def configuration_counts(configs: Iterable[str]) -> dict[str, int]:
 
 
 # ====================================================================== meshes
-def hard_edged_cube(inset: float = 0.8) -> Mesh:
-    """A cube with hard edges: each face a 3x3 grid whose outer rows are thin.
-
-    The planes ``+-inset`` cut every face into a big central quad, four
-    strips along the edges and four small corner squares (54 quads): the
-    sharp-edged cube of Figures 1, 8 and 11, whose 4-valent grid vertices
-    make the (4, 4) regions that become 4.3.3.4.3 after pentagonalization.
-
-    Parameters
-    ----------
-    inset : float in (0, 1)
-        Where the edge loops sit; closer to 1 keeps the edges harder.
-    """
-    m = shapes.voxels(np.ones((3, 3, 3), dtype=bool))
-    coord = np.array([-1.0, -inset, inset, 1.0])
-    return m.with_vertices(coord[np.rint(m.vertices).astype(int)])
-
-
 def pillow(n: int, radius: float = 1.0) -> Mesh:
     """A flat closed mesh of two faces: a regular n-gon (face 0, facing +z) and its back.
 
@@ -234,7 +217,7 @@ def _m(key: str) -> Mesh:
     """Every mesh the figures use, built once."""
     p = lambda m, k=1: subdivide(m, "pentagonalize", k, 2)  # noqa: E731
     builders: dict[str, Callable[[], Mesh]] = {
-        "hard_cube": hard_edged_cube,
+        "hard_cube": shapes.hard_edged_cube,
         "fig1B": lambda: p(_m("hard_cube")),
         "fig1C": lambda: p(_m("fig1B")),
         "fig1D": lambda: subdivide(_m("fig1B"), "preserve_pentagons", 1, 2),
@@ -260,7 +243,7 @@ def _m(key: str) -> Mesh:
         "fig8B": lambda: dual(_m("fig8A")),
         "fig9A": lambda: p(_m("hex_torus")),
         "fig9B": lambda: dual(_m("fig9A")),
-        "grid_cube": lambda: hard_edged_cube(1 / 3),
+        "grid_cube": lambda: shapes.hard_edged_cube(1 / 3),
         "fig11A": lambda: subdivide(_m("grid_cube"), "preserve_pentagons", 1, 2),
         "fig11B": lambda: dual(_m("fig11A")),
         "fig11A2": lambda: subdivide(_m("fig11A"), "preserve_pentagons", 1, 2),

@@ -17,7 +17,7 @@ from .mesh import Mesh, MeshError
 
 __all__ = ["tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron", "torus",
            "hexagonal_torus", "genus_surface", "double_torus", "hexagonal_surface",
-           "voxels", "animal", "SHAPES", "get"]
+           "voxels", "hard_edged_cube", "animal", "SHAPES", "get"]
 
 PHI = (1.0 + 5.0 ** 0.5) / 2.0
 
@@ -260,6 +260,24 @@ def voxels(occupied) -> Mesh:
     return Mesh(pts, inverse.reshape(-1, 4))
 
 
+def hard_edged_cube(inset: float = 0.8) -> Mesh:
+    """A cube with hard edges: each face a 3x3 grid whose outer rows are thin.
+
+    The planes ``+-inset`` cut every face into a big central quad, four
+    strips along the edges and four small corner squares (54 quads): the
+    sharp-edged cube of Figures 1, 8 and 11, whose 4-valent grid vertices
+    make the (4, 4) regions that become 4.3.3.4.3 after pentagonalization.
+
+    Parameters
+    ----------
+    inset : float in (0, 1)
+        Where the edge loops sit; closer to 1 keeps the edges harder.
+    """
+    m = voxels(np.ones((3, 3, 3), dtype=bool))
+    coord = np.array([-1.0, -inset, inset, 1.0])
+    return m.with_vertices(coord[np.rint(m.vertices).astype(int)])
+
+
 def animal() -> Mesh:
     """A low-poly rabbit of unit cubes standing in for Figure 12's model.
 
@@ -285,6 +303,7 @@ def animal() -> Mesh:
 SHAPES: dict[str, Callable[[], Mesh]] = {
     "tetrahedron": tetrahedron,
     "cube": cube,
+    "hard_cube": hard_edged_cube,
     "octahedron": octahedron,
     "dodecahedron": dodecahedron,
     "icosahedron": icosahedron,

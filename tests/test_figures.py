@@ -31,7 +31,7 @@ matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")
 
 import pentanb  # noqa: E402
-from pentanb import figures  # noqa: E402
+from pentanb import figures, shapes  # noqa: E402
 from pentanb.cli import main  # noqa: E402
 from pentanb.viz import mpl as vz  # noqa: E402
 
@@ -192,7 +192,7 @@ def test_panel_polygons_are_the_faces(drawn):
 
 # ---------------------------------------------------------------------- the numbers
 def test_fig01_counts_follow_the_formulas():
-    cube = figures.hard_edged_cube()
+    cube = shapes.hard_edged_cube()
     V, E, F = cube.n_vertices, cube.n_edges, cube.n_faces
     b = pentanb.subdivide(cube, "pentagonalize", 1, 2)
     assert (b.n_vertices, b.n_edges, b.n_faces) == (V + 2 * E + F, 5 * E, 2 * E)
