@@ -1,9 +1,14 @@
 """Write the notebooks of this folder from the cell sources below.
 
-Run ``python notebooks/_build_notebooks.py`` after editing; the ``.ipynb``
-files are written without outputs (``tests/test_notebooks.py`` executes them
-and checks that they stay clean).  Each notebook is thin: it calls
-:mod:`pentanb` and explains; every computation lives in the library.
+Run ``python notebooks/_build_notebooks.py`` after editing; it rewrites every
+``.ipynb`` here, without outputs.  ``tests/test_notebooks.py`` executes the
+notebooks, checks that they are committed clean, and that they match this
+script.
+
+The notebooks are thin: they call :mod:`pentanb` (``pentanb.figures`` for the
+paper's figures and their claims, ``pentanb.viz`` for drawing,
+``pentanb.topology`` and ``pentanb.convergence`` for the numbers) and explain.
+The only code of their own is widget wiring and a cache of built meshes.
 """
 
 from __future__ import annotations
@@ -40,8 +45,8 @@ SETUP = code("""
     from IPython.display import clear_output, display
 
     import pentanb
+    from pentanb import figures
     from pentanb.viz.mpl import plot_mesh
-    from _interim import row
 """)
 
 #: Building is cached so that a slider coming back to a position is instant;
@@ -68,6 +73,17 @@ CACHE = code('''
             best = k
         return best
 ''')
+
+
+def claims_cell(*names) -> object:
+    """Print the claims of figures ``names`` (and fail loudly if one does not hold)."""
+    args = ", ".join(repr(n) for n in names)
+    return code(f"""
+        for name in ({args},):
+            for claim in figures.claims(name):
+                print(claim)
+                assert claim.holds, claim
+    """)
 
 
 # ---------------------------------------------------------------------------
@@ -98,43 +114,37 @@ NB01 = [
 
     So every closed surface can be meshed with pentagons, hexagons need genus at
     least 1, and nothing with more than six sides works. This notebook redraws
-    equation (1), prints the paper's $(n, m)$ chart, checks these claims with
-    `pentanb.topology`, compares equation (1) with real meshes, and then lets you
-    move $n$, $g$ and $v$ yourself.
+    equation (1) and the paper's $(n, m)$ chart, checks these claims with
+    `pentanb.topology`, and then lets you move $n$, $g$ and $v$ yourself.
     """),
     code("""
     %matplotlib inline
     import ipywidgets as widgets
-    import matplotlib.pyplot as plt
     import numpy as np
     from IPython.display import clear_output, display
+    from matplotlib.figure import Figure
 
     import pentanb
-    from pentanb import topology
+    from pentanb import figures, topology
     """),
     md(r"""
-    ## Equation (1)
+    ## Equation (1) and the chart
 
-    Average valence $m$ against the number of vertices $v$ for triangles, quads,
-    pentagons and hexagons on a sphere ($g = 0$). Points below the line $m = 3$
-    cannot be meshes without 1- or 2-valent vertices.
+    Panels (A)-(C): the average valence $m$ against the number of vertices $v$ for
+    $n = 3, \dots, 8$ on a sphere, a torus and a genus-2 surface; dots are meshes of
+    the package. Below the dashed line $m = 3$ no mesh avoids 1- and 2-valent
+    vertices. Panel (D): the limits $(n, 2n/(n-2))$ as $v \to \infty$, the paper's
+    chart.
     """),
     code("""
-    v = np.linspace(2, 80, 400)
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for n in (3, 4, 5, 6):
-        ax.plot(v, topology.average_valence(n, 0, v), label=f"n = {n}")
-    ax.axhline(3, color="k", lw=0.8, ls="--")
-    ax.set(xlabel="v", ylabel="m", ylim=(0, 7), title="Equation (1), g = 0")
-    ax.legend()
-    plt.show()
+    figures.equation1()
     """),
     md(r"""
-    ## The paper's chart
+    ## The paper's chart, and the claims checked
 
-    As $v \to \infty$, $m \to 2n/(n-2)$: the value for $g = 1$, the tessellations of
-    the plane. "(5, 10/3) can only have semi-regular tesselations": pentagons cannot
-    all meet at vertices of one valence in the limit.
+    As $v \to \infty$, $m \to 2n/(n-2)$, the value for $g = 1$ (tessellations of the
+    plane). "(5, 10/3) can only have semi-regular tesselations": in the limit,
+    pentagons cannot all meet at vertices of one valence.
     """),
     code("""
     print(f"{'(n, m)':>16}  regular?  type")
@@ -143,11 +153,9 @@ NB01 = [
         print(f"{pair:>16}  {'yes' if row.admits_regular else 'no ':>8}  {row.description}")
     """),
     md(r"""
-    ## The claims, checked
-
     For each $n$: the limit valence $2n/(n-2)$, the fewest vertices of an $n$-gon
     sphere and torus with $m \ge 3$, and whether a conversion ("$n$-gonalization")
-    or a preservation scheme can exist.
+    or a preservation scheme can exist. Then every claim of Section 4, measured.
     """),
     code("""
     print(" n  2n/(n-2)  min v (g=0)  min v (g=1)  conversion  preservation")
@@ -156,21 +164,14 @@ NB01 = [
               f"{str(topology.min_vertices(n, 0)):>11}  {str(topology.min_vertices(n, 1)):>11}  "
               f"{str(topology.ngonalization_exists(n)):>10}  "
               f"{str(topology.ngon_preservation_exists(n)):>12}")
-
-    assert topology.min_vertices(5, 0) == 20    # the dodecahedron
-    assert topology.min_vertices(4, 0) == 8     # the cube
-    assert topology.min_vertices(3, 0) == 4     # the tetrahedron
-    assert topology.min_vertices(6, 0) is None  # no hexagonal sphere
-    assert topology.ngonalization_exists(5) and not topology.ngonalization_exists(6)
-    assert topology.ngon_preservation_exists(6) and not topology.ngon_preservation_exists(7)
-    print("Section 4's claims hold.")
     """),
+    claims_cell("equation1"),
     md(r"""
-    ## Equation (1) against real meshes
+    ## Equation (1) against every shape of the package
 
-    Every shape in `pentanb.shapes` whose faces all have the same number of sides:
-    its measured average valence $2e/v$ and the value equation (1) predicts from
-    $n$, $g$ and $v$ alone.
+    For each shape whose faces all have the same number of sides: its measured
+    average valence $2e/v$ and the value equation (1) predicts from $n$, $g$ and $v$
+    alone.
     """),
     code("""
     print(f"{'shape':>18}  n  g    v  measured m  equation (1)")
@@ -190,7 +191,9 @@ NB01 = [
 
     Choose the number of sides $n$, the genus $g$ and the number of vertices $v$.
     The plot shows $m(v)$ for your $n$ and $g$, the line $m = 3$ and the limit
-    $2n/(n-2)$; the text says whether Euler's formula allows such a mesh.
+    $2n/(n-2)$; the text says whether Euler's formula allows such a mesh. Try
+    $n = 6, g = 0$ (never), $n = 6, g = 1$ (always exactly 3), $n = 7, g = 2$
+    (only up to 28 vertices).
     """),
     code("""
     n_slider = widgets.IntSlider(value=5, min=3, max=10, description="n (sides)")
@@ -201,25 +204,26 @@ NB01 = [
 
     def redraw(change=None):
         n, g, v = n_slider.value, g_slider.value, v_slider.value
+        vs = np.linspace(max(1.0, 2.5 - 2 * g), 200, 500)
+        fig = Figure(figsize=(6, 3.5))
+        ax = fig.subplots()
+        ax.plot(vs, topology.average_valence(n, g, vs), label=f"equation (1), n={n}, g={g}")
+        ax.axhline(3, color="k", lw=0.8, ls="--", label="m = 3")
+        ax.axhline(float(topology.limit_valence(n)), color="gray", lw=0.8, ls=":",
+                   label="limit 2n/(n-2)")
+        if v + 2 * g - 2 > 0:
+            ax.plot([v], [topology.average_valence(n, g, v)], "o", color="C3")
+        ax.set(xlabel="v", ylabel="m", ylim=(0, 8))
+        ax.legend(loc="lower right", fontsize=8)
+        counts = topology.ngon_mesh_counts(n, g, v)
         with out:
             clear_output(wait=True)
-            vs = np.linspace(max(1.0, 2.5 - 2 * g), 200, 500)
-            fig, ax = plt.subplots(figsize=(6, 3.5))
-            ax.plot(vs, topology.average_valence(n, g, vs), label=f"equation (1), n={n}, g={g}")
-            ax.axhline(3, color="k", lw=0.8, ls="--", label="m = 3")
-            ax.axhline(float(topology.limit_valence(n)), color="gray", lw=0.8, ls=":",
-                       label="limit 2n/(n-2)")
-            if v + 2 * g - 2 > 0:
-                ax.plot([v], [topology.average_valence(n, g, v)], "o", color="C3")
-            ax.set(xlabel="v", ylabel="m", ylim=(0, 8))
-            ax.legend(loc="lower right", fontsize=8)
-            plt.show()
-            m = topology.average_valence(n, g, v)
-            print(f"m = {m:.4f}  (limit {topology.limit_valence(n)})")
-            counts = topology.ngon_mesh_counts(n, g, v)
+            display(fig)
+            print(f"m = {topology.average_valence(n, g, v):.4f}  "
+                  f"(limit {topology.limit_valence(n)})")
             print("(v, e, f) =", counts if counts else "not integers: no such mesh")
             print("possible with m >= 3:", topology.can_tile(n, g, v))
-            print("admissible v for this n, g:", topology.vertex_range(n, g))
+            print("admissible v for this n and g:", topology.vertex_range(n, g))
 
 
     for w in (n_slider, g_slider, v_slider):
@@ -239,9 +243,9 @@ NB02 = [
     # From a tetrahedron to a dodecahedron (Figures 6 and 7)
 
     Pentagonalization (Section 5.1) cuts every edge into three equal parts, puts a
-    point at the centre of every face and joins it to every third point around the
-    face (Figure 6), so that every $n$-gon becomes $n$ pentagons. Then the dual is
-    applied an even number of times to smooth the result.
+    "point sphere" at the centre of every face and joins it to every third point
+    around the face (Figure 6), so that every $n$-gon becomes $n$ pentagons. Then
+    the dual is applied an even number of times to smooth the result.
 
     > "This scheme can convert the simplest triangular mesh (tetrahedron) to the
     > simplest pentagonal mesh (dodecahedron) as shown in Figure 7. This set of images
@@ -250,56 +254,82 @@ NB02 = [
 
     This notebook checks both claims: the pentagonalized tetrahedron has exactly the
     counts of a dodecahedron (12 pentagons, 30 edges, 20 three-valent vertices), and
-    the dual passes make it more uniform.
+    the spread of its vertices' distances from the centre shrinks with every pair
+    of duals. Then you can slide through the dual passes, and step through the
+    scheme one stage at a time.
     """),
     SETUP,
+    code("""
+    from pentanb.convergence import radius_spread
+    """),
     CACHE,
+    md("""
+    ## Figure 6: the scheme on one face
+
+    A hexagon: its edges are cut in three, the point sphere sits at its centroid, and
+    the dashed edges join them. The hexagon becomes six pentagons.
+    """),
+    code("""
+    figures.figure6()
+    """),
+    claims_cell(6),
     md("""
     ## Figure 7
 
-    (A) the tetrahedron, (B) one pentagonalization, (C) its dual (an icosahedral
-    shape), (D) the dual of (C), (E) and (F) the 5th and 6th duals.
+    (A) the tetrahedron, (B) one pentagonalization, (C) its dual (icosahedral),
+    (D) the dual of (C), (E) and (F) the 5th and 6th duals. As in the paper, each
+    panel is scaled to fit.
     """),
     code("""
-    tet = pentanb.shapes.tetrahedron()
-    B = pentanb.pentagonalize(tet)
-    stages = [tet, B] + [pentanb.smooth(B, k) for k in (1, 2, 5, 6)]
-    row(stages, ["(A)", "(B)", "(C)", "(D)", "(E)", "(F)"], ncols=3)
+    figures.figure7()
     """),
-    md("## The counts"),
+    claims_cell(7),
+    md("""
+    The spread (standard deviation / mean) of the distances of the vertices from
+    their centroid: 0 for a regular dodecahedron or icosahedron.
+    """),
     code("""
-    for k in range(7):
-        print(f"{k} duals: {pentanb.smooth(B, k)}")
-
-    dodeca = pentanb.shapes.dodecahedron()
-    assert B.face_size_histogram() == dodeca.face_size_histogram() == {5: 12}
-    assert B.valence_histogram() == dodeca.valence_histogram() == {3: 20}
-    assert (B.n_vertices, B.n_edges, B.n_faces) == (20, 30, 12)
-    print("The pentagonalized tetrahedron has the counts of a dodecahedron.")
+    for k in range(0, 9):
+        mesh = build("tetrahedron", "pentagonalize", 1, k)
+        print(f"{k} duals: {str(mesh):45s} radius spread {radius_spread(mesh):.5f}")
     """),
     md("""
     ## Slide through the dual passes
 
     Even numbers of duals give dodecahedral shapes (12 pentagons), odd numbers
-    icosahedral ones (20 triangles). Watch the shape even out.
+    icosahedral ones (20 triangles). Watch the shape even out. Drag the 3D view to
+    turn it.
     """),
     code("""
     duals = widgets.IntSlider(value=2, min=0, max=12, description="dual passes",
                               continuous_update=False)
-    out = widgets.Output()
+    picture = widgets.Output()
+    view3d = pentanb.view(build("tetrahedron", "pentagonalize", 1, 2), width=420, height=380)
 
 
     def redraw(change=None):
         mesh = build("tetrahedron", "pentagonalize", 1, duals.value)
-        with out:
+        with picture:
             clear_output(wait=True)
-            display(plot_mesh(mesh, title=f"pentagonalize + {duals.value} duals"))
-            print(mesh)
+            display(plot_mesh(mesh, title=f"pentagonalize + {duals.value} duals", size=3.4))
+            print(f"{mesh}   radius spread {radius_spread(mesh):.5f}")
+        view3d.update(mesh, fit=True)
 
 
     duals.observe(redraw, names="value")
-    display(widgets.VBox([duals, out]))
+    display(widgets.VBox([duals, widgets.HBox([picture, view3d],
+                                              layout={"flex_flow": "row wrap"})]))
     redraw()
+    """),
+    md("""
+    ## Step through the scheme
+
+    Move the slider: the tetrahedron, its edges cut in three, a point sphere in
+    every face, the new edges inserted one group at a time (in red), the pentagons,
+    then the duals. On every face you see Figure 6 happen.
+    """),
+    code("""
+    pentanb.step_through(pentanb.shapes.tetrahedron(), "pentagonalize", duals=2)
     """),
 ]
 
@@ -314,83 +344,101 @@ NB03 = [
 
     The cube is the paper's hard case: "if a non-quadrilateral or non-triangular
     subdivision is applied to such a cube, it is hard to represent boundary edges ...
-    As shown in Figure 1.C, the new subdivision does not create any lateral artifact."
+    As shown in Figure 1.C, the new subdivision does not create any lateral
+    artifact." As in the paper, the cube has hard edges: each face is a 3 x 3 grid
+    whose outer rows are thin (`figures.hard_edged_cube()`).
 
     Both of the paper's schemes are applied to it:
 
-    * **pentagonalization** (Section 5.1) turns every $n$-gon into $n$ pentagons. On the
-      cube's quad regions it makes the Cairo-like tiling the paper calls
-      "4.3.3.4.3" (Figure 8);
-    * **pentagon preservation** (Section 5.2) keeps a shrunken copy of every face and
-      rings it with pentagons, so "the number of non-pentagonal faces remains constant
-      after the first refinement" (Figures 10 and 11), and a pentagonal mesh stays
-      pentagonal (Figure 1D).
+    * **pentagonalization** (Section 5.1) turns every $n$-gon into $n$ pentagons; on
+      the cube's grid of quads it makes the "4.3.3.4.3" semi-regular tiling of
+      Figure 8 (pentagons whose corners have valences 4, 3, 3, 4, 3);
+    * **pentagon preservation** (Section 5.2) keeps a shrunken copy of every face
+      and rings it with pentagons (Figure 10), so "the number of non-pentagonal
+      faces remains constant after the first refinement" (Figure 11), and a
+      pentagonal mesh stays pentagonal (Figure 1D).
 
-    The counts below check these claims; the sliders at the end let you choose the
-    scheme, the number of iterations, the dual passes and the preservation scale.
+    Below, each figure is followed by the paper's claims about it, measured. The
+    sliders at the end let you choose the cube, the scheme, the number of
+    iterations, the dual passes and the preservation scale.
     """),
     SETUP,
     CACHE,
     md("""
     ## Figure 1
 
-    (A) the cube, (B) one pentagonalization, (C) two, (D) pentagon preservation
-    applied to (B). Each scheme is followed by two duals.
+    (A) the hard-edged cube, (B) one pentagonalization, (C) two, (D) pentagon
+    preservation applied to (B); two duals after each. "No lateral artifact" is
+    measured as symmetry: the smoothed mesh keeps all 24 rotations of the cube, so
+    its straight edges did not start to wave.
     """),
     code("""
-    cube = pentanb.shapes.cube()
-    B = build("cube", "pentagonalize", 1, 2)
-    C = build("cube", "pentagonalize", 2, 2)
-    D = pentanb.subdivide(B, "preserve_pentagons", 1, 2)
-    row([cube, B, C, D], ["(A)", "(B)", "(C)", "(D)"], ncols=4)
+    figures.figure1()
     """),
-    code("""
-    for label, mesh in zip("ABCD", [cube, B, C, D]):
-        print(f"({label}) {mesh}")
-    assert B.face_size_histogram() == {5: 24} and C.face_size_histogram() == {5: 120}
-    assert set(D.face_size_histogram()) == {5}
-    print("Pentagonalization gives only pentagons; preservation keeps them.")
-    """),
+    claims_cell(1),
     md("""
     ## Figure 8: the 4.3.3.4.3 tiling and its dual
-    """),
-    code("""
-    A8 = build("cube", "pentagonalize", 1, 2)
-    row([A8, pentanb.dual(A8)], ["(A)", "(B)"])
-    """),
-    md("""
-    ## Figures 10 and 11: pentagon preservation on the cube
 
-    Every quad keeps a shrunken copy of itself and gets a ring of four pentagons.
+    Faces are tallied by the valences of their corners (`figures.face_configurations`),
+    written from the smallest rotation, so the paper's 4.3.3.4.3 reads 3.3.4.3.4.
+    Only the 24 pentagons at the cube's eight 3-valent corners differ.
     """),
     code("""
-    row([cube, pentanb.preserve_pentagons(cube)], ["(A)", "(B)"])
+    figures.figure8()
     """),
-    code("""
-    A11 = build("cube", "preserve_pentagons", 1, 2)
-    row([A11, pentanb.dual(A11)], ["(A)", "(B)"])
-    """),
+    claims_cell(8),
     md("""
-    "The number of non-pentagonal faces remains constant after the first
-    refinement": the cube's six quads survive every round of preservation while
-    the pentagons multiply.
+    ## Figure 10: pentagon preservation on one face
+
+    The midpoints of a pentagon's edges are scaled about their centroid (here by
+    0.75) to make a smaller pentagon, and each of its corners is joined to its
+    midpoint: one pentagon becomes six.
     """),
     code("""
-    for k in range(1, 5):
-        mesh = build("cube", "preserve_pentagons", k, 2)
+    figures.figure10()
+    """),
+    claims_cell(10),
+    md("""
+    ## Figure 11: pentagon preservation on the cube
+    """),
+    code("""
+    figures.figure11()
+    """),
+    claims_cell(11),
+    md("""
+    The non-pentagons (the shrunken copies of the cube's quads) stay as many as
+    there were faces at the start, round after round, while the pentagons multiply.
+    """),
+    code("""
+    hard_cube = figures.hard_edged_cube()
+    mesh = hard_cube
+    for k in range(1, 4):
+        mesh = pentanb.subdivide(mesh, "preserve_pentagons", 1, 2)
         hist = mesh.face_size_histogram()
         others = sum(c for n, c in hist.items() if n != 5)
         print(f"{k} rounds: {hist.get(5, 0):6d} pentagons, {others} other faces")
-        assert others == 6
+        assert others == hard_cube.n_faces
     """),
     md("""
     ## Try it
 
-    Pick a scheme, the number of iterations, the number of dual passes after each
-    and (for pentagon preservation) the scale of the inner face. The iteration
-    slider stops before a mesh would pass 100,000 faces.
+    Pick the cube, a scheme, the number of iterations, the number of dual passes
+    after each and (for pentagon preservation) the scale of the inner face. The
+    iteration slider stops before a mesh would pass 100,000 faces. The text lists
+    the most common face configurations: watch 3.3.4.3.4 (the paper's 4.3.3.4.3)
+    take over on the hard-edged cube. Drag the 3D view to turn it.
     """),
     code("""
+    BASES = {"hard-edged cube": hard_cube, "plain cube": pentanb.shapes.cube()}
+
+
+    @functools.lru_cache(maxsize=128)
+    def build_cube(base, scheme, iterations, duals, scale):
+        options = {} if scale is None else {"scale": scale}
+        return pentanb.subdivide(BASES[base], scheme, iterations, duals, **options)
+
+
+    base = widgets.Dropdown(options=list(BASES), value="hard-edged cube", description="cube")
     pentagonal = [(s.label, s.name) for s in pentanb.SCHEMES.values() if s.family == "pentagonal"]
     scheme = widgets.Dropdown(options=pentagonal, value="pentagonalize", description="scheme")
     iterations = widgets.IntSlider(value=1, min=0, max=3, description="iterations",
@@ -399,25 +447,37 @@ NB03 = [
                               continuous_update=False)
     scale = widgets.FloatSlider(value=0.75, min=0.1, max=0.9, step=0.05, description="scale",
                                 continuous_update=False)
-    out = widgets.Output()
+    picture = widgets.Output()
+    view3d = pentanb.view(hard_cube, width=420, height=380)
 
 
     def redraw(change=None):
         scale.disabled = "scale" not in pentanb.SCHEMES[scheme.value].options
-        iterations.max = max_iterations(cube, scheme.value, duals.value)
-        mesh = build("cube", scheme.value, iterations.value, duals.value,
-                     None if scale.disabled else round(scale.value, 2))
-        with out:
+        iterations.max = max_iterations(BASES[base.value], scheme.value, duals.value)
+        mesh = build_cube(base.value, scheme.value, iterations.value, duals.value,
+                          None if scale.disabled else round(scale.value, 2))
+        configs = figures.configuration_counts(figures.face_configurations(mesh))
+        with picture:
             clear_output(wait=True)
             display(plot_mesh(mesh, title=f"{scheme.label} x{iterations.value}, "
-                                          f"{duals.value} duals"))
+                                          f"{duals.value} duals", size=3.4))
             print(mesh)
+            print("faces by corner valences:", dict(list(configs.items())[:4]))
+        view3d.update(mesh, fit=change is not None and change["owner"] is base)
 
 
-    for w in (scheme, iterations, duals, scale):
+    for w in (base, scheme, iterations, duals, scale):
         w.observe(redraw, names="value")
-    display(widgets.VBox([widgets.HBox([scheme, iterations]), widgets.HBox([duals, scale]), out]))
+    display(widgets.VBox([widgets.HBox([base, scheme, iterations]), widgets.HBox([duals, scale]),
+                          widgets.HBox([picture, view3d], layout={"flex_flow": "row wrap"})]))
     redraw()
+    """),
+    md("""
+    `pentanb.explore` puts the same controls, for every shape and every scheme of
+    the package, beside one 3D view:
+    """),
+    code("""
+    pentanb.explore("cube", "pentagonalize", max_faces=MAX_FACES)
     """),
 ]
 
@@ -442,17 +502,15 @@ NB04 = [
 
     Pentagonalization applied to such a (6, 3) mesh makes the "6.3.3.3.3
     semi-regular tiling" of Figure 9: every pentagon has one 6-valent corner (the
-    centre of an old hexagon) and four 3-valent ones.
+    centre of an old hexagon) and four 3-valent ones. Each figure is followed by the
+    claims measured; then the sliders change the torus and the number of rounds.
     """),
     SETUP,
     CACHE,
-    code("""
-    from pentanb import topology
-
-
+    code('''
     @functools.lru_cache(maxsize=64)
     def hexagonal(genus, rings, sides):
-        \"\"\"A mesh of hexagons with the given genus and torus size.\"\"\"
+        """A mesh of hexagons of the given genus, made of rings x sides tori."""
         if genus == 1:
             return pentanb.shapes.hexagonal_torus(rings, sides)
         return pentanb.shapes.hexagonal_surface(genus, rings, sides)
@@ -461,59 +519,43 @@ NB04 = [
     @functools.lru_cache(maxsize=128)
     def build_hex(genus, rings, sides, scheme, rounds, duals):
         return pentanb.subdivide(hexagonal(genus, rings, sides), scheme, rounds, duals)
-    """),
+    '''),
     md("""
     ## Figure 4: hexagonal meshes of genus 1 and 2
+
+    The torus is the regular (6, 3) tiling: every vertex 3-valent. On the genus-2
+    surface $m > 3$, so some vertices must have valence 4.
     """),
     code("""
-    torus6 = hexagonal(1, 12, 6)
-    genus2 = hexagonal(2, 8, 6)
-    row([torus6, genus2], ["(A) genus 1", "(B) genus 2"], size=3.2)
+    figures.figure4()
     """),
-    code("""
-    for name, mesh in (("genus 1", torus6), ("genus 2", genus2)):
-        m = 2 * mesh.n_edges / mesh.n_vertices
-        print(f"{name}: {mesh}, genus {mesh.genus}, average valence {m:.4f}, "
-              f"equation (1): {topology.average_valence(6, mesh.genus, mesh.n_vertices):.4f}")
-    assert torus6.face_size_histogram() == {6: torus6.n_faces}
-    assert torus6.valence_histogram() == {3: torus6.n_vertices}   # the regular (6, 3) tiling
-    assert topology.min_vertices(6, 0) is None                     # but never on a sphere
-    """),
+    claims_cell(4),
     md("""
     ## Figure 5: two rounds of hexagon preservation
 
     Hexagon preservation (the dual of Loop's remeshing) keeps every hexagon a
-    hexagon and adds one hexagon per edge.
+    hexagon and adds one hexagon per edge; two duals follow each round.
     """),
     code("""
-    A5 = build_hex(1, 12, 6, "preserve_hexagons", 2, 2)
-    B5 = build_hex(2, 8, 6, "preserve_hexagons", 2, 2)
-    row([A5, B5], ["(A)", "(B)"], size=3.2)
+    figures.figure5()
     """),
-    code("""
-    for mesh in (A5, B5):
-        print(mesh)
-        assert set(mesh.face_size_histogram()) == {6}
-    print("Still only hexagons after two rounds.")
-    """),
+    claims_cell(5),
     md("""
     ## Figure 9: the 6.3.3.3.3 tiling
 
-    One pentagonalization with two duals on the hexagonal torus, and its dual.
+    One pentagonalization with two duals on the hexagonal torus (A), and its dual (B).
     """),
     code("""
-    A9 = build_hex(1, 12, 6, "pentagonalize", 1, 2)
-    row([A9, pentanb.dual(A9)], ["(A)", "(B)"], size=3.2)
-    print(A9, "valences:", A9.valence_histogram())
-    # one 6-valent vertex per old hexagon (its centre), every other vertex 3-valent
-    assert A9.valence_histogram() == {3: A9.n_vertices - torus6.n_faces, 6: torus6.n_faces}
+    figures.figure9()
     """),
+    claims_cell(9),
     md("""
     ## Try it
 
-    Change the size of the torus (rings around the axis, hexagons around the tube),
-    the genus, the scheme and the number of rounds. The rounds slider stops before a
-    mesh would pass 100,000 faces.
+    Change the genus, the size of the tori (rings around the axis, hexagons around
+    the tube), the scheme and the number of rounds (two duals after each). The
+    rounds slider stops before a mesh would pass 100,000 faces; the text gives the
+    measured average valence next to equation (1).
     """),
     code("""
     genus = widgets.Dropdown(options=[1, 2, 3], value=1, description="genus")
@@ -526,24 +568,31 @@ NB04 = [
                               value="preserve_hexagons", description="scheme")
     rounds = widgets.IntSlider(value=1, min=0, max=3, description="rounds",
                                continuous_update=False)
-    out = widgets.Output()
+    picture = widgets.Output()
+    view3d = pentanb.view(hexagonal(1, 12, 6), width=420, height=380)
 
 
     def redraw(change=None):
         base = hexagonal(genus.value, rings.value, sides.value)
         rounds.max = max_iterations(base, scheme.value, 2)
         mesh = build_hex(genus.value, rings.value, sides.value, scheme.value, rounds.value, 2)
-        with out:
+        with picture:
             clear_output(wait=True)
-            display(plot_mesh(mesh, title=f"genus {genus.value}: {scheme.label} x{rounds.value}"))
+            display(plot_mesh(mesh, title=f"genus {genus.value}: {scheme.label} x{rounds.value}",
+                              size=3.4, elev=38, azim=-60))
             print(mesh)
             print("valences:", mesh.valence_histogram())
+            if len(mesh.face_size_histogram()) == 1:
+                n = int(mesh.face_sizes[0])
+                print(f"average valence {2 * mesh.n_edges / mesh.n_vertices:.4f}, equation (1): "
+                      f"{pentanb.topology.average_valence(n, mesh.genus, mesh.n_vertices):.4f}")
+        view3d.update(mesh, fit=change is not None and change["owner"] in (genus, rings, sides))
 
 
     for w in (genus, rings, sides, scheme, rounds):
         w.observe(redraw, names="value")
     display(widgets.VBox([widgets.HBox([genus, rings, sides]), widgets.HBox([scheme, rounds]),
-                          out]))
+                          widgets.HBox([picture, view3d], layout={"flex_flow": "row wrap"})]))
     redraw()
     """),
 ]
@@ -568,43 +617,41 @@ NB05 = [
 
     Honeycomb (the dual of $\sqrt{3}$) applied to the dodecahedron is the truncated
     icosahedron: 12 pentagons, 20 hexagons, 60 three-valent vertices, a soccer ball.
+    The figure is followed by the claims measured, then the claim is checked on
+    several pentagonal meshes, and the sliders let you build your own.
     """),
     SETUP,
     CACHE,
     md("""
     ## Figure 13
+
+    Honeycomb of a dodecahedron (A) and of a pentagonalized cube (B); hexagon
+    preservation (the dual of Loop) of the same (C, D). Two duals after each.
     """),
     code("""
-    dodeca = pentanb.shapes.dodecahedron()
-    ball = pentanb.honeycomb(dodeca)
-    fine = pentanb.subdivide(build("tetrahedron", "pentagonalize", 2, 2), "honeycomb", 1, 2)
-    row([dodeca, ball, fine], ["dodecahedron", "(A) honeycomb", "(B) finer"])
+    figures.figure13()
     """),
-    code("""
-    print(ball)
-    assert ball.face_size_histogram() == {5: 12, 6: 20}
-    assert ball.valence_histogram() == {3: 60}
-    print("honeycomb(dodecahedron) is the truncated icosahedron (a soccer ball).")
-    """),
+    claims_cell(13),
     md("""
     ## The claim on every pentagonal base
 
     Honeycomb and hexagon preservation on several pentagonal meshes: the smallest
-    face left, and (for honeycomb) the valences.
+    face left (never a triangle or quad), and the valences (all 3 after honeycomb).
     """),
-    code("""
-    BASES = {
-        "dodecahedron": ("dodecahedron", "pentagonalize", 0),
-        "pentagonalized tetrahedron": ("tetrahedron", "pentagonalize", 1),
-        "pentagonalized cube": ("cube", "pentagonalize", 1),
-        "pentagonalized octahedron": ("octahedron", "pentagonalize", 1),
-        "pentagonalized torus": ("torus", "pentagonalize", 1),
+    code('''
+    BASES = {   # label: (shape, pentagonalizations)
+        "dodecahedron": ("dodecahedron", 0),
+        "pentagonalized tetrahedron": ("tetrahedron", 1),
+        "pentagonalized cube": ("cube", 1),
+        "pentagonalized octahedron": ("octahedron", 1),
+        "pentagonalized torus": ("torus", 1),
     }
 
 
     def base_mesh(label):
-        shape, scheme, k = BASES[label]
-        return build(shape, scheme, k, 2)
+        """A pentagonal mesh: a shape pentagonalized (with two duals) 0 or more times."""
+        shape, k = BASES[label]
+        return build(shape, "pentagonalize", k, 2)
 
 
     print(f"{'base':>28}  {'scheme':>18}  smallest face  valences")
@@ -616,11 +663,12 @@ NB05 = [
             assert smallest >= 5
             if s == "honeycomb":
                 assert set(mesh.valence_histogram()) == {3}
-    """),
+    '''),
     md("""
     ## Try it
 
-    Choose the pentagonal base, the scheme, the number of rounds and the dual passes.
+    Choose the pentagonal base, the scheme, the number of rounds and the dual passes
+    after each. Drag the 3D view to turn the ball.
     """),
     code("""
     base = widgets.Dropdown(options=list(BASES), value="dodecahedron", description="base")
@@ -629,28 +677,32 @@ NB05 = [
                               value="honeycomb", description="scheme")
     rounds = widgets.IntSlider(value=1, min=0, max=3, description="rounds",
                                continuous_update=False)
-    duals = widgets.IntSlider(value=0, min=0, max=4, description="dual passes",
+    duals = widgets.IntSlider(value=2, min=0, max=4, description="dual passes",
                               continuous_update=False)
-    out = widgets.Output()
+    picture = widgets.Output()
+    view3d = pentanb.view(base_mesh("dodecahedron"), width=420, height=380)
 
 
     @functools.lru_cache(maxsize=128)
-    def ball_of(label, scheme, rounds, duals):
+    def ball(label, scheme, rounds, duals):
         return pentanb.subdivide(base_mesh(label), scheme, rounds, duals)
 
 
     def redraw(change=None):
         rounds.max = max_iterations(base_mesh(base.value), scheme.value, duals.value)
-        mesh = ball_of(base.value, scheme.value, rounds.value, duals.value)
-        with out:
+        mesh = ball(base.value, scheme.value, rounds.value, duals.value)
+        with picture:
             clear_output(wait=True)
-            display(plot_mesh(mesh, title=f"{scheme.label} x{rounds.value}"))
-            print(mesh, "valences:", mesh.valence_histogram())
+            display(plot_mesh(mesh, title=f"{scheme.label} x{rounds.value}", size=3.4))
+            print(mesh)
+            print("valences:", mesh.valence_histogram())
+        view3d.update(mesh, fit=change is not None and change["owner"] is base)
 
 
     for w in (base, scheme, rounds, duals):
         w.observe(redraw, names="value")
-    display(widgets.VBox([widgets.HBox([base, scheme]), widgets.HBox([rounds, duals]), out]))
+    display(widgets.VBox([widgets.HBox([base, scheme]), widgets.HBox([rounds, duals]),
+                          widgets.HBox([picture, view3d], layout={"flex_flow": "row wrap"})]))
     redraw()
     """),
 ]
@@ -665,7 +717,7 @@ NB06 = [
     # Every scheme, side by side (Figures 2 and 3)
 
     Section 3 sorts remeshings into **conversion** schemes, which turn any mesh into
-    one kind of face ($\sqrt{3}$ and vertex insertion for triangles and quads), and
+    one kind of face ($\sqrt{3}$ and vertex insertion make triangles and quads), and
     **preservation** schemes, which keep a mesh of one kind of face that way (Loop).
     It sets one remeshing aside:
 
@@ -679,83 +731,94 @@ NB06 = [
     > create a central face in the middle of each original face and triangles in each
     > corner." (Figure 3)
 
-    `pentanb.SCHEMES` lists every remeshing of the package, the paper's two and the
-    ones it compares with. This notebook redraws Figures 2 and 3, tabulates all the
-    schemes (with the counts each predicts before building and the counts it builds),
-    classifies them, and draws them all on a mesh of your choice.
+    `pentanb.SCHEMES` lists every remeshing of the package: the paper's two and the
+    ones it compares with. This notebook redraws Figures 2 and 3 with their claims,
+    tabulates all the schemes (the counts each predicts before building and the
+    counts it builds), sorts them into conversion and preservation, and draws them
+    all on a mesh of your choice.
     """),
     SETUP,
+    code("""
+    from pentanb.viz.mpl import add_face_legend, draw_mesh, panel_figure, style
+    """),
     CACHE,
-    md("## Figure 2: the simplest triangulation"),
-    code("""
-    cube = pentanb.shapes.cube()
-    T = pentanb.triangulate(cube)
-    row([cube, T], ["(A)", "(B)"])
+    md("""
+    ## Figure 2: the simplest triangulation
+
+    Every non-triangle becomes a fan of triangles around its centroid. Applied again,
+    nothing changes: a null algorithm.
     """),
     code("""
-    TT = pentanb.triangulate(T)
-    print("once: ", T)
-    print("twice:", TT)
-    assert (TT.n_vertices, TT.n_edges, TT.n_faces) == (T.n_vertices, T.n_edges, T.n_faces)
-    print("A second triangulation changes nothing: a null algorithm.")
+    figures.figure2()
     """),
-    md("## Figure 3: Loop's remeshing on a mesh of quads"),
+    claims_cell(2),
+    md("""
+    ## Figure 3: Loop's remeshing on a mesh that is not all triangles
+
+    A pentagonal prism with a pyramid on top (a pentagon, five quads, five
+    triangles): every face keeps a central copy of itself, and triangles fill the
+    corners. The non-triangles stay as many as they were.
+    """),
     code("""
-    L = pentanb.loop_remesh(cube)
-    row([cube, L], ["(A)", "(B)"])
+    figures.figure3()
     """),
-    code("""
-    print(L, L.face_size_histogram())
-    assert L.face_size_histogram() == {3: 24, 4: 6}   # corner triangles + central quads
-    """),
+    claims_cell(3),
     md("""
     ## All the schemes
 
     For each scheme: where the paper uses it, the Conway operator with the same
-    topology, the counts after one application predicted by the registry, and the
-    counts actually built. Change the mesh to compare.
+    topology, the counts after one application predicted by the registry (without
+    building anything), and the counts built. Then the Conway names and count
+    formulas, checked on Figure 3's mixed mesh (`figures.scheme_claims`).
     """),
     code("""
     def scheme_table(mesh):
         counts = (mesh.n_vertices, mesh.n_edges, mesh.n_faces)
         print(f"input: {mesh}")
-        print(f"{'scheme':>20}  {'paper':>34}  {'conway':>18}  {'predicted V, E, F':>20}  "
-              f"{'built V, E, F':>20}  faces")
+        print(f"{'scheme':>20}  {'paper':>34}  {'Conway':>18}  {'predicted V, E, F':>18}  "
+              f"{'built V, E, F':>18}  faces")
         for s in pentanb.SCHEMES.values():
             out = s(mesh)
             built = (out.n_vertices, out.n_edges, out.n_faces)
             predicted = pentanb.predict_counts(counts, s.name, 1, 0)[0]
-            print(f"{s.name:>20}  {s.paper:>34}  {str(s.conway):>18}  {str(predicted):>20}  "
-                  f"{str(built):>20}  {out.face_size_histogram()}")
-            if s.name != "triangulate":   # the registry gives an upper bound for it
-                assert predicted == built
+            print(f"{s.name:>20}  {s.paper:>34}  {str(s.conway):>18}  {str(predicted):>18}  "
+                  f"{str(built):>18}  {out.face_size_histogram()}")
 
 
-    scheme_table(cube)
+    scheme_table(pentanb.shapes.cube())
+    """),
+    code("""
+    for claim in figures.scheme_claims():
+        print(claim)
+        assert claim.holds, claim
     """),
     md("""
     ## Conversion or preservation?
 
-    Each scheme applied twice to Figure 3's output (24 triangles and 6 quads). A
-    conversion scheme leaves one kind of face; a preservation scheme keeps the odd
-    faces out while the rest multiply.
+    Each scheme applied twice to a mesh of triangles, quads and a pentagon (Figure
+    3's). A conversion scheme leaves one kind of face whatever it starts from. A
+    preservation scheme leaves the faces of other kinds as they were (their number
+    stays constant) while its own kind multiplies.
     """),
     code("""
-    mixed = L
+    mixed = pentanb.loop_remesh(pentanb.shapes.cube())   # 24 triangles and 6 quads
+    print("input:", mixed.face_size_histogram())
     for s in pentanb.SCHEMES.values():
-        hist = pentanb.subdivide(mixed, s.name, 2, 0).face_size_histogram()
-        kind = "conversion" if len(hist) == 1 else "preservation or neither"
-        print(f"{s.label:>38}: {kind:>24}  {hist}")
+        once = pentanb.subdivide(mixed, s.name, 1, 0).face_size_histogram()
+        twice = pentanb.subdivide(mixed, s.name, 2, 0).face_size_histogram()
+        kind = "conversion" if len(twice) == 1 else "mixed faces remain"
+        print(f"{s.label:>38}: {kind:>18}  once {once}  twice {twice}")
     """),
     md("""
     ## Side by side
 
     Every scheme on the chosen mesh, with the chosen number of iterations and
-    dual passes.
+    dual passes after each. Iterations are capped so that no mesh passes 100,000
+    faces.
     """),
     code("""
     shape = widgets.Dropdown(options=list(pentanb.shapes.SHAPES), value="cube", description="mesh")
-    iterations = widgets.IntSlider(value=1, min=1, max=2, description="iterations",
+    iterations = widgets.IntSlider(value=1, min=1, max=3, description="iterations",
                                    continuous_update=False)
     duals = widgets.IntSlider(value=0, min=0, max=2, step=2, description="dual passes",
                               continuous_update=False)
@@ -763,13 +826,20 @@ NB06 = [
 
 
     def redraw(change=None):
+        base = pentanb.shapes.get(shape.value)
         names = list(pentanb.SCHEMES)
-        meshes = [build(shape.value, name, iterations.value, duals.value) for name in names]
+        iterations.max = max(1, min(max_iterations(base, s, duals.value) for s in names))
+        meshes = [build(shape.value, s, iterations.value, duals.value) for s in names]
+        with style():
+            fig, axes = panel_figure(len(names), 3, panel_size=2.6, legend_space=0.5)
+            for ax, s, mesh in zip(axes, names, meshes):
+                draw_mesh(ax, mesh, title=f"{pentanb.SCHEMES[s].label}\\n{mesh.n_faces:,} faces")
+            add_face_legend(fig, meshes)
         with out:
             clear_output(wait=True)
-            display(row(meshes, [pentanb.SCHEMES[n].label for n in names], ncols=3))
-            for name, mesh in zip(names, meshes):
-                print(f"{name:>20}: {mesh}")
+            display(fig)
+            for s, mesh in zip(names, meshes):
+                print(f"{s:>20}: {mesh}")
 
 
     for w in (shape, iterations, duals):
@@ -795,46 +865,43 @@ NB07 = [
 
     The paper's rabbit (modelled by Esan Mandal) is not available, so
     `pentanb.shapes.animal()` stands in: a blocky rabbit of unit cubes, all hard
-    edges. Figure 12 applies pentagonalization twice. Afterwards you can load any
-    closed OBJ or OFF file of your own and subdivide it.
+    edges. Figure 12 applies pentagonalization twice (two duals after each); the
+    claims check the counts and that only pentagons remain. Afterwards you can load
+    any closed OBJ or OFF file of your own and subdivide it.
     """),
     SETUP,
     CACHE,
     md("## Figure 12"),
     code("""
-    animal = pentanb.shapes.animal()
-    twice = build("animal", "pentagonalize", 2, 2)
-    row([animal, twice], ["(A) initial mesh", "(B) pentagonalized twice"], size=3.2)
+    figures.figure12()
     """),
-    code("""
-    counts = (animal.n_vertices, animal.n_edges, animal.n_faces)
-    predicted = pentanb.predict_counts(counts, "pentagonalize", 2, 2)[-1]
-    print(f"(A) {animal}, genus {animal.genus}")
-    print(f"(B) {twice}, genus {twice.genus}")
-    assert (twice.n_vertices, twice.n_edges, twice.n_faces) == predicted
-    assert twice.face_size_histogram() == {5: twice.n_faces}
-    assert twice.genus == animal.genus
-    print("Only pentagons, the predicted counts, the same genus.")
-    """),
+    claims_cell(12),
     md("""
     ## Your own mesh
 
-    `pentanb.read` reads `.obj` and `.off` files (any polygon faces; the mesh must be
-    closed and manifold) and `pentanb.write` writes them. To show the round trip,
-    the rabbit is written to a temporary folder and read back. Put the path of your
-    own file in the text box (or in `path` below) and press *Load*.
+    `pentanb.read` reads `.obj` and `.off` files (faces with any number of sides;
+    the mesh must be closed and manifold) and `pentanb.write` writes them. To show
+    the round trip, the rabbit is written to a temporary folder and read back.
     """),
     code("""
     import tempfile
     from pathlib import Path
 
+    animal = pentanb.shapes.animal()
     folder = Path(tempfile.mkdtemp())
     for suffix in (".obj", ".off"):
         pentanb.write(animal, folder / f"rabbit{suffix}")
         back = pentanb.read(folder / f"rabbit{suffix}")
         assert (back.vertices == animal.vertices).all()
+        assert (back.corners == animal.corners).all()
         print(f"{suffix}: wrote and read back {back}")
-
+    """),
+    md("""
+    Put the path of your own file in `path` (or in the text box) and press *Load*.
+    A file that cannot be read says why. Choose a scheme, the iterations (capped so
+    that no mesh passes 100,000 faces) and the dual passes.
+    """),
+    code("""
     path = folder / "rabbit.obj"   # replace with the path of your own .obj or .off file
     """),
     code("""
@@ -846,7 +913,8 @@ NB07 = [
                                    continuous_update=False)
     duals = widgets.IntSlider(value=2, min=0, max=4, description="dual passes",
                               continuous_update=False)
-    out = widgets.Output()
+    picture = widgets.Output()
+    view3d = pentanb.view(animal, width=420, height=380)
     loaded = {}
 
 
@@ -855,9 +923,9 @@ NB07 = [
         return pentanb.subdivide(loaded[file], scheme, iterations, duals)
 
 
-    def redraw(change=None):
+    def redraw(change=None, fit=False):
         file = path_box.value
-        with out:
+        with picture:
             clear_output(wait=True)
             if file not in loaded:
                 print("press Load to read", file)
@@ -865,9 +933,11 @@ NB07 = [
             mesh = loaded[file]
             iterations.max = max_iterations(mesh, scheme.value, duals.value)
             result = subdivided(file, scheme.value, iterations.value, duals.value)
-            display(plot_mesh(result, title=f"{scheme.label} x{iterations.value}"))
+            display(plot_mesh(result, title=f"{scheme.label} x{iterations.value}", size=3.4,
+                              elev=12, azim=-62))
             print(f"input:  {mesh}, genus {mesh.genus}")
             print(f"result: {result}")
+        view3d.update(result, fit=fit)
 
 
     def read_file(button=None):
@@ -875,19 +945,159 @@ NB07 = [
         try:
             loaded[file] = pentanb.read(file)
         except (OSError, ValueError) as err:   # pentanb.MeshError is a ValueError
-            with out:
+            with picture:
                 clear_output()
                 print("could not read the file:", err)
             return
-        redraw()
+        subdivided.cache_clear()   # the file may have changed on disk
+        redraw(fit=True)
 
 
     load.on_click(read_file)
     for w in (scheme, iterations, duals):
         w.observe(redraw, names="value")
     display(widgets.VBox([widgets.HBox([path_box, load]),
-                          widgets.HBox([scheme, iterations, duals]), out]))
+                          widgets.HBox([scheme, iterations, duals]),
+                          widgets.HBox([picture, view3d], layout={"flex_flow": "row wrap"})]))
     read_file()
+    """),
+    md("""
+    A file that is not a closed manifold is refused with a message naming the
+    culprit, for instance a single triangle (it has boundary edges):
+    """),
+    code("""
+    bad = folder / "triangle.obj"
+    bad.write_text("v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\n")
+    try:
+        pentanb.read(bad)
+    except pentanb.MeshError as err:
+        print("refused:", err)
+    """),
+]
+
+
+# ---------------------------------------------------------------------------
+# 08 Convergence
+# ---------------------------------------------------------------------------
+
+NB08 = [
+    md(r"""
+    # How fast does dual smoothing converge? (beyond the paper)
+
+    The paper smooths by applying the dual an even number of times, and leaves its
+    convergence open:
+
+    > "we have visually confirmed that the algorithms converge with $G^1$
+    > continuity. However, there is still a need for theoretical proofs for
+    > convergence."
+
+    This notebook measures it (`pentanb.convergence`). Two numbers describe a mesh:
+
+    * the **crease angle**: the angle between the normals of two faces sharing an
+      edge. On a $G^1$ (tangent-continuous) limit surface the largest crease angle
+      must fall towards 0 as the mesh is refined;
+    * the **radius spread**: the standard deviation over the mean of the vertices'
+      distances from their centroid, 0 on a sphere.
+
+    Two experiments: remesh once and then apply more and more pairs of duals (does
+    smoothing alone converge, and to what?), and subdivide level after level
+    (remesh + two duals each time).
+    """),
+    SETUP,
+    code("""
+    from matplotlib.figure import Figure
+    from matplotlib.ticker import NullFormatter, ScalarFormatter
+
+    from pentanb import convergence
+    """),
+    CACHE,
+    md("""
+    ## The study
+
+    Both of the paper's schemes on a cube, a tetrahedron, a torus and the rabbit.
+    (A) and (B): after one remeshing, pairs of duals round the mesh off, but the
+    crease angle levels out: duals alone do not make the surface smooth. (C): level
+    after level, the largest crease angle falls towards 0.
+    """),
+    code("""
+    figures.convergence_figure()
+    """),
+    claims_cell("convergence"),
+    md("""
+    ## Rates
+
+    The factor by which the largest and the mean crease angle shrink from one level
+    to the next. Each level multiplies the faces by about five (pentagonalization,
+    $2E$ faces from $E$ edges), so edges get about $\\sqrt{5} \\approx 2.24$ times
+    shorter: a mean factor near $1/\\sqrt{5} \\approx 0.45$ is what a smooth limit
+    gives; the largest angle, found at the extraordinary vertices, shrinks more
+    slowly.
+    """),
+    code("""
+    study = convergence.study()
+    print(f"{'mesh':>12}  {'scheme':>20}  {'faces':>22}  {'largest angle (deg)':>32}  ratios")
+    for (name, scheme), res in study["levels"].items():
+        a = res.max_normal_angle
+        angles = " ".join(f"{x:5.1f}" for x in a)
+        ratios = " ".join(f"{x:.2f}" for x in a[1:] / a[:-1])
+        print(f"{name:>12}  {scheme:>20}  {str(list(res.faces)):>22}  {angles:>32}  {ratios}")
+    """),
+    md("""
+    ## Try it
+
+    Choose a shape, any scheme of the package (to compare the paper's schemes with
+    Catmull-Clark's vertex insertion or Doo-Sabin's corner cutting), the number of
+    levels and the dual passes after each. The plot shows the largest and mean
+    crease angles per level (log scale) and the radius spread; the 3D view shows the
+    last level. Levels are capped so that no mesh passes 100,000 faces.
+    """),
+    code("""
+    shape = widgets.Dropdown(options=list(pentanb.shapes.SHAPES), value="cube", description="shape")
+    scheme = widgets.Dropdown(options=[(s.label, s.name) for s in pentanb.SCHEMES.values()],
+                              value="pentagonalize", description="scheme")
+    levels = widgets.IntSlider(value=3, min=1, max=4, description="levels",
+                               continuous_update=False)
+    duals = widgets.IntSlider(value=2, min=0, max=6, step=2, description="dual passes",
+                              continuous_update=False)
+    picture = widgets.Output()
+    view3d = pentanb.view(build("cube", "pentagonalize", 3, 2), width=420, height=380)
+
+
+    @functools.lru_cache(maxsize=64)
+    def measure(shape, scheme, levels, duals):
+        return convergence.subdivision_convergence(pentanb.shapes.get(shape), scheme, levels,
+                                                   duals)
+
+
+    def redraw(change=None):
+        base = pentanb.shapes.get(shape.value)
+        levels.max = max(1, max_iterations(base, scheme.value, duals.value))
+        res = measure(shape.value, scheme.value, levels.value, duals.value)
+        fig = Figure(figsize=(7.5, 3.2))
+        left, right = fig.subplots(1, 2)
+        left.semilogy(res.steps, res.max_normal_angle, "o-", label="largest")
+        left.semilogy(res.steps, res.mean_normal_angle, "s--", label="mean")
+        left.set(xlabel="level", ylabel="crease angle (deg, log scale)", title="crease angles",
+                 xticks=res.steps)
+        left.yaxis.set_major_formatter(ScalarFormatter())
+        left.yaxis.set_minor_formatter(NullFormatter())
+        left.legend()
+        right.plot(res.steps, res.radius_spread, "o-", color="C2")
+        right.set(xlabel="level", ylabel="std / mean", title="radius spread", xticks=res.steps)
+        fig.tight_layout()
+        with picture:
+            clear_output(wait=True)
+            display(fig)
+            print("faces per level:", list(res.faces))
+        view3d.update(build(shape.value, scheme.value, levels.value, duals.value),
+                      fit=change is not None and change["owner"] is shape)
+
+
+    for w in (shape, scheme, levels, duals):
+        w.observe(redraw, names="value")
+    display(widgets.VBox([widgets.HBox([shape, scheme]), widgets.HBox([levels, duals]),
+                          widgets.HBox([picture, view3d], layout={"flex_flow": "row wrap"})]))
+    redraw()
     """),
 ]
 
@@ -900,22 +1110,27 @@ NOTEBOOKS = {
     "05_soccerball": NB05,
     "06_schemes_compared": NB06,
     "07_complex_model": NB07,
+    "08_convergence": NB08,
 }
+
+
+def notebook(name: str):
+    """The notebook ``name`` (a key of :data:`NOTEBOOKS`), without outputs."""
+    nb = new_notebook(cells=[c.copy() for c in NOTEBOOKS[name]],
+                      metadata={"kernelspec": KERNELSPEC, "language_info": {"name": "python"}})
+    for i, cell in enumerate(nb.cells):
+        cell["id"] = f"{name[:2]}-{i:02d}"
+    nbformat.validate(nb)
+    return nb
 
 
 def build(outdir: Path = HERE) -> list[Path]:
     """Write every notebook into ``outdir``; return their paths."""
     outdir = Path(outdir)
     paths = []
-    for name, cells in NOTEBOOKS.items():
-        nb = new_notebook(cells=[c.copy() for c in cells],
-                          metadata={"kernelspec": KERNELSPEC,
-                                    "language_info": {"name": "python"}})
-        for i, cell in enumerate(nb.cells):
-            cell["id"] = f"{name[:2]}-{i:02d}"
-        nbformat.validate(nb)
+    for name in NOTEBOOKS:
         path = outdir / f"{name}.ipynb"
-        nbformat.write(nb, path)
+        nbformat.write(notebook(name), path)
         paths.append(path)
     return paths
 
