@@ -86,11 +86,13 @@ def _quiet_output_widget():
     return QuietOutputWidget
 
 
-def _execute(path: Path, kernel_dir: str):
+def _execute(path: Path, kernel_dir: str, extra_cells=()):
+    """Run a notebook (plus ``extra_cells`` of source code at the end); return it."""
     from jupyter_client.kernelspec import KernelSpecManager
     from jupyter_client.manager import AsyncKernelManager
 
     nb = nbformat.read(path, as_version=4)
+    nb.cells += [nbformat.v4.new_code_cell(src) for src in extra_cells]
     ksm = KernelSpecManager(kernel_dirs=[kernel_dir], ensure_native_kernel=False)
     km = AsyncKernelManager(kernel_name=KERNEL_NAME, kernel_spec_manager=ksm)
     client = nbclient.NotebookClient(
@@ -168,3 +170,75 @@ def test_notebooks_match_generator(tmp_path: Path):
         assert [(c.cell_type, c.source) for c in committed.cells] == \
                [(c.cell_type, c.source) for c in fresh.cells], \
             f"{path.name} differs from _build_notebooks.py: run python notebooks/_build_notebooks.py"
+
+
+#: Run after a notebook: move every slider and drop-down it created to each end
+#: (and through every option), in the order they were made, leaving each at its
+#: last value so that later controls meet the largest earlier ones; record the
+#: largest mesh any position built.
+SWEEP = """
+import json as _json
+import time as _time
+
+import ipywidgets as _widgets
+from ipywidgets.widgets.widget import _instances as _all_widgets
+
+import pentanb as _pentanb
+import pentanb.subdivision as _subdivision
+
+_largest = {"faces": 0, "positions": 0, "slowest": 0.0}
+_subdivide = _subdivision.subdivide
+
+
+def _counting_subdivide(*args, **kwargs):
+    mesh = _subdivide(*args, **kwargs)
+    _largest["faces"] = max(_largest["faces"], mesh.n_faces)
+    return mesh
+
+
+_pentanb.subdivide = _subdivision.subdivide = _counting_subdivide
+for _w in list(_all_widgets.values()):
+    if isinstance(_w, (_widgets.IntSlider, _widgets.FloatSlider)):
+        _ends = [lambda w: w.min, lambda w: w.max]   # read when used: redraws move them
+    elif isinstance(_w, _widgets.Dropdown):
+        _ends = [lambda w, v=v: v for v in _w.options]
+    else:
+        continue
+    for _end in _ends:
+        if getattr(_w, "disabled", False):
+            break
+        _v = _end(_w)
+        _t = _time.perf_counter()
+        _w.value = _v[1] if isinstance(_v, tuple) else _v
+        _largest["slowest"] = max(_largest["slowest"], _time.perf_counter() - _t)
+        _largest["positions"] += 1
+print("SWEEP", _json.dumps(_largest))
+"""
+
+#: Largest mesh (faces) a slider position may build.
+MAX_FACES = 100_000
+#: Longest a single slider move may take to redraw, in seconds (generous: the
+#: test machine may be busy; on a laptop the slowest move takes about a second).
+MAX_REDRAW_SECONDS = 20.0
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=_ids(NOTEBOOKS))
+def test_notebook_sliders(path: Path, kernel_dir: str):
+    """Every slider and drop-down, at each end, redraws without an error and
+    without building a mesh of more than MAX_FACES faces."""
+    try:
+        nb = _execute(path, kernel_dir, extra_cells=[SWEEP])
+    except nbclient.exceptions.CellExecutionError as exc:
+        pytest.fail(f"{path.name}: moving a control raised\n{exc}", pytrace=False)
+    text = "".join(out.get("text", "") for out in nb.cells[-1].outputs
+                   if out.get("output_type") == "stream" and out.get("name") == "stdout")
+    line = [ln for ln in text.splitlines() if ln.startswith("SWEEP ")]
+    assert line, f"{path.name}: the sweep printed nothing:\n{text}"
+    import json
+    result = json.loads(line[-1][len("SWEEP "):])
+    assert result["faces"] <= MAX_FACES, \
+        f"{path.name}: a slider position built {result['faces']:,} faces"
+    assert result["slowest"] <= MAX_REDRAW_SECONDS, \
+        f"{path.name}: a slider move took {result['slowest']:.1f} s to redraw"
+    print(f"{path.name}: {result['positions']} positions, largest mesh "
+          f"{result['faces']:,} faces, slowest redraw {result['slowest']:.2f} s")
