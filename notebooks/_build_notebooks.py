@@ -37,17 +37,15 @@ def code(text: str):
 # Cells shared by several notebooks
 # ---------------------------------------------------------------------------
 
-SETUP = code("""
-    %matplotlib inline
-    import functools
+def setup(*imports: str):
+    """The first code cell: the imports every notebook needs, then ``imports``."""
+    lines = ["%matplotlib inline", "import functools", "",
+             "import ipywidgets as widgets", "from IPython.display import clear_output, display",
+             "", "import pentanb", "from pentanb import figures", *imports]
+    return new_code_cell("\n".join(lines))
 
-    import ipywidgets as widgets
-    from IPython.display import clear_output, display
 
-    import pentanb
-    from pentanb import figures
-    from pentanb.viz.mpl import plot_mesh
-""")
+SETUP = setup("from pentanb.viz.mpl import plot_mesh")
 
 #: Building is cached so that a slider coming back to a position is instant;
 #: slider ranges are capped so that no position builds more than MAX_FACES.
@@ -75,14 +73,12 @@ CACHE = code('''
 ''')
 
 
-def claims_cell(*names) -> object:
-    """Print the claims of figures ``names`` (and fail loudly if one does not hold)."""
-    args = ", ".join(repr(n) for n in names)
+def claims_cell(name) -> object:
+    """Print the claims of figure ``name`` (and fail loudly if one does not hold)."""
     return code(f"""
-        for name in ({args},):
-            for claim in figures.claims(name):
-                print(claim)
-                assert claim.holds, claim
+        for claim in figures.claims({name!r}):
+            print(claim)
+            assert claim.holds, claim
     """)
 
 
@@ -258,10 +254,8 @@ NB02 = [
     of duals. Then you can slide through the dual passes, and step through the
     scheme one stage at a time.
     """),
-    SETUP,
-    code("""
-    from pentanb.convergence import radius_spread
-    """),
+    setup("from pentanb.convergence import radius_spread",
+          "from pentanb.viz.mpl import plot_mesh"),
     CACHE,
     md("""
     ## Figure 6: the scheme on one face
@@ -285,13 +279,17 @@ NB02 = [
     """),
     claims_cell(7),
     md("""
-    The spread (standard deviation / mean) of the distances of the vertices from
-    their centroid: 0 for a regular dodecahedron or icosahedron.
+    How uniform is it? The spread (standard deviation / mean) of the distances of
+    the 20 vertices from their centroid is 0 for a regular dodecahedron. It falls
+    by about a factor of three with every pair of duals. (After an odd number of
+    duals the 12 vertices sit at the centres of 12 faces that the tetrahedron's
+    rotations carry into one another, so they are always equidistant: the spread
+    says nothing there.)
     """),
     code("""
-    for k in range(0, 9):
+    for k in range(0, 11, 2):
         mesh = build("tetrahedron", "pentagonalize", 1, k)
-        print(f"{k} duals: {str(mesh):45s} radius spread {radius_spread(mesh):.5f}")
+        print(f"{k:2d} duals: {str(mesh):40s} radius spread {radius_spread(mesh):.5f}")
     """),
     md("""
     ## Slide through the dual passes
@@ -312,7 +310,9 @@ NB02 = [
         with picture:
             clear_output(wait=True)
             display(plot_mesh(mesh, title=f"pentagonalize + {duals.value} duals", size=3.4))
-            print(f"{mesh}   radius spread {radius_spread(mesh):.5f}")
+            print(mesh)
+            if duals.value % 2 == 0:
+                print(f"radius spread {radius_spread(mesh):.5f}")
         view3d.update(mesh, fit=True)
 
 
@@ -416,6 +416,13 @@ NB03 = [
     figures.figure10()
     """),
     claims_cell(10),
+    md("""
+    The same steps on every face of a cube, one at a time: midpoints, the scaled
+    inner faces, the edges to the midpoints (in red), the result and its duals.
+    """),
+    code("""
+    pentanb.step_through(pentanb.shapes.cube(), "preserve_pentagons", duals=2)
+    """),
     md("""
     ## Figure 11: pentagon preservation on the cube
     """),
@@ -751,10 +758,7 @@ NB06 = [
     counts it builds), sorts them into conversion and preservation, and draws them
     all on a mesh of your choice.
     """),
-    SETUP,
-    code("""
-    from pentanb.viz.mpl import add_face_legend, draw_mesh, panel_figure, style
-    """),
+    setup("from pentanb.viz.mpl import add_face_legend, draw_mesh, panel_figure, style"),
     CACHE,
     md("""
     ## Figure 2: the simplest triangulation
@@ -1017,13 +1021,9 @@ NB08 = [
     smoothing alone converge, and to what?), and subdivide level after level
     (remesh + two duals each time).
     """),
-    SETUP,
-    code("""
-    from matplotlib.figure import Figure
-    from matplotlib.ticker import NullFormatter, ScalarFormatter
-
-    from pentanb import convergence
-    """),
+    setup("from pentanb import convergence", "",
+          "from matplotlib.figure import Figure",
+          "from matplotlib.ticker import NullFormatter, ScalarFormatter"),
     CACHE,
     md("""
     ## The study
@@ -1041,20 +1041,26 @@ NB08 = [
     ## Rates
 
     The factor by which the largest and the mean crease angle shrink from one level
-    to the next. Each level multiplies the faces by about five (pentagonalization,
-    $2E$ faces from $E$ edges), so edges get about $\\sqrt{5} \\approx 2.24$ times
-    shorter: a mean factor near $1/\\sqrt{5} \\approx 0.45$ is what a smooth limit
-    gives; the largest angle, found at the extraordinary vertices, shrinks more
-    slowly.
+    to the next. When a level multiplies the number of faces by $k$ (about 5 for
+    pentagonalization, 6 for pentagon preservation), the edges get about
+    $\\sqrt{k}$ times shorter, and on a smooth surface the angle between
+    neighbouring faces shrinks like the edges: a mean factor near $1/\\sqrt{k}$
+    (last column). The largest angle, found at the extraordinary vertices, shrinks
+    more slowly but keeps shrinking.
     """),
     code("""
+    import numpy as np
+
     study = convergence.study()
-    print(f"{'mesh':>12}  {'scheme':>20}  {'faces':>22}  {'largest angle (deg)':>32}  ratios")
+    print(f"{'mesh':>12}  {'scheme':>18}  {'largest angle (deg)':>24}  {'its factors':>16}  "
+          f"{'mean factors':>16}  {'1/sqrt(k)':>16}")
     for (name, scheme), res in study["levels"].items():
-        a = res.max_normal_angle
-        angles = " ".join(f"{x:5.1f}" for x in a)
-        ratios = " ".join(f"{x:.2f}" for x in a[1:] / a[:-1])
-        print(f"{name:>12}  {scheme:>20}  {str(list(res.faces)):>22}  {angles:>32}  {ratios}")
+        largest, mean = res.max_normal_angle, res.mean_normal_angle
+        edge = np.sqrt(res.faces[:-1] / res.faces[1:])
+        row = lambda xs, f="{:.2f}": " ".join(f.format(x) for x in xs)  # noqa: E731
+        print(f"{name:>12}  {scheme:>18}  {row(largest, '{:5.1f}'):>24}  "
+              f"{row(largest[1:] / largest[:-1]):>16}  {row(mean[1:] / mean[:-1]):>16}  "
+              f"{row(edge):>16}")
     """),
     md("""
     ## Try it
@@ -1102,7 +1108,7 @@ NB08 = [
         with picture:
             clear_output(wait=True)
             display(fig)
-            print("faces per level:", list(res.faces))
+            print("faces per level:", res.faces.tolist())
         view3d.update(build(shape.value, scheme.value, levels.value, duals.value),
                       fit=change is not None and change["owner"] is shape)
 
