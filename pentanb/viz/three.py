@@ -39,6 +39,7 @@ console; none of them comes from pentanb and none affects the drawing:
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections import OrderedDict
 from dataclasses import dataclass, field
@@ -241,6 +242,56 @@ def _fit(positions: np.ndarray, fov: float, aspect: float):
     return centre, radius, centre + distance * direction
 
 
+def look_at_quaternion(eye, target, up=(0.0, 0.0, 1.0)) -> tuple:
+    """Quaternion (x, y, z, w) turning a camera at ``eye`` towards ``target``.
+
+    The camera looks down its -z axis, as in three.js ``Object3D.lookAt``;
+    setting it from Python keeps a moved camera aimed without a browser-side
+    ``lookAt`` call (and so in exported pages too).
+    """
+    eye, target, up = (np.asarray(a, dtype=np.float64) for a in (eye, target, up))
+    z = eye - target
+    z /= np.linalg.norm(z) or 1.0
+    x = np.cross(up, z)
+    if np.linalg.norm(x) < 1e-12:  # looking along up: any perpendicular will do
+        x = np.cross((1.0, 0.0, 0.0) if abs(z[0]) < 0.9 else (0.0, 1.0, 0.0), z)
+    x /= np.linalg.norm(x)
+    y = np.cross(z, x)
+    m = np.stack([x, y, z], axis=1)  # columns: the camera's axes in the world
+    tr = m[0, 0] + m[1, 1] + m[2, 2]
+    if tr > 0:
+        s = 2.0 * math.sqrt(tr + 1.0)
+        q = ((m[2, 1] - m[1, 2]) / s, (m[0, 2] - m[2, 0]) / s, (m[1, 0] - m[0, 1]) / s, s / 4)
+    elif m[0, 0] > m[1, 1] and m[0, 0] > m[2, 2]:
+        s = 2.0 * math.sqrt(1.0 + m[0, 0] - m[1, 1] - m[2, 2])
+        q = (s / 4, (m[0, 1] + m[1, 0]) / s, (m[0, 2] + m[2, 0]) / s, (m[2, 1] - m[1, 2]) / s)
+    elif m[1, 1] > m[2, 2]:
+        s = 2.0 * math.sqrt(1.0 + m[1, 1] - m[0, 0] - m[2, 2])
+        q = ((m[0, 1] + m[1, 0]) / s, s / 4, (m[1, 2] + m[2, 1]) / s, (m[0, 2] - m[2, 0]) / s)
+    else:
+        s = 2.0 * math.sqrt(1.0 + m[2, 2] - m[0, 0] - m[1, 1])
+        q = ((m[0, 2] + m[2, 0]) / s, (m[1, 2] + m[2, 1]) / s, s / 4, (m[1, 0] - m[0, 1]) / s)
+    return tuple(float(c) for c in q)
+
+
+_VERSIONS = itertools.count(1)
+
+
+def _set_array(attribute, array) -> None:
+    """Replace a BufferAttribute's array so that the browser re-uploads it.
+
+    three.js uploads an attribute to the GPU again only when its ``version``
+    is above the one it uploaded last.  pythreejs syncs ``version`` from
+    Python too (a state request can send an old value back), so an array
+    replaced after that may never reach the GPU ("glDrawElements:
+    Insufficient buffer size").  Each new array therefore comes with a
+    version far above any the browser has counted to.
+    """
+    with attribute.hold_sync():
+        attribute.array = array
+        attribute.version = next(_VERSIONS) << 20
+
+
 class MeshView(W.VBox):
     """A pythreejs view of a polygon mesh with a legend and an edge switch.
 
@@ -280,7 +331,9 @@ class MeshView(W.VBox):
             vertexColors="VertexColors", flatShading=True, side="DoubleSide",
             shininess=1, specular="#000000", polygonOffset=True,
             polygonOffsetFactor=1.0, polygonOffsetUnits=1.0)
-        self.faces = P3.Mesh(self.face_geometry, self.face_material, frustumCulled=False)
+        self._serial = 0
+        self.faces = P3.Mesh(self.face_geometry, self.face_material, frustumCulled=False,
+                             name="pentanb-faces-0")
 
         self.edge_geometry = P3.BufferGeometry(
             attributes={"position": attr(b["edge_position"]), "color": attr(b["edge_color"])})
@@ -298,15 +351,21 @@ class MeshView(W.VBox):
 
         aspect = width / height
         centre, radius, position = _fit(d.positions, fov, aspect)
-        self.headlight = P3.PointLight(color="#ffffff", intensity=0.55,
-                                       position=(0.0, 0.0, 0.0))
+        # a hemisphere light riding on the camera: faces turned to the reader
+        # are lit, faces turned away darker (lights with shadows, such as
+        # PointLight and DirectionalLight, print "Error setting state" in
+        # JupyterLab 4)
+        self.headlight = P3.HemisphereLight(color="#ffffff", groundColor="#202020",
+                                            intensity=0.6)
         self.camera = P3.PerspectiveCamera(
-            position=tuple(position), up=(0.0, 0.0, 1.0), fov=fov, aspect=aspect,
-            near=radius / 100, far=radius * 100, children=[self.headlight])
-        self.ambient = P3.AmbientLight(color="#ffffff", intensity=0.5)
+            position=tuple(float(c) for c in position), up=(0.0, 0.0, 1.0), fov=fov,
+            aspect=aspect, near=radius / 100, far=radius * 100,
+            quaternion=look_at_quaternion(position, centre), children=[self.headlight])
+        self.ambient = P3.AmbientLight(color="#ffffff", intensity=0.45)
         self.scene = P3.Scene(children=[self.faces, self.edges, self.points, self.camera,
                                         self.ambient], background=background)
-        self.controls = P3.OrbitControls(controlling=self.camera, target=tuple(centre))
+        self.controls = P3.OrbitControls(controlling=self.camera,
+                                         target=tuple(float(c) for c in centre))
         self.renderer = P3.Renderer(scene=self.scene, camera=self.camera,
                                     controls=[self.controls], width=width, height=height,
                                     antialias=True, background=background)
@@ -344,6 +403,27 @@ class MeshView(W.VBox):
         """
         d = _as_drawing(mesh)
         b = buffers(d)
+        # no frame is drawn half-updated: the browser waits for the last array
+        with self.renderer.hold():
+            self._write(d, b)
+        self._redraw()
+        if self._show_legend:
+            self.legend.value = legend_html(d.legend, d.counts)
+        self._drawing = d
+        self._mesh = mesh if isinstance(mesh, Mesh) else None
+        if fit:
+            self.fit_camera()
+
+    def _redraw(self) -> None:
+        """Ask the browser for a new frame.
+
+        ``Renderer.hold()`` pauses pythreejs' automatic redraws, but lifting
+        the pause draws nothing; a change to an object of the scene does.
+        """
+        self._serial += 1
+        self.faces.name = f"pentanb-faces-{self._serial}"
+
+    def _write(self, d: Drawing, b: dict) -> None:
         fa = self.face_geometry.attributes
         ea = self.edge_geometry.attributes
         pa = self.point_geometry.attributes
@@ -352,39 +432,36 @@ class MeshView(W.VBox):
         # keep every index inside the position buffer at all times:
         # growing, positions first; shrinking, index first
         if len(b["position"]) >= old:
-            fa["position"].array = b["position"]
-            fa["color"].array = b["color"]
-            index.array = b["index"]
+            _set_array(fa["position"], b["position"])
+            _set_array(fa["color"], b["color"])
+            _set_array(index, b["index"])
         else:
-            index.array = b["index"]
-            fa["position"].array = b["position"]
-            fa["color"].array = b["color"]
-        ea["position"].array = b["edge_position"]
-        ea["color"].array = b["edge_color"]
-        pa["position"].array = b["point_position"]
-        pa["color"].array = b["point_color"]
+            _set_array(index, b["index"])
+            _set_array(fa["position"], b["position"])
+            _set_array(fa["color"], b["color"])
+        _set_array(ea["position"], b["edge_position"])
+        _set_array(ea["color"], b["edge_color"])
+        _set_array(pa["position"], b["point_position"])
+        _set_array(pa["color"], b["point_color"])
         self.points.visible = bool(b["point_count"])
         self._edges_present = bool(b["edge_count"])
         self.edges.visible = bool(self.wireframe.value and b["edge_count"])
-        if self._show_legend:
-            self.legend.value = legend_html(d.legend, d.counts)
-        self._drawing = d
-        self._mesh = mesh if isinstance(mesh, Mesh) else None
-        if fit:
-            self.fit_camera()
 
     def fit_camera(self) -> None:
         """Point the camera at the whole drawing again."""
         centre, radius, position = _fit(self._drawing.positions, self.camera.fov,
                                         self.camera.aspect)
-        self.camera.near = radius / 100
-        self.camera.far = radius * 100
-        self.camera.position = tuple(position)
-        self.controls.target = tuple(centre)
+        with self.renderer.hold():
+            self.camera.near = radius / 100
+            self.camera.far = radius * 100
+            self.controls.target = tuple(float(c) for c in centre)
+            self.camera.position = tuple(float(c) for c in position)
+            self.camera.quaternion = look_at_quaternion(position, centre)
+        self._redraw()
         self._set_point_size(radius)
 
     def _set_point_size(self, radius: float) -> None:
-        self.point_material.size = float(self._point_size or radius * 0.035)
+        self.point_material.size = float(self._point_size or radius * 0.09)
 
     # -- embedding ----------------------------------------------------------
     def copy(self, mesh=None, **kwargs) -> "MeshView":

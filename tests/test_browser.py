@@ -1,0 +1,276 @@
+"""The notebooks and the exported pages in a real browser, as a reader uses them.
+
+* Every notebook of ``notebooks/`` (and the widget notebook of
+  ``tests/notebooks/``) is opened in JupyterLab (``?reset``), all its cells
+  are run, no cell may fail, a pythreejs picture must appear and not be
+  blank (where the notebook draws in 3D), and moving the first slider must
+  change the picture next to it.
+* A page written by :func:`pentanb.export_html` (offline) opens in Chromium
+  with the network switched off, loads nothing but itself, shows the mesh,
+  and its slider changes the picture without a kernel.
+
+Needs Debian's ``chromium`` and Python's ``playwright`` (run
+``.ci/browser-setup.sh``); without them the tests skip with a message, except
+under CI (``CI=true``), where that is a failure.  Screenshots are saved in
+``$PENTANB_BROWSER_ARTIFACTS`` (or a pytest temporary folder, printed with
+``-s``).  The console must hold no error but the known harmless ones
+(:data:`browser_support.HARMLESS_CONSOLE`).
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import browser_support as bs  # noqa: E402
+
+ROOT = bs.ROOT
+NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb")) + \
+    sorted((ROOT / "tests" / "notebooks").glob("*.ipynb"))
+
+#: Seconds a notebook may take to run all its cells.
+RUN_TIMEOUT = 180
+#: Seconds to wait for a picture to appear or to change.
+DRAW_TIMEOUT = 45
+
+DRAWS_3D = re.compile(r"pentanb\.(view|explore|step_through)\(|pythreejs|\bview\(|explore\(")
+
+
+@pytest.fixture(scope="module")
+def browser():
+    sync_playwright, path = bs.require_browser()
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=path, args=bs.CHROMIUM_FLAGS)
+        yield b
+        b.close()
+
+
+@pytest.fixture(scope="module")
+def artifacts(tmp_path_factory):
+    path = bs.artifact_dir(tmp_path_factory)
+    print(f"\nbrowser screenshots: {path}")
+    return path
+
+
+@pytest.fixture(scope="module")
+def lab(browser):
+    with bs.JupyterLab(NOTEBOOKS) as server:
+        yield server
+
+
+def _poll(fn, timeout, interval=0.25):
+    """fn() until it returns something truthy, or None after timeout seconds."""
+    deadline = time.monotonic() + timeout
+    while True:
+        value = fn()
+        if value:
+            return value
+        if time.monotonic() > deadline:
+            return None
+        time.sleep(interval)
+
+
+def _listen(page):
+    messages = []
+    page.on("console", lambda m: messages.append((m.type, m.text)))
+    page.on("pageerror", lambda e: messages.append(("pageerror", str(e))))
+    return messages
+
+
+def _bad_console(messages):
+    return [f"{kind}: {text[:500]}" for kind, text in messages
+            if kind in ("error", "pageerror") and not bs.harmless(text)]
+
+
+def _wait_picture(locator, timeout=DRAW_TIMEOUT):
+    """Screenshot of an element once it is not blank (or the last one)."""
+    shots = []
+
+    def check():
+        png = locator.screenshot()
+        shots.append(png)
+        return png if bs.nonblank(png) > 0.01 else None
+    return _poll(check, timeout, 0.5), (shots[-1] if shots else None)
+
+
+def _wait_change(locator, before, timeout=DRAW_TIMEOUT):
+    """The element's picture once it differs from ``before`` and has settled."""
+    def check():
+        png = locator.screenshot()
+        return png if bs.changed(before, png) > 0.0005 else None
+    changed = _poll(check, timeout, 0.5)
+    if changed is None:
+        return None
+    last = [changed]
+
+    def settled():
+        png = locator.screenshot()
+        same = bs.changed(last[0], png) == 0.0
+        last[0] = png
+        return same
+    _poll(settled, 10, 0.5)
+    return last[0]
+
+
+def _move_slider(handle, target, before):
+    """One step right (left when at the maximum); the target's new picture or None."""
+    at_max = handle.get_attribute("aria-valuenow") == handle.get_attribute("aria-valuemax")
+    handle.focus()
+    handle.press("ArrowLeft" if at_max else "ArrowRight")
+    return _wait_change(target, before)
+
+
+JS_READY = """() => {
+  const app = window.jupyterapp;
+  const w = app && app.shell.currentWidget;
+  return !!(w && w.sessionContext && w.content && w.content.widgets
+            && w.content.widgets.length && w.context && w.context.isReady);
+}"""
+
+JS_RUN_ALL = """async () => {
+  const app = window.jupyterapp;
+  const w = app.shell.currentWidget;
+  await w.sessionContext.ready;
+  window.__pentanbRun = null;
+  app.commands.execute('notebook:run-all-cells').then(
+      ok => { window.__pentanbRun = {ok: ok}; },
+      err => { window.__pentanbRun = {ok: false, error: String(err)}; });
+  const k = w.sessionContext.session && w.sessionContext.session.kernel;
+  return k ? k.name : null;
+}"""
+
+JS_DONE = """() => {
+  const w = window.jupyterapp.shell.currentWidget;
+  const k = w.sessionContext.session && w.sessionContext.session.kernel;
+  return window.__pentanbRun !== null && k && k.status === 'idle';
+}"""
+
+JS_RESULT = """() => {
+  const w = window.jupyterapp.shell.currentWidget;
+  const errors = [], missing = [];
+  w.content.widgets.forEach((c, i) => {
+    if (c.model.type !== 'code') return;
+    if (c.model.sharedModel.getSource().trim() && c.model.executionCount === null)
+      missing.push(i);
+    for (const o of c.model.outputs.toJSON())
+      if (o.output_type === 'error') errors.push(`cell ${i}: ${o.ename}: ${o.evalue}`);
+  });
+  return {run: window.__pentanbRun, errors: errors, missing: missing};
+}"""
+
+JS_SHUTDOWN = """async () => {
+  const w = window.jupyterapp.shell.currentWidget;
+  if (w && w.sessionContext) await w.sessionContext.shutdown();
+}"""
+
+
+@pytest.mark.parametrize("notebook", NOTEBOOKS, ids=[p.name for p in NOTEBOOKS])
+def test_notebook_runs_and_draws_in_jupyterlab(notebook, browser, lab, artifacts):
+    stem = notebook.stem
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    messages = _listen(page)
+    t0 = time.monotonic()
+    try:
+        page.goto(f"{lab.url}/lab/tree/{notebook.name}?reset")
+        page.wait_for_function(JS_READY, timeout=90_000)
+        kernel = page.evaluate(JS_RUN_ALL)
+        assert kernel, "the notebook got no kernel"
+        page.wait_for_function(JS_DONE, timeout=RUN_TIMEOUT * 1000, polling=500)
+        result = page.evaluate(JS_RESULT)
+        page.screenshot(path=str(artifacts / f"{stem}-run.png"), full_page=True)
+        assert not result["errors"], f"{notebook.name}: cells failed: {result['errors']}"
+        assert result["run"]["ok"], f"{notebook.name}: run-all failed: {result['run']}"
+        assert not result["missing"], f"{notebook.name}: cells not run: {result['missing']}"
+        t_run = time.monotonic() - t0
+
+        # a pythreejs picture, not blank
+        if DRAWS_3D.search(notebook.read_text()):
+            renderer = page.locator(".jupyter-threejs >> visible=true").first
+            renderer.wait_for(timeout=DRAW_TIMEOUT * 1000)
+            png, last = _wait_picture(renderer)
+            if last:
+                (artifacts / f"{stem}-3d.png").write_bytes(last)
+            assert png, f"{notebook.name}: the pythreejs picture stayed blank"
+
+        # move the first slider: the picture beside it changes
+        moved = False
+        cells = page.locator(".jp-Cell").filter(
+            has=page.locator(".jp-OutputArea-output .widget-slider"))
+        if cells.count():
+            cell = cells.first
+            slider = cell.locator(".jp-OutputArea-output .widget-slider").first
+            target = None
+            for selector in (".jupyter-threejs >> visible=true",
+                             ".jupyter-widgets-output-area >> visible=true"):
+                candidate = cell.locator(selector).first
+                if candidate.count():
+                    target = candidate
+                    break
+            if target is not None:
+                target.scroll_into_view_if_needed()
+                png, _ = _wait_picture(target)
+                before = png or target.screenshot()
+                after = _move_slider(slider.locator(".noUi-handle").first, target, before)
+                (artifacts / f"{stem}-slider.png").write_bytes(target.screenshot())
+                assert after, f"{notebook.name}: moving the slider did not change the picture"
+                moved = True
+        if notebook.parent.name == "notebooks" and notebook.parent.parent.name == "tests":
+            assert moved, f"{notebook.name}: found no slider beside a picture"
+        bad = _bad_console(messages)
+        assert not bad, f"{notebook.name}: console errors: {bad}"
+        print(f"\n{notebook.name}: ran in {t_run:.1f} s, "
+              f"checked in {time.monotonic() - t0:.1f} s")
+    finally:
+        try:
+            page.evaluate(JS_SHUTDOWN)
+        except Exception:  # noqa: BLE001 - the page may be gone already
+            pass
+        page.close()
+
+
+# -- exported pages -------------------------------------------------------------
+
+def _offline_page(kind):
+    import pentanb
+    from pentanb.viz import html
+    try:
+        html.offline_scripts()
+    except FileNotFoundError as err:
+        bs.skip_or_fail(str(err))
+    if kind == "explorer":
+        return pentanb.explore("cube", iterations=2)
+    return pentanb.step_through(pentanb.shapes.tetrahedron())
+
+
+@pytest.mark.parametrize("kind", ["explorer", "step_through"])
+def test_offline_html_works_without_network_or_kernel(kind, browser, artifacts, tmp_path):
+    from pentanb.viz.html import export_html
+    widget = _offline_page(kind)
+    path = export_html(widget, tmp_path / f"{kind}.html", offline=True)
+    context = browser.new_context(offline=True, viewport={"width": 1000, "height": 1000})
+    page = context.new_page()
+    requests = []
+    page.on("request", lambda r: requests.append(r.url))
+    messages = _listen(page)
+    try:
+        page.goto(path.as_uri())
+        renderer = page.locator(".jupyter-threejs >> visible=true").first
+        renderer.wait_for(timeout=DRAW_TIMEOUT * 1000)
+        before, last = _wait_picture(renderer)
+        page.screenshot(path=str(artifacts / f"offline-{kind}-0.png"))
+        assert before, f"offline {kind}: the picture stayed blank"
+        after = _move_slider(page.locator(".widget-slider .noUi-handle").first,
+                             page.locator(".jupyter-threejs >> visible=true").first, before)
+        page.screenshot(path=str(artifacts / f"offline-{kind}-1.png"))
+        assert after, f"offline {kind}: the slider did not change the picture"
+        network = [u for u in requests if not u.startswith(("file:", "data:", "blob:"))]
+        assert not network, f"offline {kind}: the page asked the network for {network}"
+        bad = _bad_console(messages)
+        assert not bad, f"offline {kind}: console errors: {bad}"
+    finally:
+        context.close()
