@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Install what the browser tests (tests/test_browser.py) and offline HTML
+# export (pentanb.export_html(..., offline=True)) need:
+#   * Debian's chromium (only if /usr/bin/chromium is missing),
+#   * Python's playwright (only if it does not import; it drives that
+#     chromium, so no browser download is needed),
+#   * the npm packages @jupyter-widgets/html-manager and requirejs, in a cache
+#     folder outside the repository: $PENTANB_JS_DIR, default
+#     ${XDG_CACHE_HOME:-$HOME/.cache}/pentanb/js.
+# Safe to run again: each step is skipped when its result is already there.
+#
+# Usage: bash .ci/browser-setup.sh [python]   (default python: $PYTHON or python3)
+set -euo pipefail
+
+PY="${1:-${PYTHON:-python3}}"
+HTML_MANAGER_VERSION=1.0.15
+REQUIREJS_VERSION=2.3.8
+JS_DIR="${PENTANB_JS_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/pentanb/js}"
+
+apt_updated=0
+apt_install() {
+    if [ "$apt_updated" = 0 ]; then
+        apt-get update -qq
+        apt_updated=1
+    fi
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$@"
+}
+
+if [ ! -x /usr/bin/chromium ]; then
+    echo "browser-setup: installing Debian's chromium"
+    apt_install chromium
+fi
+
+if ! "$PY" -c "import playwright" 2>/dev/null; then
+    echo "browser-setup: installing Python's playwright"
+    "$PY" -m pip install --quiet "playwright>=1.40"
+fi
+
+manager="$JS_DIR/node_modules/@jupyter-widgets/html-manager/dist/embed-amd.js"
+requirejs="$JS_DIR/node_modules/requirejs/require.js"
+if [ ! -f "$manager" ] || [ ! -f "$requirejs" ]; then
+    if ! command -v npm >/dev/null 2>&1; then
+        echo "browser-setup: installing npm"
+        apt_install npm
+    fi
+    echo "browser-setup: fetching html-manager and requirejs into $JS_DIR"
+    mkdir -p "$JS_DIR"
+    npm install --prefix "$JS_DIR" --no-audit --no-fund --loglevel=error \
+        "@jupyter-widgets/html-manager@$HTML_MANAGER_VERSION" "requirejs@$REQUIREJS_VERSION"
+fi
+
+echo "browser-setup: chromium $(/usr/bin/chromium --version 2>/dev/null | head -1 || echo '?'), " \
+     "playwright $("$PY" -c 'import importlib.metadata as m; print(m.version("playwright"))'), " \
+     "widget scripts in $JS_DIR"
