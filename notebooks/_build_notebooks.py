@@ -61,15 +61,9 @@ CACHE = code('''
                                  **options)
 
 
-    def max_iterations(mesh, scheme, duals=2, limit=MAX_FACES, cap=6):
-        """Most iterations whose meshes all stay under `limit` faces (predicted, not built)."""
-        counts = (mesh.n_vertices, mesh.n_edges, mesh.n_faces)
-        best = 0
-        for k in range(1, cap + 1):
-            if max(F for _, _, F in pentanb.predict_counts(counts, scheme, k, duals)) > limit:
-                break
-            best = k
-        return best
+    def max_iterations(mesh, scheme, duals=2):
+        """Most iterations whose meshes all stay under MAX_FACES (predicted, not built)."""
+        return pentanb.max_iterations(mesh, scheme, duals, max_faces=MAX_FACES, cap=6)
 ''')
 
 

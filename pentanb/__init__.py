@@ -20,14 +20,14 @@ from .dual import dual, smooth
 from .io import read, write
 from .mesh import Mesh, MeshError
 from .pentagonal import pentagonalize, preserve_pentagons
-from .subdivision import SCHEMES, Scheme, predict_counts, subdivide
+from .subdivision import SCHEMES, Scheme, max_iterations, predict_counts, subdivide
 
 __version__ = "0.1.0"
 
 __all__ = ["Mesh", "MeshError", "dual", "smooth", "pentagonalize", "preserve_pentagons",
            "triangulate", "loop_remesh", "sqrt3_remesh", "vertex_insertion",
            "corner_cutting", "preserve_hexagons", "honeycomb", "subdivide", "SCHEMES",
-           "Scheme", "predict_counts", "read", "write", "shapes", "topology",
+           "Scheme", "predict_counts", "max_iterations", "read", "write", "shapes", "topology",
            "view", "explore", "step_through", "export_html", "figures"]
 
 # drawing functions: imported on first use, so that `import pentanb` needs numpy only

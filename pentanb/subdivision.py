@@ -18,8 +18,8 @@ from . import classic, pentagonal
 from .dual import _check_count, dual
 from .mesh import Mesh, MeshError
 
-__all__ = ["Scheme", "SCHEMES", "subdivide", "predict_counts", "estimate_bytes",
-           "get_scheme"]
+__all__ = ["Scheme", "SCHEMES", "subdivide", "predict_counts", "max_iterations",
+           "estimate_bytes", "get_scheme"]
 
 Counts = tuple[int, int, int]
 
@@ -135,6 +135,39 @@ def predict_counts(counts: Counts, scheme: str | Scheme, iterations: int = 1,
             V, F = F, V
             out.append((V, E, F))
     return out
+
+
+def max_iterations(mesh_or_counts, scheme: str | Scheme, duals: int = 2,
+                   max_faces: int = 100_000, cap: int = 8) -> int:
+    """The most iterations of ``scheme`` whose meshes all stay within ``max_faces``.
+
+    Predicted from the counts (nothing is built): the bound a slider over
+    iterations should have.
+
+    Parameters
+    ----------
+    mesh_or_counts : Mesh or (V, E, F)
+    scheme : str or Scheme
+    duals : int
+        Duals after each remeshing (as in :func:`subdivide`).
+    max_faces : int
+        Largest number of faces any step may have.
+    cap : int
+        Never more than this many iterations.
+
+    Returns
+    -------
+    int
+        0 when even one iteration would be too large.
+    """
+    counts = mesh_or_counts if isinstance(mesh_or_counts, tuple) else \
+        (mesh_or_counts.n_vertices, mesh_or_counts.n_edges, mesh_or_counts.n_faces)
+    steps = predict_counts(counts, scheme, cap, duals)
+    per_iteration = 1 + duals
+    for k in range(cap):
+        if max(F for _, _, F in steps[k * per_iteration:(k + 1) * per_iteration]) > max_faces:
+            return k
+    return cap
 
 
 def estimate_bytes(V: int, E: int, F: int) -> int:

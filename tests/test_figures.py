@@ -324,13 +324,13 @@ def test_plot_mesh_and_legend():
     assert labels == ["quads (4)", "pentagons (5)"]
 
 
-def test_big_mesh_draws_quickly():
-    import time
+def test_big_mesh_draws_every_face():
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
     mesh = pentanb.subdivide(pentanb.shapes.animal(), "pentagonalize", 2, 2)
-    t = time.perf_counter()
     fig = vz.plot_mesh(mesh)
     fig.savefig(io.BytesIO(), format="png")
-    assert time.perf_counter() - t < 10.0
+    polys = [c for c in fig.axes[0].collections if isinstance(c, Poly3DCollection)]
+    assert sum(len(c.get_paths()) for c in polys) >= mesh.n_faces
 
 
 def test_import_pentanb_does_not_import_matplotlib():

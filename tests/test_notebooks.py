@@ -217,9 +217,7 @@ print("SWEEP", _json.dumps(_largest))
 
 #: Largest mesh (faces) a slider position may build.
 MAX_FACES = 100_000
-#: Longest a single slider move may take to redraw, in seconds (generous: the
-#: test machine may be busy; on a laptop the slowest move takes about a second).
-MAX_REDRAW_SECONDS = 20.0
+# (the slowest redraw is printed, not asserted: timings belong in benchmarks/)
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=_ids(NOTEBOOKS))
@@ -238,7 +236,5 @@ def test_notebook_sliders(path: Path, kernel_dir: str):
     result = json.loads(line[-1][len("SWEEP "):])
     assert result["faces"] <= MAX_FACES, \
         f"{path.name}: a slider position built {result['faces']:,} faces"
-    assert result["slowest"] <= MAX_REDRAW_SECONDS, \
-        f"{path.name}: a slider move took {result['slowest']:.1f} s to redraw"
     print(f"{path.name}: {result['positions']} positions, largest mesh "
           f"{result['faces']:,} faces, slowest redraw {result['slowest']:.2f} s")

@@ -4,9 +4,9 @@ and every operator of the registry (plus the dual) run over the whole corpus.
 
 from __future__ import annotations
 
+import dataclasses
 import inspect
 import re
-import time
 
 import numpy as np
 import pytest
@@ -218,12 +218,16 @@ def test_predict_counts_needs_a_registered_scheme():
         predict_counts((8, 12, 6), pentanb.pentagonalize)
 
 
-def test_memory_guard_refuses_before_building():
+def test_memory_guard_refuses_before_building(monkeypatch):
     m = shapes.cube()
-    t0 = time.perf_counter()
+
+    def must_not_run(mesh, **options):
+        raise AssertionError("the guard let subdivide start building")
+
+    spy = dataclasses.replace(SCHEMES["pentagonalize"], func=must_not_run)
+    monkeypatch.setitem(SCHEMES, "pentagonalize", spy)
     with pytest.raises(MeshError) as info:
         subdivide(m, "pentagonalize", iterations=12, max_bytes=10**6)
-    assert time.perf_counter() - t0 < 5
     msg = str(info.value)
     # every pentagonalization multiplies E by 5 and makes 2E faces; duals keep
     # the counts after an even number: after the 12th, E = 12 * 5**12,
@@ -280,3 +284,28 @@ def test_progress_with_zero_duals():
 def test_subdivide_refuses_non_scheme_values(bad):
     with pytest.raises(ValueError, match="unknown scheme"):
         subdivide(shapes.cube(), bad)
+
+
+# ---------------------------------------------------------------- max_iterations
+def test_max_iterations_bounds_a_slider():
+    # cube: pentagonalize gives 2E faces; E grows 12 -> 60 -> 300 -> 1500 -> 7500,
+    # so the faces after k iterations are 24, 120, 600, 3000, 15000 (duals swap V and F
+    # in between: the duals' face counts are V' = V + 2E + F = 38, 158, ...)
+    cube = shapes.cube()
+    counts = (8, 12, 6)
+    v, e, f = counts
+    biggest = []
+    for _ in range(6):
+        v, e, f = v + 2 * e + f, 5 * e, 2 * e
+        biggest.append(max(f, v))  # the dual in between has V faces
+    for limit in (30, 200, 1000, 5000, 20000):
+        expected = sum(1 for b in biggest if b <= limit) if all(
+            biggest[i] <= biggest[i + 1] for i in range(5)) else None
+        assert pentanb.max_iterations(cube, "pentagonalize", 2, max_faces=limit) == expected
+        assert pentanb.max_iterations(counts, "pentagonalize", 2, max_faces=limit) == expected
+
+
+def test_max_iterations_zero_and_cap():
+    cube = shapes.cube()
+    assert pentanb.max_iterations(cube, "pentagonalize", max_faces=10) == 0
+    assert pentanb.max_iterations(cube, "triangulate", max_faces=10**9, cap=3) == 3
