@@ -268,6 +268,27 @@ def test_offline_html_works_without_network_or_kernel(kind, browser, artifacts, 
                              page.locator(".jupyter-threejs >> visible=true").first, before)
         page.screenshot(path=str(artifacts / f"offline-{kind}-1.png"))
         assert after, f"offline {kind}: the slider did not change the picture"
+        assert bs.nonblank(after) > 0.01, f"offline {kind}: blank after the slider moved"
+        # orbit (drag on the picture), then go back a step: the views share
+        # one camera, so the other level shows the mesh from the new side
+        visible = page.locator(".jupyter-threejs >> visible=true").first
+        box = visible.bounding_box()
+        x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+        page.mouse.move(x, y)
+        page.mouse.down()
+        for k in range(1, 11):
+            page.mouse.move(x + 12 * k, y + 4 * k)
+        page.mouse.up()
+        turned = _wait_change(visible, after)
+        assert turned, f"offline {kind}: dragging did not turn the mesh"
+        handle = page.locator(".widget-slider .noUi-handle").first
+        handle.focus()
+        handle.press("ArrowLeft")
+        back = _wait_change(page.locator(".jupyter-threejs >> visible=true").first, turned)
+        page.screenshot(path=str(artifacts / f"offline-{kind}-2.png"))
+        assert back and bs.nonblank(back) > 0.01, f"offline {kind}: blank after orbit + slider"
+        assert bs.changed(before, back) > 0.0005, \
+            f"offline {kind}: the turned camera was not kept for the other step"
         network = [u for u in requests if not u.startswith(("file:", "data:", "blob:"))]
         assert not network, f"offline {kind}: the page asked the network for {network}"
         bad = _bad_console(messages)

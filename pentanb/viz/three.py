@@ -314,7 +314,9 @@ class MeshView(W.VBox):
 
     def __init__(self, mesh, *, width: int = 600, height: int = 450, edges: bool = True,
                  legend: bool = True, background: str = "#ffffff", fov: float = 40.0,
-                 toggle: bool = True, point_size: float | None = None):
+                 toggle: bool = True, point_size: float | None = None,
+                 camera: P3.PerspectiveCamera | None = None,
+                 target: tuple | None = None):
         d = _as_drawing(mesh)
         b = buffers(d)
         self._drawing = d
@@ -357,13 +359,23 @@ class MeshView(W.VBox):
         # JupyterLab 4)
         self.headlight = P3.HemisphereLight(color="#ffffff", groundColor="#202020",
                                             intensity=0.6)
-        self.camera = P3.PerspectiveCamera(
-            position=tuple(float(c) for c in position), up=(0.0, 0.0, 1.0), fov=fov,
-            aspect=aspect, near=radius / 100, far=radius * 100,
-            quaternion=look_at_quaternion(position, centre), children=[self.headlight])
         self.ambient = P3.AmbientLight(color="#ffffff", intensity=0.45)
-        self.scene = P3.Scene(children=[self.faces, self.edges, self.points, self.camera,
-                                        self.ambient], background=background)
+        objects = [self.faces, self.edges, self.points, self.ambient]
+        if camera is None:
+            self.camera = P3.PerspectiveCamera(
+                position=tuple(float(c) for c in position), up=(0.0, 0.0, 1.0), fov=fov,
+                aspect=aspect, near=radius / 100, far=radius * 100,
+                quaternion=look_at_quaternion(position, centre), children=[self.headlight])
+            objects.append(self.camera)
+        else:
+            # a camera shared with other views stays outside every scene (an
+            # object has one parent); the light follows it through a link
+            self.camera = camera
+            self.headlight.position = tuple(camera.position)
+            self._light_link = W.jsdlink((camera, "position"), (self.headlight, "position"))
+            objects.append(self.headlight)
+            centre = np.asarray(target if target is not None else centre, dtype=np.float64)
+        self.scene = P3.Scene(children=objects, background=background)
         self.controls = P3.OrbitControls(controlling=self.camera,
                                          target=tuple(float(c) for c in centre))
         self.renderer = P3.Renderer(scene=self.scene, camera=self.camera,
@@ -739,16 +751,18 @@ def slider_stack(items, captions, like: MeshView, *, description: str = "step",
     """A slider choosing one of several prebuilt views, linked in the browser.
 
     Every item (a Mesh or a Drawing) gets its own :class:`MeshView` with the
-    size and camera of ``like``; the views share their camera position
-    through ``jslink``, so orbiting one keeps the viewpoint for the others.
+    size and viewpoint of ``like``; the views share one camera, so orbiting
+    one keeps the viewpoint for the others.
     """
-    views = [like.copy(item) for item in items]
     cam = like.camera
+    # one camera for all the views, outside their scenes: orbiting one view
+    # moves the camera of all
+    camera = P3.PerspectiveCamera(position=tuple(cam.position), up=tuple(cam.up),
+                                  quaternion=tuple(cam.quaternion), fov=cam.fov,
+                                  aspect=cam.aspect, near=cam.near, far=cam.far)
+    views = [like.copy(item, camera=camera, target=tuple(like.controls.target))
+             for item in items]
     for v in views:
-        v.camera.position = tuple(cam.position)
-        v.camera.quaternion = tuple(cam.quaternion)
-        v.camera.near, v.camera.far = cam.near, cam.far
-        v.controls.target = tuple(like.controls.target)
         v.point_material.size = like.point_material.size
         v.wireframe.value = like.wireframe.value
     stack = W.Stack(views, selected_index=value)
@@ -758,8 +772,6 @@ def slider_stack(items, captions, like: MeshView, *, description: str = "step",
     W.jslink((slider, "value"), (stack, "selected_index"))
     W.jslink((slider, "value"), (texts, "selected_index"))
     for v in views[1:]:
-        W.jslink((views[0].camera, "position"), (v.camera, "position"))
-        W.jslink((views[0].camera, "quaternion"), (v.camera, "quaternion"))
         W.jslink((views[0].wireframe, "value"), (v.wireframe, "value"))
     box = W.VBox([W.HTML(title), slider, texts, stack])
     box.add_class("pentanb-static")
