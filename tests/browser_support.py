@@ -46,7 +46,15 @@ HARMLESS_CONSOLE = (
     "shared singleton module",
     "Failed to load resource: the server responded with a status of 404",  # favicon etc.
     "[Violation]",
+    "already frozen",                              # pythreejs log when a view is reused
+    # pythreejs 2.4 under JupyterLab 4, for lights that cast shadows
+    # (PointLight, DirectionalLight, SpotLight); pentanb's views use none
+    "Error setting state: t.on is not a function",
 )
+
+#: Console text that fails a test whatever its level: WebGL errors mean a
+#: buffer was drawn out of step with another (see ``MeshView.update``).
+FORBIDDEN_CONSOLE = ("GL_INVALID",)
 
 
 def in_ci() -> bool:

@@ -84,7 +84,8 @@ def _listen(page):
 
 def _bad_console(messages):
     return [f"{kind}: {text[:500]}" for kind, text in messages
-            if kind in ("error", "pageerror") and not bs.harmless(text)]
+            if (kind in ("error", "pageerror") and not bs.harmless(text))
+            or any(f in text for f in bs.FORBIDDEN_CONSOLE)]
 
 
 def _wait_picture(locator, timeout=DRAW_TIMEOUT):

@@ -102,6 +102,32 @@ def test_view_camera_sees_the_whole_mesh():
     assert v.camera.near < distance - radius and v.camera.far > distance + radius
 
 
+def _scene_objects(obj):
+    yield obj
+    for child in getattr(obj, "children", ()):
+        yield from _scene_objects(child)
+
+
+def test_view_uses_no_light_that_breaks_jupyterlab():
+    """pythreejs' shadow-casting lights print "Error setting state" in JupyterLab 4."""
+    import pythreejs as P3
+    v = pentanb.view(shapes.cube())
+    kinds = {type(o) for o in _scene_objects(v.scene)}
+    assert not kinds & {P3.PointLight, P3.DirectionalLight, P3.SpotLight}
+    assert P3.HemisphereLight in kinds and P3.AmbientLight in kinds
+
+
+def test_update_bumps_buffer_versions():
+    """A replaced array must reach the GPU: its version rises past the browser's."""
+    v = pentanb.view(shapes.cube())
+    attrs = [v.face_geometry.attributes["position"], v.face_geometry.index,
+             v.edge_geometry.attributes["position"]]
+    before = [a.version for a in attrs]
+    v.update(shapes.tetrahedron())
+    after = [a.version for a in attrs]
+    assert all(b > a + 1000 for a, b in zip(before, after))
+
+
 def test_edges_can_be_switched_off():
     v = pentanb.view(shapes.cube(), edges=False)
     assert not v.edges.visible and not v.wireframe.value

@@ -28,6 +28,11 @@ EDGE_POINT_COLOR = "#000000"
 FACE_POINT_COLOR = "#c00000"
 
 
+def _input_caption(mesh: Mesh) -> str:
+    return (f"The input mesh: {mesh.n_vertices} vertices, {mesh.n_edges} edges, "
+            f"{mesh.n_faces} faces.")
+
+
 def _halfedges(mesh: Mesh):
     """Per half-edge: face, position in face, next half-edge, tail and head positions."""
     sizes = np.asarray(mesh.face_sizes, dtype=np.int64)
@@ -83,9 +88,10 @@ def stages(mesh: Mesh, scheme: str = "pentagonalize", *, duals: int = 2,
     elif scheme == "preserve_pentagons":
         out = _preservation_stages(mesh, opts["scale"])
     else:
-        out = [("The input mesh.", mesh)]
+        out = [(_input_caption(mesh), mesh)]
     result = s(mesh, **opts)
-    out.append((f"{s.label}: the remeshed mesh ({s.paper}).", result))
+    out.append((f"{s.label}: the remeshed mesh, {result.n_vertices} vertices, "
+                f"{result.n_edges} edges, {result.n_faces} faces ({s.paper}).", result))
     m = result
     for k in range(duals):
         m = dual(m)
@@ -112,9 +118,10 @@ def _pentagonalize_stages(mesh: Mesh):
     ep_col = np.tile(_hex_to_rgb(EDGE_POINT_COLOR), (len(edge_pts), 1))
     fp_col = np.tile(_hex_to_rgb(FACE_POINT_COLOR), (len(face_pts), 1))
     legend0 = _histogram(sizes)
-    out = [("The input mesh: V vertices, E edges, F faces.",
+    out = [(_input_caption(mesh),
             _draw(positions, offsets, parent, old_edges, black, None, None, legend0)),
-           ("Step 1: every edge is cut into three equal parts (the new points).",
+           (f"Step 1: every edge is cut into three equal parts: {2 * mesh.n_edges} new "
+            "points (black).",
             _draw(positions, offsets, parent, old_edges, black, edge_pts, ep_col, legend0)),
            ("Step 2a: a point sphere at the centroid of every face (red).",
             _draw(positions, offsets, parent, old_edges, black,
@@ -164,9 +171,9 @@ def _preservation_stages(mesh: Mesh, scale: float):
     q_col = np.tile(_hex_to_rgb(FACE_POINT_COLOR), (len(q), 1))
     legend0 = _histogram(sizes)
     ring = np.concatenate([parent_face, _lighten(parent_face[hf])])
-    out = [("The input mesh: V vertices, E edges, F faces.",
+    out = [(_input_caption(mesh),
             _draw(positions, offsets, parent, old_edges, black, None, None, legend0)),
-           ("Step 1: every edge is cut at its midpoint (the new points).",
+           (f"Step 1: every edge is cut at its midpoint: {mesh.n_edges} new points (black).",
             _draw(positions, offsets, parent, old_edges, black, mids, mp_col, legend0)),
            (f"Step 2: in every face the midpoints are scaled by {scale:g} about their "
             "centroid: a smaller copy of the face, with as many sides.",
@@ -189,7 +196,8 @@ def _preservation_stages(mesh: Mesh, scale: float):
                                   np.where((j[inserted] == g)[:, None],
                                            _hex_to_rgb(NEW_EDGE_COLOR), 0.0)])
         legend = _histogram(sizes)
-        legend[5] = legend.get(5, 0) + int(done.sum())
+        if done.any():
+            legend[5] = legend.get(5, 0) + int(done.sum())
         out.append((f"Step 3, group {g + 1} of {n_groups}: an edge from corner {g + 1} "
                     "of every copy to its midpoint; a pentagon is closed when both its "
                     "edges are in.",

@@ -21,20 +21,30 @@ the orbit controls stay, so the reader's viewpoint is kept.
 
 Console messages in JupyterLab 4
 --------------------------------
-pythreejs 2.4 was built against older Lumino and widget packages.  JupyterLab
-and the offline HTML page may print these harmless messages in the browser
-console; none of them comes from pentanb and none affects the drawing:
+pythreejs 2.4 was built against older Lumino and widget packages.  The
+browser console of JupyterLab 4 (and of a page from :func:`pentanb.export_html`)
+shows these messages; none comes from pentanb and none affects the drawing:
 
-* warnings that ``jupyter-threejs`` asks for other versions of shared
-  packages (``@jupyter-widgets/base``, ``@lumino/...``): "Unsatisfied version
-  ... of shared singleton module ...";
-* "Error setting state: ..." from pythreejs' ``DirectionalLight`` model (its
-  ``target``/``shadow`` sub-objects): pentanb lights with an ambient light and
-  a ``PointLight`` riding on the camera, so it never creates a
-  ``DirectionalLight`` and does not trigger it;
-* WebGL performance notes from Chromium's software renderer (SwiftShader),
-  e.g. "GPU stall due to ReadPixels" or "Automatic fallback to software
-  WebGL has been deprecated", in headless browsers without a GPU.
+* warning ``Unsatisfied version 2.2.2 from CORE_FEDERATION of shared
+  singleton module @lumino/coreutils (required ^1.11.0)``: JupyterLab shares
+  its own Lumino with the pythreejs extension, which still works;
+* log ``THREE.WebGLRenderer 97`` (one per WebGL context) and
+  ``TV(...): already frozen...`` (pythreejs reusing a context);
+* warning ``[.WebGL-...] GL Driver Message (OpenGL, Performance, ...): GPU
+  stall due to ReadPixels``: Chromium's software renderer (SwiftShader, in
+  headless browsers without a GPU) when pythreejs snapshots a canvas;
+* warning ``strict mode: use allowUnionTypes ...`` from the JSON-schema check
+  of ``@jupyter-widgets/html-manager`` in exported pages;
+* error ``Error setting state: t.on is not a function``: printed by pythreejs
+  for every light that casts shadows (``PointLight``, ``DirectionalLight``,
+  ``SpotLight``).  pentanb lights its views with an ``AmbientLight`` and a
+  ``HemisphereLight`` riding on the camera, so its views never print it;
+  user code that adds such lights will.
+
+``GL_INVALID_OPERATION ... Insufficient buffer size`` would be a real error (an
+index buffer drawn against a shorter position buffer); :meth:`MeshView.update`
+avoids it by giving every replaced array a new, higher ``version`` (see
+:func:`_set_array`), and the browser tests fail on it.
 """
 
 from __future__ import annotations
