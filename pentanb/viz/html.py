@@ -142,7 +142,7 @@ def _exportable(obj) -> W.Widget:
     raise TypeError(f"export_html() takes a pentanb.Mesh or a widget, not {type(obj).__name__}")
 
 
-def export_html(obj, path, *, offline: bool = True, title: str = "pentanb") -> Path:
+def export_html(obj, path, offline: bool = True, *, title: str = "pentanb") -> Path:
     """Write a stand-alone HTML page of a view, an explorer or a step-through.
 
     Parameters
