@@ -69,8 +69,11 @@ def skip_or_fail(message: str):
 
 
 def chromium_path() -> str | None:
-    for candidate in (os.environ.get("PENTANB_CHROMIUM"), "/usr/bin/chromium",
-                      shutil.which("chromium"), shutil.which("chromium-browser")):
+    """$PENTANB_CHROMIUM when set (only it), else Debian's /usr/bin/chromium."""
+    env = os.environ.get("PENTANB_CHROMIUM")
+    candidates = (env,) if env else ("/usr/bin/chromium", shutil.which("chromium"),
+                                     shutil.which("chromium-browser"))
+    for candidate in candidates:
         if candidate and os.path.isfile(candidate) and os.access(candidate, os.X_OK):
             return candidate
     return None
@@ -85,8 +88,10 @@ def require_browser():
                      "browser tests need it and Debian's chromium")
     path = chromium_path()
     if path is None:
-        skip_or_fail("no Chromium found at /usr/bin/chromium (apt-get install chromium, "
-                     "or set PENTANB_CHROMIUM); browser tests skipped")
+        skip_or_fail("no Chromium found at "
+                     f"{os.environ.get('PENTANB_CHROMIUM') or '/usr/bin/chromium'} "
+                     "(apt-get install chromium, or bash .ci/browser-setup.sh); "
+                     "browser tests skipped")
     return sync_playwright, path
 
 
