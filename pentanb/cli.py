@@ -18,41 +18,10 @@ from typing import Sequence
 from . import shapes
 from .subdivision import SCHEMES
 
-__all__ = ["main", "demo_table", "count_formula"]
+__all__ = ["main", "demo_table"]
 
 #: Meshes of the demo table.
 DEMO_SHAPES = ("tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron", "torus")
-
-
-class _Lin:
-    """A linear form in V, E, F, to print a scheme's count formula."""
-
-    def __init__(self, c):
-        self.c = tuple(c)
-
-    def __add__(self, o):
-        o = o if isinstance(o, _Lin) else _Lin((0, 0, 0))
-        return _Lin(a + b for a, b in zip(self.c, o.c))
-
-    __radd__ = __add__
-
-    def __mul__(self, k):
-        return _Lin(k * a for a in self.c)
-
-    __rmul__ = __mul__
-
-    def __str__(self):
-        parts = [name if k == 1 else f"{k}{name}" for k, name in zip(self.c, "VEF") if k]
-        return "+".join(parts) or "0"
-
-
-def count_formula(scheme: str) -> str:
-    """A registered scheme's count formula as text, e.g. ``"(V+2E+F, 5E, 2E)"``.
-
-    The scheme's ``counts(V, E, F)`` is evaluated on symbols (it is linear).
-    """
-    out = SCHEMES[scheme].counts(_Lin((1, 0, 0)), _Lin((0, 1, 0)), _Lin((0, 0, 1)))
-    return "(" + ", ".join(str(x) for x in out) + ")"
 
 
 def _hist(h: dict) -> str:
@@ -81,7 +50,7 @@ def demo_table(shape_names: Sequence[str] = DEMO_SHAPES,
         s = SCHEMES[key]
         conway = f", Conway {s.conway}" if s.conway else ""
         lines.append("")
-        lines.append(f"{key}: {s.label} ({s.paper}{conway}); (V, E, F) -> {count_formula(key)}")
+        lines.append(f"{key}: {s.label} ({s.paper}{conway}); (V, E, F) -> {s.formula}")
         lines.append(head)
         for name, m in meshes.items():
             r = s(m)

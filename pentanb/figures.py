@@ -32,7 +32,6 @@ from matplotlib.patches import Patch
 
 from . import shapes, topology
 from .shapes import hard_edged_cube  # re-exported: the cube of Figures 1, 8 and 11
-from .cli import count_formula
 from .classic import honeycomb, loop_remesh, preserve_hexagons, triangulate
 from .colors import EDGE_COLOR, face_color, face_label
 from .dual import dual
@@ -116,8 +115,8 @@ def _counts_claims(panel: str, before: Mesh, after: Mesh, scheme: str,
 
 def formula(scheme: str) -> str:
     """A scheme's count formula as text, e.g. ``"(V+2E+F, 5E, 2E)"`` (see
-    :func:`pentanb.cli.count_formula`)."""
-    return count_formula(scheme)
+    :attr:`pentanb.Scheme.formula`)."""
+    return SCHEMES[scheme].formula
 
 
 # ====================================================================== configurations

@@ -46,6 +46,9 @@ class Scheme:
         Keyword options and their defaults (e.g. ``{"scale": 0.75}``).
     family : str
         ``"pentagonal"`` for the paper's schemes, ``"comparison"`` otherwise.
+    exact_counts : bool
+        False when ``counts`` is only an upper bound (``triangulate``, which
+        leaves triangles alone).
     """
 
     name: str
@@ -56,9 +59,42 @@ class Scheme:
     counts: Callable[[int, int, int], Counts]
     options: Mapping[str, float] = field(default_factory=dict)
     family: str = "comparison"
+    exact_counts: bool = True
 
     def __call__(self, mesh: Mesh, **options) -> Mesh:
         return self.func(mesh, **options)
+
+    @property
+    def formula(self) -> str:
+        """The count formula as text, e.g. ``"(V+2E+F, 5E, 2E)"``.
+
+        ``counts`` is evaluated on symbols (it is linear in V, E and F).
+        """
+        out = self.counts(_Linear((1, 0, 0)), _Linear((0, 1, 0)), _Linear((0, 0, 1)))
+        text = "(" + ", ".join(str(x) for x in out) + ")"
+        return text if self.exact_counts else text + " at most (when no face is a triangle)"
+
+
+class _Linear:
+    """A linear form in V, E, F, to print a scheme's count formula."""
+
+    def __init__(self, c):
+        self.c = tuple(c)
+
+    def __add__(self, o):
+        o = o if isinstance(o, _Linear) else _Linear((0, 0, 0))
+        return _Linear(a + b for a, b in zip(self.c, o.c))
+
+    __radd__ = __add__
+
+    def __mul__(self, k):
+        return _Linear(k * a for a in self.c)
+
+    __rmul__ = __mul__
+
+    def __str__(self):
+        parts = [name if k == 1 else f"{k}{name}" for k, name in zip(self.c, "VEF") if k]
+        return "+".join(parts) or "0"
 
 
 _LIST = [
@@ -70,7 +106,7 @@ _LIST = [
            lambda V, E, F: (V + 3 * E, 6 * E, F + 2 * E), {"scale": 0.75},
            family="pentagonal"),
     Scheme("triangulate", classic.triangulate, "Simplest triangulation",
-           "Figure 2", None, lambda V, E, F: (V + F, 3 * E, 2 * E)),
+           "Figure 2", None, lambda V, E, F: (V + F, 3 * E, 2 * E), exact_counts=False),
     Scheme("loop_remesh", classic.loop_remesh, "Loop remeshing",
            "Section 3, Figure 3", "subdivide",
            lambda V, E, F: (V + E, 4 * E, F + 2 * E)),

@@ -309,3 +309,12 @@ def test_max_iterations_zero_and_cap():
     cube = shapes.cube()
     assert pentanb.max_iterations(cube, "pentagonalize", max_faces=10) == 0
     assert pentanb.max_iterations(cube, "triangulate", max_faces=10**9, cap=3) == 3
+
+
+def test_scheme_formula_text():
+    # the paper's counts: pentagonalization V+2E+F vertices, 5E edges, 2E faces (Sec 5.1)
+    assert SCHEMES["pentagonalize"].formula == "(V+2E+F, 5E, 2E)"
+    assert SCHEMES["preserve_pentagons"].formula == "(V+3E, 6E, 2E+F)"
+    assert SCHEMES["honeycomb"].formula == "(2E, 3E, V+F)"
+    # triangulate leaves triangles alone: its formula is a bound
+    assert SCHEMES["triangulate"].formula.endswith("at most (when no face is a triangle)")
