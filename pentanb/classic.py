@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from ._build import (check_mesh, check_scale, concat_faces, edge_points, fixed_size,
-                     halfedge_edge_point, output)
+                     output)
 from .mesh import Mesh
 
 __all__ = ["triangulate", "loop_remesh", "sqrt3_remesh", "vertex_insertion",

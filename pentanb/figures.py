@@ -31,7 +31,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 
 from . import shapes, topology
-from .shapes import hard_edged_cube  # re-exported: the cube of Figures 1, 8 and 11
+from .shapes import hard_edged_cube  # noqa: F401  (re-exported: the cube of Figs 1, 8, 11)
 from .classic import honeycomb, loop_remesh, preserve_hexagons, triangulate
 from .colors import EDGE_COLOR, face_color, face_label
 from .dual import dual

@@ -15,7 +15,7 @@ import pytest
 from helpers import (check_valid, corpus, darts, expected_counts, face_lists, is_isomorphic,
                      kis, valences)
 
-from pentanb import (Mesh, MeshError, corner_cutting, dual, honeycomb, loop_remesh,
+from pentanb import (corner_cutting, dual, honeycomb, loop_remesh,
                      pentagonalize, preserve_hexagons, preserve_pentagons, shapes,
                      sqrt3_remesh, triangulate, vertex_insertion)
 
@@ -76,23 +76,6 @@ def test_old_vertices_do_not_move(corpus_mesh, name):
 def test_face_plane_remeshings_keep_the_cube_volume(name):
     # every new point and face lies in a face plane of the cube
     assert CLASSIC[name](shapes.cube()).volume == pytest.approx(8.0, rel=1e-12)
-
-
-@pytest.mark.parametrize("name", list(CLASSIC))
-def test_classic_on_a_mesh_with_2_valent_vertices_is_valid_or_refused(name):
-    # the "dihedron": two triangles glued along their boundary (every vertex
-    # 2-valent, the two faces share all three edges).  The constructor takes
-    # it; an operator must then give a valid mesh or refuse.
-    v = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
-    try:
-        pillow = Mesh(v, [[0, 1, 2], [0, 2, 1]])
-    except MeshError:
-        return
-    try:
-        out = CLASSIC[name](pillow)
-    except (MeshError, ValueError):
-        return
-    check_valid(out)
 
 
 # ====================================================================== triangulate

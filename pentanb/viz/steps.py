@@ -15,9 +15,9 @@ from __future__ import annotations
 import numpy as np
 import ipywidgets as W
 
-from ..colors import face_color, face_rgb, _hex_to_rgb
+from ..colors import face_rgb, _hex_to_rgb
 from ..mesh import Mesh
-from .three import Drawing, MeshView, drawing, slider_stack, _histogram
+from .three import Drawing, MeshView, slider_stack, _histogram
 
 __all__ = ["stages", "StepThrough", "step_through"]
 
