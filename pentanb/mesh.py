@@ -539,8 +539,12 @@ def _as_vertices(vertices: ArrayLike) -> FloatArray:
 def _as_csr(faces) -> tuple[IntArray, IntArray]:
     if isinstance(faces, np.ndarray) and faces.ndim == 2:
         if faces.dtype.kind not in "iu":
-            if faces.size and not np.all(np.equal(np.mod(faces, 1), 0)):
-                raise MeshError("face indices must be integers")
+            whole = np.equal(np.mod(faces, 1), 0).all(axis=1) if faces.dtype.kind == "f" \
+                else np.zeros(len(faces), dtype=bool)
+            if not whole.all():
+                f = int(np.flatnonzero(~whole)[0])
+                raise MeshError(f"face {f} has non-integer vertex indices "
+                                f"{faces[f].tolist()}: face indices must be integers")
         arr = faces.astype(np.int64)
         m, k = arr.shape
         if m == 0:
@@ -549,6 +553,15 @@ def _as_csr(faces) -> tuple[IntArray, IntArray]:
     if isinstance(faces, np.ndarray) and faces.ndim != 1:
         raise MeshError(f"faces must be a list of index sequences or an (m, k) array, "
                         f"got shape {faces.shape}")
+    if not isinstance(faces, np.ndarray) and len(faces) and \
+            len({len(f) for f in faces}) == 1:
+        # a list of faces of one size: one array conversion instead of one per face
+        try:
+            arr = np.array(faces)
+        except (TypeError, ValueError):
+            arr = None
+        if arr is not None and arr.ndim == 2 and arr.dtype.kind in "iuf":
+            return _as_csr(arr)
     sizes = []
     flat = []
     for f, face in enumerate(faces):
