@@ -752,7 +752,7 @@ NB06 = [
     counts it builds), sorts them into conversion and preservation, and draws them
     all on a mesh of your choice.
     """),
-    setup("from pentanb.viz.mpl import add_face_legend, draw_mesh, panel_figure, style"),
+    setup("from pentanb.viz.mpl import plot_meshes"),
     CACHE,
     md("""
     ## Figure 2: the simplest triangulation
@@ -842,11 +842,8 @@ NB06 = [
         names = list(pentanb.SCHEMES)
         iterations.max = max(1, min(max_iterations(base, s, duals.value) for s in names))
         meshes = [build(shape.value, s, iterations.value, duals.value) for s in names]
-        with style():
-            fig, axes = panel_figure(len(names), 3, panel_size=2.6, legend_space=0.5)
-            for ax, s, mesh in zip(axes, names, meshes):
-                draw_mesh(ax, mesh, title=f"{pentanb.SCHEMES[s].label}\\n{mesh.n_faces:,} faces")
-            add_face_legend(fig, meshes)
+        fig = plot_meshes(meshes, [f"{pentanb.SCHEMES[s].label}\\n{mesh.n_faces:,} faces"
+                                   for s, mesh in zip(names, meshes)], ncols=3)
         with out:
             clear_output(wait=True)
             display(fig)

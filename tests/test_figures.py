@@ -338,3 +338,14 @@ def test_import_pentanb_does_not_import_matplotlib():
             "pentanb.cli.demo_table(['cube']); "
             "assert 'matplotlib' not in sys.modules, 'matplotlib imported'")
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_plot_meshes_one_panel_per_mesh_and_one_legend():
+    meshes = [pentanb.shapes.tetrahedron(), pentanb.shapes.cube(),
+              pentanb.pentagonalize(pentanb.shapes.cube())]
+    fig = vz.plot_meshes(meshes, ["a", "b", "c"], ncols=2)
+    assert [ax.get_title() for ax in fig.axes] == ["a", "b", "c"]
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert labels == ["triangles (3)", "quads (4)", "pentagons (5)"]
+    with pytest.raises(ValueError, match="3 meshes but 2 titles"):
+        vz.plot_meshes(meshes, ["a", "b"])

@@ -24,7 +24,7 @@ Examples
 from __future__ import annotations
 
 import contextlib
-from typing import Mapping
+from typing import Mapping, Sequence
 
 import matplotlib
 import numpy as np
@@ -37,7 +37,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from ..colors import EDGE_COLOR, face_color, face_label, face_rgb
 from ..mesh import Mesh
 
-__all__ = ["draw_mesh", "plot_mesh", "add_face_legend", "panel_figure", "label_panel",
+__all__ = ["draw_mesh", "plot_mesh", "plot_meshes", "add_face_legend", "panel_figure", "label_panel",
            "draw_flat", "draw_segments", "face_polygons", "shaded_colors", "view_direction",
            "fit_view",
            "save_figure", "style", "DPI", "ELEV", "AZIM"]
@@ -388,6 +388,34 @@ def plot_mesh(mesh: Mesh, *, wireframe: bool = True, shade: bool = True,
         draw_mesh(ax, mesh, wireframe=wireframe, shade=shade, title=title, **kwargs)
         if legend:
             add_face_legend(fig, mesh)
+    return fig
+
+
+def plot_meshes(meshes: Sequence[Mesh], titles: Sequence[str] | None = None, *,
+                ncols: int | None = None, panel_size: float = 2.6,
+                suptitle: str | None = None, **kwargs) -> Figure:
+    """Several meshes side by side, one panel each, with one face-size legend.
+
+    Parameters
+    ----------
+    meshes : sequence of Mesh
+    titles : sequence of str, optional
+        One title per panel.
+    ncols : int, optional
+        Panels per row (default: all in one row up to 3, as :func:`panel_figure`).
+    **kwargs
+        Go to :func:`draw_mesh` for every panel.
+    """
+    meshes = list(meshes)
+    titles = [None] * len(meshes) if titles is None else list(titles)
+    if len(titles) != len(meshes):
+        raise ValueError(f"{len(meshes)} meshes but {len(titles)} titles")
+    with style():
+        fig, axes = panel_figure(len(meshes), ncols, panel_size=panel_size,
+                                 suptitle=suptitle, legend_space=0.5)
+        for ax, mesh, title in zip(axes, meshes, titles):
+            draw_mesh(ax, mesh, title=title, **kwargs)
+        add_face_legend(fig, meshes)
     return fig
 
 
