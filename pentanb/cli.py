@@ -13,6 +13,7 @@ import argparse
 import os
 import sys
 import time
+from pathlib import Path
 from typing import Sequence
 
 from . import shapes
@@ -74,6 +75,12 @@ def _figures(args) -> int:
     except ValueError as exc:
         print(f"pentanb figures: {exc}", file=sys.stderr)
         return 2
+    try:
+        Path(args.out).mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        print(f"pentanb figures: cannot write into {args.out}: {exc.strerror or exc}",
+              file=sys.stderr)
+        return 2
     print(f"drawing {len(names)} figures into {args.out}/", file=sys.stderr, flush=True)
     t0 = time.perf_counter()
     figures.render_all(args.out, names, progress=_progress)
@@ -122,7 +129,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     Returns
     -------
     int
-        Exit status: 0, or 1 when a claim of the paper does not hold.
+        Exit status: 0; 1 when a claim of the paper does not hold; 2 for an
+        unknown figure or an output folder that cannot be written.
     """
     args = _parser().parse_args(argv)
     if args.command is None:

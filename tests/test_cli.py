@@ -86,3 +86,12 @@ def test_help_names_the_subcommands(capsys):
     assert exc.value.code == 0
     out = capsys.readouterr().out
     assert "demo" in out and "figures" in out
+
+
+def test_figures_into_a_path_that_is_a_file_is_refused(tmp_path, capsys):
+    target = tmp_path / "not-a-folder"
+    target.write_text("x")
+    assert main(["figures", "--out", str(target), "--only", "7"]) == 2
+    err = capsys.readouterr().err
+    assert f"cannot write into {target}" in err
+    assert target.read_text() == "x"

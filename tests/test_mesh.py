@@ -560,3 +560,16 @@ def test_faces_sharing_two_edges_are_refused():
     with pytest.raises(MeshError, match=r"faces 0 and 7 share more than one edge "
                                         r"\(\(2, 5\) and \(0, 3\)\)"):
         Mesh(t.vertices, faces)
+
+
+def test_face_means_of_scalar_and_vector_values():
+    c = shapes.cube()
+    # the mean of each face's vertex indices, computed by hand from the faces
+    by_hand = [sum(f) / len(f) for f in face_lists(c)]
+    assert np.allclose(c.face_means(np.arange(8.0)), by_hand)
+    assert np.allclose(c.face_means(c.vertices), c.face_centroids)
+    # a mesh of quads and pentagons (the reduceat path), against a per-face loop
+    from pentanb import preserve_pentagons
+    p = preserve_pentagons(c)
+    by_hand = [p.vertices[f, 0].mean() for f in face_lists(p)]
+    assert np.allclose(p.face_means(p.vertices[:, 0]), by_hand)
