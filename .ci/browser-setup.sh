@@ -29,7 +29,7 @@ apt_install() {
 
 if [ ! -x /usr/bin/chromium ]; then
     echo "browser-setup: installing Debian's chromium"
-    apt_install chromium
+    apt_install chromium fonts-liberation
 fi
 
 if [ -n "$PY" ] && ! "$PY" -c "import playwright" 2>/dev/null; then
