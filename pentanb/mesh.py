@@ -108,8 +108,11 @@ class Mesh:
         twin : (H,) int, optional
             The opposite half-edge of each half-edge, when the caller knows it.
         validate : bool
-            Check the mesh (as the constructor does).  Operators pass False:
-            their outputs are valid by construction.
+            Check the mesh (as the constructor does), on copies of the
+            arrays.  Operators pass False: their outputs are valid by
+            construction.  Without validation the arrays are used as they are
+            (read-only views, no copy): changing them afterwards changes the
+            mesh.
         """
         self = object.__new__(cls)
         if validate:
@@ -121,10 +124,11 @@ class Mesh:
             self._init(v, c, o)
             self._validate()
         else:
-            self._init(np.asarray(vertices, dtype=np.float64),
-                       np.asarray(corners, dtype=np.int64),
-                       np.asarray(offsets, dtype=np.int64),
-                       None if twin is None else np.asarray(twin, dtype=np.int64))
+            # read-only views: no copy, and the caller's own arrays keep their flags
+            self._init(np.asarray(vertices, dtype=np.float64).view(),
+                       np.asarray(corners, dtype=np.int64).view(),
+                       np.asarray(offsets, dtype=np.int64).view(),
+                       None if twin is None else np.asarray(twin, dtype=np.int64).view())
         return self
 
     def with_vertices(self, vertices: ArrayLike) -> "Mesh":
@@ -317,7 +321,11 @@ class Mesh:
 
     @cached_property
     def _rings(self) -> tuple[IntArray, IntArray]:
-        ring, off = _vertex_rings(self.rotation, self._corners, self.valences)
+        maker = self.__dict__.pop("_rings_maker", None)
+        if maker is not None:  # an operator that knows the rings, computed on demand
+            ring, off = maker()
+        else:
+            ring, off = _vertex_rings(self.rotation, self._corners, self.valences)
         return _readonly(ring), _readonly(off)
 
     def _set_rings(self, ring: np.ndarray, ring_offsets: np.ndarray) -> None:
@@ -518,7 +526,8 @@ class Mesh:
 
 _CONNECTIVITY_CACHE = ("faces", "face_sizes", "valences", "n_components", "halfedge_face",
                        "next", "prev", "head", "twin", "halfedge_edge", "edge_halfedge",
-                       "edges", "rotation", "_rings", "component_labels", "_dual_source")
+                       "edges", "rotation", "_rings", "component_labels", "_twin_maker",
+                       "_rings_maker", "_dual_source")
 
 
 # ---------------------------------------------------------------------- helpers

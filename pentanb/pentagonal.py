@@ -50,12 +50,15 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     t2 = n + halfedge_edge_point(mesh, 2, 1)
     centre = n + 2 * E + mesh.halfedge_face
     faces = np.stack([t1, t2, mesh.head, t1[nxt], centre], axis=1)
-    new_twin = np.stack([5 * twin, 5 * prv[twin] + 2, 5 * twin[nxt] + 1,
-                         5 * nxt + 4, 5 * prv + 3], axis=1)
     vertices = np.concatenate([mesh.vertices, edge_points(mesh, 2), mesh.face_centroids])
     corners, offsets = fixed_size(faces)
-    out = output(vertices, corners, offsets, new_twin.reshape(-1))
-    out._set_rings(*_pentagonalized_rings(mesh, t1 - n))
+    out = output(vertices, corners, offsets)
+    # the output's twins and vertex rings follow from the input's; written when
+    # first asked for (by the dual, say), never found by sorting
+    out.__dict__["_twin_maker"] = lambda: np.stack(
+        [5 * twin, 5 * prv[twin] + 2, 5 * twin[nxt] + 1, 5 * nxt + 4, 5 * prv + 3],
+        axis=1).reshape(-1)
+    out.__dict__["_rings_maker"] = lambda: _pentagonalized_rings(mesh, t1 - n)
     return out
 
 

@@ -573,3 +573,14 @@ def test_face_means_of_scalar_and_vector_values():
     p = preserve_pentagons(c)
     by_hand = [p.vertices[f, 0].mean() for f in face_lists(p)]
     assert np.allclose(p.face_means(p.vertices[:, 0]), by_hand)
+
+
+def test_from_csr_without_validation_leaves_the_callers_arrays_writable():
+    c = shapes.cube()
+    v = c.vertices.copy()
+    corners = c.corners.copy()
+    offsets = c.offsets.copy()
+    m = Mesh.from_csr(v, corners, offsets, validate=False)
+    assert v.flags.writeable and corners.flags.writeable and offsets.flags.writeable
+    assert not m.vertices.flags.writeable and not m.corners.flags.writeable
+    assert m.counts() == c.counts()
