@@ -53,8 +53,7 @@ def median_time(fn, setup, runs):
 
 def fresh(mesh: pb.Mesh):
     """A setup function: the mesh's arrays with nothing derived yet."""
-    return lambda: pb.Mesh.from_csr(mesh.vertices, mesh.corners, mesh.offsets,
-                                    validate=False)
+    return lambda: pb.Mesh.from_csr(mesh.vertices, mesh.corners, mesh.offsets, validate=False)
 
 
 def pipeline(mesh):
@@ -91,25 +90,36 @@ def main(argv=None) -> int:
     r = args.runs
     t = {
         "trimesh_subdivide": median_time(lambda m: m.subdivide(), fresh_trimesh, r),
-        "trimesh_subdivide_loop": median_time(lambda m: remesh.subdivide_loop(m.vertices, m.faces),
-                                              fresh_trimesh, r),
+        "trimesh_subdivide_loop": median_time(
+            lambda m: remesh.subdivide_loop(m.vertices, m.faces), fresh_trimesh, r
+        ),
         "pentagonalize": median_time(pb.pentagonalize, fresh(big), r),
         "pentagonalize_2duals": median_time(pipeline, fresh(big), r),
         "pentagonalize_2duals_20480": median_time(pipeline, fresh(small), max(r, 15)),
     }
-    per_scheme = {name: median_time(lambda m, s=s: pb.dual(pb.dual(s(m))), fresh(small), r)
-                  for name, s in pb.SCHEMES.items()}
+    per_scheme = {
+        name: median_time(lambda m, s=s: pb.dual(pb.dual(s(m))), fresh(small), r)
+        for name, s in pb.SCHEMES.items()
+    }
 
     ratios = {
         "pentagonalize / trimesh subdivide": (t["pentagonalize"] / t["trimesh_subdivide"], 2.0),
-        "pentagonalize+2 duals / trimesh subdivide_loop":
-            (t["pentagonalize_2duals"] / t["trimesh_subdivide_loop"], 0.5),
+        "pentagonalize+2 duals / trimesh subdivide_loop": (
+            t["pentagonalize_2duals"] / t["trimesh_subdivide_loop"],
+            0.5,
+        ),
     }
-    print(f"pentanb {pb.__version__}, trimesh {trimesh.__version__}, numpy {np.__version__}, "
-          f"Python {platform.python_version()}, {platform.machine()}; median of {r} runs")
+    print(
+        f"pentanb {pb.__version__}, trimesh {trimesh.__version__}, numpy {np.__version__}, "
+        f"Python {platform.python_version()}, {platform.machine()}; median of {r} runs"
+    )
     print("\n327,680-triangle sphere")
-    for key in ("trimesh_subdivide", "trimesh_subdivide_loop", "pentagonalize",
-                "pentagonalize_2duals"):
+    for key in (
+        "trimesh_subdivide",
+        "trimesh_subdivide_loop",
+        "pentagonalize",
+        "pentagonalize_2duals",
+    ):
         print(f"  {key:32s} {1000 * t[key]:9.1f} ms")
     print("\nratios (target)")
     missed = []
@@ -120,14 +130,23 @@ def main(argv=None) -> int:
     ms = 1000 * t["pentagonalize_2duals_20480"]
     ok = ms < 30.0
     missed += [] if ok else ["20,480-face pipeline"]
-    print(f"\n20,480-face pentagonalize + 2 duals: {ms:.1f} ms (< 30 ms) {'PASS' if ok else 'MISS'}")
+    print(
+        f"\n20,480-face pentagonalize + 2 duals: {ms:.1f} ms (< 30 ms) {'PASS' if ok else 'MISS'}"
+    )
     print("\nevery scheme + 2 duals on the 20,480-face sphere")
     for name, sec in per_scheme.items():
         print(f"  {name:20s} {1000 * sec:8.1f} ms")
     if args.json:
         with open(args.json, "w") as fh:
-            json.dump({"seconds": t, "per_scheme_20480": per_scheme,
-                       "ratios": {k: v for k, (v, _) in ratios.items()}}, fh, indent=2)
+            json.dump(
+                {
+                    "seconds": t,
+                    "per_scheme_20480": per_scheme,
+                    "ratios": {k: v for k, (v, _) in ratios.items()},
+                },
+                fh,
+                indent=2,
+            )
     if missed and args.check:
         print("missed: " + ", ".join(missed), file=sys.stderr)
         return 1

@@ -37,11 +37,20 @@ def code(text: str):
 # Cells shared by several notebooks
 # ---------------------------------------------------------------------------
 
+
 def setup(*imports: str):
     """The first code cell: the imports every notebook needs, then ``imports``."""
-    lines = ["%matplotlib inline", "import functools", "",
-             "import ipywidgets as widgets", "from IPython.display import clear_output, display",
-             "", "import pentanb", "from pentanb import figures", *imports]
+    lines = [
+        "%matplotlib inline",
+        "import functools",
+        "",
+        "import ipywidgets as widgets",
+        "from IPython.display import clear_output, display",
+        "",
+        "import pentanb",
+        "from pentanb import figures",
+        *imports,
+    ]
     return new_code_cell("\n".join(lines))
 
 
@@ -248,8 +257,7 @@ NB02 = [
     of duals. Then you can slide through the dual passes, and step through the
     scheme one stage at a time.
     """),
-    setup("from pentanb.convergence import radius_spread",
-          "from pentanb.viz.mpl import plot_mesh"),
+    setup("from pentanb.convergence import radius_spread", "from pentanb.viz.mpl import plot_mesh"),
     CACHE,
     md("""
     ## Figure 6: the scheme on one face
@@ -1012,9 +1020,12 @@ NB08 = [
     smoothing alone converge, and to what?), and subdivide level after level
     (remesh + two duals each time).
     """),
-    setup("from pentanb import convergence", "",
-          "from matplotlib.figure import Figure",
-          "from matplotlib.ticker import NullFormatter, ScalarFormatter"),
+    setup(
+        "from pentanb import convergence",
+        "",
+        "from matplotlib.figure import Figure",
+        "from matplotlib.ticker import NullFormatter, ScalarFormatter",
+    ),
     CACHE,
     md("""
     ## The study
@@ -1127,8 +1138,10 @@ NOTEBOOKS = {
 
 def notebook(name: str):
     """The notebook ``name`` (a key of :data:`NOTEBOOKS`), without outputs."""
-    nb = new_notebook(cells=[c.copy() for c in NOTEBOOKS[name]],
-                      metadata={"kernelspec": KERNELSPEC, "language_info": {"name": "python"}})
+    nb = new_notebook(
+        cells=[c.copy() for c in NOTEBOOKS[name]],
+        metadata={"kernelspec": KERNELSPEC, "language_info": {"name": "python"}},
+    )
     for i, cell in enumerate(nb.cells):
         cell["id"] = f"{name[:2]}-{i:02d}"
     nbformat.validate(nb)

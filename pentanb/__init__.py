@@ -14,8 +14,15 @@ load when a drawing function is first called.
 from __future__ import annotations
 
 from . import shapes, topology
-from .classic import (corner_cutting, honeycomb, loop_remesh, preserve_hexagons,
-                      sqrt3_remesh, triangulate, vertex_insertion)
+from .classic import (
+    corner_cutting,
+    honeycomb,
+    loop_remesh,
+    preserve_hexagons,
+    sqrt3_remesh,
+    triangulate,
+    vertex_insertion,
+)
 from .dual import dual, smooth
 from .io import read, write
 from .mesh import Mesh, MeshError
@@ -24,11 +31,35 @@ from .subdivision import SCHEMES, Scheme, max_iterations, predict_counts, subdiv
 
 __version__ = "0.1.0"
 
-__all__ = ["Mesh", "MeshError", "dual", "smooth", "pentagonalize", "preserve_pentagons",
-           "triangulate", "loop_remesh", "sqrt3_remesh", "vertex_insertion",
-           "corner_cutting", "preserve_hexagons", "honeycomb", "subdivide", "SCHEMES",
-           "Scheme", "predict_counts", "max_iterations", "read", "write", "shapes", "topology",
-           "view", "explore", "step_through", "export_html", "figures"]
+__all__ = [
+    "Mesh",
+    "MeshError",
+    "dual",
+    "smooth",
+    "pentagonalize",
+    "preserve_pentagons",
+    "triangulate",
+    "loop_remesh",
+    "sqrt3_remesh",
+    "vertex_insertion",
+    "corner_cutting",
+    "preserve_hexagons",
+    "honeycomb",
+    "subdivide",
+    "SCHEMES",
+    "Scheme",
+    "predict_counts",
+    "max_iterations",
+    "read",
+    "write",
+    "shapes",
+    "topology",
+    "view",
+    "explore",
+    "step_through",
+    "export_html",
+    "figures",
+]
 
 # drawing functions: imported on first use, so that `import pentanb` needs numpy only
 _LAZY = {
@@ -42,9 +73,11 @@ _LAZY = {
 def __getattr__(name):
     if name in _LAZY:
         import importlib
+
         module, attr = _LAZY[name]
         return getattr(importlib.import_module(module), attr)
     if name == "figures":
         import importlib
+
         return importlib.import_module("pentanb.figures")
     raise AttributeError(f"module 'pentanb' has no attribute {name!r}")

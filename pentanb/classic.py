@@ -23,12 +23,18 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._build import (check_mesh, check_scale, concat_faces, edge_points, fixed_size,
-                     output)
+from ._build import check_mesh, check_scale, concat_faces, edge_points, fixed_size, output
 from .mesh import Mesh
 
-__all__ = ["triangulate", "loop_remesh", "sqrt3_remesh", "vertex_insertion",
-           "corner_cutting", "preserve_hexagons", "honeycomb"]
+__all__ = [
+    "triangulate",
+    "loop_remesh",
+    "sqrt3_remesh",
+    "vertex_insertion",
+    "corner_cutting",
+    "preserve_hexagons",
+    "honeycomb",
+]
 
 
 def triangulate(mesh: Mesh) -> Mesh:

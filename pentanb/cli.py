@@ -13,8 +13,8 @@ import argparse
 import os
 import sys
 import time
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Sequence
 
 from . import shapes
 from .subdivision import SCHEMES
@@ -29,8 +29,9 @@ def _hist(h: dict) -> str:
     return " ".join(f"{k}:{v}" for k, v in h.items())
 
 
-def demo_table(shape_names: Sequence[str] = DEMO_SHAPES,
-               scheme_names: Sequence[str] | None = None) -> str:
+def demo_table(
+    shape_names: Sequence[str] = DEMO_SHAPES, scheme_names: Sequence[str] | None = None
+) -> str:
     """Every scheme once on every shape: a text table of V, E, F, face sizes, valences.
 
     Rows are grouped by scheme; each group starts with the scheme's label,
@@ -40,13 +41,17 @@ def demo_table(shape_names: Sequence[str] = DEMO_SHAPES,
     scheme_names = list(SCHEMES) if scheme_names is None else list(scheme_names)
     meshes = {name: shapes.get(name) for name in shape_names}
     width = max(len(n) for n in shape_names)
-    head = f"  {'shape':<{width}}  {'V':>6} {'E':>6} {'F':>6}  {'faces (sides:count)':<24} " \
-           "valences (valence:count)"
+    head = (
+        f"  {'shape':<{width}}  {'V':>6} {'E':>6} {'F':>6}  {'faces (sides:count)':<24} "
+        "valences (valence:count)"
+    )
     lines = [f"{'input':<{width + 2}}"]
     lines.append(head)
     for name, m in meshes.items():
-        lines.append(f"  {name:<{width}}  {m.n_vertices:>6} {m.n_edges:>6} {m.n_faces:>6}  "
-                     f"{_hist(m.face_size_histogram()):<24} {_hist(m.valence_histogram())}")
+        lines.append(
+            f"  {name:<{width}}  {m.n_vertices:>6} {m.n_edges:>6} {m.n_faces:>6}  "
+            f"{_hist(m.face_size_histogram()):<24} {_hist(m.valence_histogram())}"
+        )
     for key in scheme_names:
         s = SCHEMES[key]
         conway = f", Conway {s.conway}" if s.conway else ""
@@ -55,9 +60,11 @@ def demo_table(shape_names: Sequence[str] = DEMO_SHAPES,
         lines.append(head)
         for name, m in meshes.items():
             r = s(m)
-            lines.append(f"  {name:<{width}}  {r.n_vertices:>6} {r.n_edges:>6} "
-                         f"{r.n_faces:>6}  {_hist(r.face_size_histogram()):<24} "
-                         f"{_hist(r.valence_histogram())}")
+            lines.append(
+                f"  {name:<{width}}  {r.n_vertices:>6} {r.n_edges:>6} "
+                f"{r.n_faces:>6}  {_hist(r.face_size_histogram()):<24} "
+                f"{_hist(r.valence_histogram())}"
+            )
     return "\n".join(lines)
 
 
@@ -66,9 +73,10 @@ def _progress(done: int, total: int, message: str) -> None:
 
 
 def _figures(args) -> int:
-    if "matplotlib" not in sys.modules:   # no display needed (figures never use pyplot)
+    if "matplotlib" not in sys.modules:  # no display needed (figures never use pyplot)
         os.environ.setdefault("MPLBACKEND", "Agg")
     from . import figures
+
     names = args.only or list(figures.FIGURES)
     try:
         names = [figures._get(n).name for n in names]
@@ -78,8 +86,9 @@ def _figures(args) -> int:
     try:
         Path(args.out).mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        print(f"pentanb figures: cannot write into {args.out}: {exc.strerror or exc}",
-              file=sys.stderr)
+        print(
+            f"pentanb figures: cannot write into {args.out}: {exc.strerror or exc}", file=sys.stderr
+        )
         return 2
     print(f"drawing {len(names)} figures into {args.out}/", file=sys.stderr, flush=True)
     t0 = time.perf_counter()
@@ -103,17 +112,21 @@ def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="pentanb",
         description="Semiregular pentagonal subdivisions (Akleman et al.): the paper's "
-                    "schemes, figures and claims.")
+        "schemes, figures and claims.",
+    )
     sub = p.add_subparsers(dest="command")
-    d = sub.add_parser("demo", help="run every scheme on the Platonic solids and a torus "
-                                    "(the default)")
+    d = sub.add_parser(
+        "demo", help="run every scheme on the Platonic solids and a torus (the default)"
+    )
     d.set_defaults(func=_demo)
-    f = sub.add_parser("figures", help="redraw every figure of the paper and check its "
-                                       "claims")
+    f = sub.add_parser("figures", help="redraw every figure of the paper and check its claims")
     f.add_argument("--out", default="figures", help="folder for the PNGs (default: figures)")
-    f.add_argument("--only", nargs="+", metavar="NAME",
-                   help="only these figures (fig01 ... fig13, equation1, convergence, "
-                        "or numbers)")
+    f.add_argument(
+        "--only",
+        nargs="+",
+        metavar="NAME",
+        help="only these figures (fig01 ... fig13, equation1, convergence, or numbers)",
+    )
     f.set_defaults(func=_figures)
     return p
 

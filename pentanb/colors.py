@@ -33,8 +33,14 @@ def face_color(n: int) -> str:
 
 def face_label(n: int) -> str:
     """Legend label of a face with ``n`` sides ("pentagons", "9-gons", ...)."""
-    names = {3: "triangles", 4: "quads", 5: "pentagons", 6: "hexagons",
-             7: "heptagons", 8: "octagons"}
+    names = {
+        3: "triangles",
+        4: "quads",
+        5: "pentagons",
+        6: "hexagons",
+        7: "heptagons",
+        8: "octagons",
+    }
     return names.get(int(n), f"{int(n)}-gons")
 
 
@@ -59,4 +65,4 @@ def face_rgb(sizes) -> np.ndarray:
 
 def _hex_to_rgb(color: str) -> np.ndarray:
     color = color.lstrip("#")
-    return np.array([int(color[i:i + 2], 16) / 255.0 for i in (0, 2, 4)])
+    return np.array([int(color[i : i + 2], 16) / 255.0 for i in (0, 2, 4)])

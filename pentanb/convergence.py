@@ -30,10 +30,19 @@ from .dual import dual
 from .mesh import Mesh
 from .subdivision import get_scheme, subdivide
 
-__all__ = ["Convergence", "radius_spread", "normal_angles", "ray_distances", "edge_waviness",
-           "dual_convergence",
-           "subdivision_convergence", "study", "STUDY_MESHES", "STUDY_SCHEMES",
-           "ROUND_MESHES"]
+__all__ = [
+    "Convergence",
+    "radius_spread",
+    "normal_angles",
+    "ray_distances",
+    "edge_waviness",
+    "dual_convergence",
+    "subdivision_convergence",
+    "study",
+    "STUDY_MESHES",
+    "STUDY_SCHEMES",
+    "ROUND_MESHES",
+]
 
 
 @dataclass(frozen=True)
@@ -83,8 +92,9 @@ def normal_angles(mesh: Mesh) -> NDArray[np.float64]:
     return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
 
 
-def ray_distances(mesh: Mesh, origins: NDArray[np.float64],
-                  direction: NDArray[np.float64]) -> NDArray[np.float64]:
+def ray_distances(
+    mesh: Mesh, origins: NDArray[np.float64], direction: NDArray[np.float64]
+) -> NDArray[np.float64]:
     """Distance from every origin to the farthest crossing of the mesh along ``direction``.
 
     Every face is fanned from its centroid (one triangle per half-edge) and
@@ -112,7 +122,7 @@ def ray_distances(mesh: Mesh, origins: NDArray[np.float64],
     det = np.einsum("ij,ij->i", e1, pvec)
     good = np.abs(det) > 1e-14
     a, e1, e2, pvec, det = a[good], e1[good], e2[good], pvec[good], det[good]
-    tvec = o[:, None, :] - a[None]                                  # (k, T, 3)
+    tvec = o[:, None, :] - a[None]  # (k, T, 3)
     u = np.einsum("ktj,tj->kt", tvec, pvec) / det
     q = np.cross(tvec, e1[None])
     v = (q @ d) / det
@@ -122,8 +132,13 @@ def ray_distances(mesh: Mesh, origins: NDArray[np.float64],
     return np.where(hit.any(axis=1), np.where(hit, t, -np.inf).max(axis=1), np.nan)
 
 
-def edge_waviness(mesh: Mesh, start=(-0.5, 0.0, 0.0), end=(0.5, 0.0, 0.0),
-                  direction=(0.0, 1.0, 1.0), samples: int = 41) -> float:
+def edge_waviness(
+    mesh: Mesh,
+    start=(-0.5, 0.0, 0.0),
+    end=(0.5, 0.0, 0.0),
+    direction=(0.0, 1.0, 1.0),
+    samples: int = 41,
+) -> float:
     """How much a surface wobbles along a straight edge: the range of its distance
     from the edge's axis, measured along rays perpendicular to the edge.
 
@@ -162,8 +177,7 @@ def _name(scheme) -> str:
     return getattr(s, "name", getattr(s, "__name__", str(scheme)))
 
 
-def dual_convergence(mesh: Mesh, scheme="pentagonalize", pairs: int = 6,
-                     **options) -> Convergence:
+def dual_convergence(mesh: Mesh, scheme="pentagonalize", pairs: int = 6, **options) -> Convergence:
     """Remesh once, then apply ``pairs`` pairs of duals, measuring after each pair.
 
     Parameters
@@ -190,8 +204,9 @@ def dual_convergence(mesh: Mesh, scheme="pentagonalize", pairs: int = 6,
     return _measure(out, _name(scheme))
 
 
-def subdivision_convergence(mesh: Mesh, scheme="pentagonalize", levels: int = 4,
-                            duals: int = 2, **options) -> Convergence:
+def subdivision_convergence(
+    mesh: Mesh, scheme="pentagonalize", levels: int = 4, duals: int = 2, **options
+) -> Convergence:
     """Subdivide ``levels`` times (remesh + ``duals`` duals), measuring after each level.
 
     Returns

@@ -68,7 +68,6 @@ def _dual_connectivity(mesh: Mesh) -> Mesh:
     return out
 
 
-
 def smooth(mesh: Mesh, duals: int = 2) -> Mesh:
     """Apply :func:`dual` ``duals`` times (the paper's smoothing).
 

@@ -64,14 +64,12 @@ def write(mesh: Mesh, path: str | os.PathLike) -> None:
 
 def write_obj(mesh: Mesh, path) -> None:
     """Write an OBJ file (``v`` and ``f`` lines, 1-based indices)."""
-    write(mesh, Path(path).with_suffix(".obj") if Path(path).suffix.lower() != ".obj"
-          else path)
+    write(mesh, Path(path).with_suffix(".obj") if Path(path).suffix.lower() != ".obj" else path)
 
 
 def write_off(mesh: Mesh, path) -> None:
     """Write an OFF file."""
-    write(mesh, Path(path).with_suffix(".off") if Path(path).suffix.lower() != ".off"
-          else path)
+    write(mesh, Path(path).with_suffix(".off") if Path(path).suffix.lower() != ".off" else path)
 
 
 def _fmt_vertices(v: np.ndarray, prefix: str) -> list[str]:
@@ -88,14 +86,17 @@ def _face_lines(mesh: Mesh, prefix: str, base: int, with_size: bool) -> list[str
 
 def _obj_text(mesh: Mesh) -> str:
     head = [f"# pentanb: {mesh.n_vertices} vertices, {mesh.n_faces} faces"]
-    return "\n".join(head + _fmt_vertices(mesh.vertices, "v ")
-                     + _face_lines(mesh, "f ", 1, False)) + "\n"
+    return (
+        "\n".join(head + _fmt_vertices(mesh.vertices, "v ") + _face_lines(mesh, "f ", 1, False))
+        + "\n"
+    )
 
 
 def _off_text(mesh: Mesh) -> str:
     head = ["OFF", f"{mesh.n_vertices} {mesh.n_faces} {mesh.n_edges}"]
-    return "\n".join(head + _fmt_vertices(mesh.vertices, "")
-                     + _face_lines(mesh, "", 0, True)) + "\n"
+    return (
+        "\n".join(head + _fmt_vertices(mesh.vertices, "") + _face_lines(mesh, "", 0, True)) + "\n"
+    )
 
 
 def _mesh_or_error(path, vertices, faces) -> Mesh:
@@ -118,29 +119,30 @@ def read_obj(path) -> Mesh:
                 continue
             if parts[0] == "v":
                 if len(parts) < 4:
-                    raise MeshError(f"{path}:{lineno}: a 'v' line needs 3 coordinates: "
-                                    f"{line.strip()!r}")
+                    raise MeshError(
+                        f"{path}:{lineno}: a 'v' line needs 3 coordinates: {line.strip()!r}"
+                    )
                 try:
                     vertices.append([float(x) for x in parts[1:4]])
                 except ValueError:
-                    raise MeshError(f"{path}:{lineno}: bad number in {line.strip()!r}") \
-                        from None
+                    raise MeshError(f"{path}:{lineno}: bad number in {line.strip()!r}") from None
             elif parts[0] == "f":
                 face = []
                 for token in parts[1:]:
                     try:
                         i = int(token.split("/", 1)[0])
                     except ValueError:
-                        raise MeshError(f"{path}:{lineno}: bad face index {token!r}") \
-                            from None
+                        raise MeshError(f"{path}:{lineno}: bad face index {token!r}") from None
                     if i > 0:
                         i -= 1  # may refer to a vertex defined further down
                     elif i < 0:
                         i += len(vertices)
                         if i < 0:
-                            raise MeshError(f"{path}:{lineno}: face index {token} out of range "
-                                            "(a relative index before the first vertex; "
-                                            f"{len(vertices)} vertices so far)")
+                            raise MeshError(
+                                f"{path}:{lineno}: face index {token} out of range "
+                                "(a relative index before the first vertex; "
+                                f"{len(vertices)} vertices so far)"
+                            )
                     else:
                         raise MeshError(f"{path}:{lineno}: face index 0 (OBJ counts from 1)")
                     face.append(i)
@@ -151,8 +153,10 @@ def read_obj(path) -> Mesh:
     for face, lineno in zip(faces, face_lines):
         bad = [i for i in face if i >= len(vertices)]
         if bad:
-            raise MeshError(f"{path}:{lineno}: face index {bad[0] + 1} out of range "
-                            f"({len(vertices)} vertices in the file)")
+            raise MeshError(
+                f"{path}:{lineno}: face index {bad[0] + 1} out of range "
+                f"({len(vertices)} vertices in the file)"
+            )
     return _mesh_or_error(path, vertices, faces)
 
 
@@ -177,8 +181,10 @@ def read_off(path) -> Mesh:
     except (ValueError, IndexError):
         raise MeshError(f"{path}:{head_line}: bad counts line {' '.join(head)!r}") from None
     if len(rest) != nv + nf:
-        raise MeshError(f"{path}: header says {nv} vertices and {nf} faces "
-                        f"({nv + nf} lines) but the file has {len(rest)} data lines")
+        raise MeshError(
+            f"{path}: header says {nv} vertices and {nf} faces "
+            f"({nv + nf} lines) but the file has {len(rest)} data lines"
+        )
     vertices = []
     for lineno, parts in rest[:nv]:
         try:
@@ -191,14 +197,13 @@ def read_off(path) -> Mesh:
     for lineno, parts in rest[nv:]:
         try:
             k = int(parts[0])
-            idx = [int(x) for x in parts[1:1 + k]]
+            idx = [int(x) for x in parts[1 : 1 + k]]
         except (ValueError, IndexError):
             raise MeshError(f"{path}:{lineno}: bad face line {' '.join(parts)!r}") from None
         if len(idx) != k:
             raise MeshError(f"{path}:{lineno}: face says {k} vertices but lists {len(idx)}")
         bad = [i for i in idx if not 0 <= i < nv]
         if bad:
-            raise MeshError(f"{path}:{lineno}: face index {bad[0]} out of range "
-                            f"({nv} vertices)")
+            raise MeshError(f"{path}:{lineno}: face index {bad[0]} out of range ({nv} vertices)")
         faces.append(idx)
     return _mesh_or_error(path, vertices, faces)

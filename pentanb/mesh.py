@@ -14,8 +14,8 @@ immutable, so nothing needs invalidating.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from functools import cached_property
-from typing import Sequence
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -94,8 +94,15 @@ class Mesh:
             self.__dict__["twin"] = _readonly(twin)
 
     @classmethod
-    def from_csr(cls, vertices: ArrayLike, corners: ArrayLike, offsets: ArrayLike,
-                 *, twin: ArrayLike | None = None, validate: bool = True) -> "Mesh":
+    def from_csr(
+        cls,
+        vertices: ArrayLike,
+        corners: ArrayLike,
+        offsets: ArrayLike,
+        *,
+        twin: ArrayLike | None = None,
+        validate: bool = True,
+    ) -> Mesh:
         """Build a mesh from CSR face arrays.
 
         Parameters
@@ -125,20 +132,22 @@ class Mesh:
             self._validate()
         else:
             # read-only views: no copy, and the caller's own arrays keep their flags
-            self._init(np.asarray(vertices, dtype=np.float64).view(),
-                       np.asarray(corners, dtype=np.int64).view(),
-                       np.asarray(offsets, dtype=np.int64).view(),
-                       None if twin is None else np.asarray(twin, dtype=np.int64).view())
+            self._init(
+                np.asarray(vertices, dtype=np.float64).view(),
+                np.asarray(corners, dtype=np.int64).view(),
+                np.asarray(offsets, dtype=np.int64).view(),
+                None if twin is None else np.asarray(twin, dtype=np.int64).view(),
+            )
         return self
 
-    def with_vertices(self, vertices: ArrayLike) -> "Mesh":
+    def with_vertices(self, vertices: ArrayLike) -> Mesh:
         """The same connectivity with other vertex positions (``(n, 3)`` float)."""
         v = _as_vertices(vertices)
         if v.shape != self._vertices.shape:
             raise MeshError(f"expected {self._vertices.shape} vertices, got {v.shape}")
         return self._connectivity()._placed(v)
 
-    def _connectivity(self) -> "Mesh":
+    def _connectivity(self) -> Mesh:
         """A vertex-less shell sharing this mesh's faces and cached connectivity."""
         shell = object.__new__(Mesh)
         shell._vertices = None
@@ -149,7 +158,7 @@ class Mesh:
                 shell.__dict__[key] = self.__dict__[key]
         return shell
 
-    def _placed(self, vertices: np.ndarray) -> "Mesh":
+    def _placed(self, vertices: np.ndarray) -> Mesh:
         """This mesh's connectivity (and its caches) with the given positions."""
         out = object.__new__(Mesh)
         out._init(vertices, self._corners, self._offsets)
@@ -240,15 +249,19 @@ class Mesh:
 
     def counts(self) -> dict:
         """V, E, F, the face-size and valence histograms, chi and genus."""
-        return {"V": self.n_vertices, "E": self.n_edges, "F": self.n_faces,
-                "faces": self.face_size_histogram(),
-                "valences": self.valence_histogram(),
-                "chi": self.euler_characteristic, "genus": self.genus}
+        return {
+            "V": self.n_vertices,
+            "E": self.n_edges,
+            "F": self.n_faces,
+            "faces": self.face_size_histogram(),
+            "valences": self.valence_histogram(),
+            "chi": self.euler_characteristic,
+            "genus": self.genus,
+        }
 
     def __repr__(self) -> str:
         hist = ", ".join(f"{n}:{c}" for n, c in self.face_size_histogram().items())
-        return (f"Mesh(V={self.n_vertices}, E={self.n_edges}, F={self.n_faces}, "
-                f"faces={{{hist}}})")
+        return f"Mesh(V={self.n_vertices}, E={self.n_edges}, F={self.n_faces}, faces={{{hist}}})"
 
     # ------------------------------------------------------------------ half-edges
     @cached_property
@@ -366,14 +379,19 @@ class Mesh:
         cols = values.reshape(values.shape[0], -1).T
         m = self.n_faces
         k = int(self._offsets[1]) if m else 0
-        uniform = k and self._corners.size == k * m and \
-            self._offsets[-2] == k * (m - 1) and not np.any(np.diff(self._offsets) - k)
+        uniform = (
+            k
+            and self._corners.size == k * m
+            and self._offsets[-2] == k * (m - 1)
+            and not np.any(np.diff(self._offsets) - k)
+        )
         out = np.empty((m, cols.shape[0]))
         for i, col in enumerate(cols):  # one coordinate at a time: 1-D takes are fastest
             g = np.ascontiguousarray(col).take(self._corners)
-            out[:, i] = g.reshape(m, k).sum(axis=1) if uniform else \
-                np.add.reduceat(g, self._offsets[:-1])
-        out /= (k if uniform else self.face_sizes[:, None])
+            out[:, i] = (
+                g.reshape(m, k).sum(axis=1) if uniform else np.add.reduceat(g, self._offsets[:-1])
+            )
+        out /= k if uniform else self.face_sizes[:, None]
         return out.reshape((m,) + values.shape[1:])
 
     @cached_property
@@ -419,8 +437,10 @@ class Mesh:
         # k-th triangle of a face: corners 0, k+1, k+2
         first = np.cumsum(sizes - 2) - (sizes - 2)
         k = np.arange(tri_face.size, dtype=np.int64) - first[tri_face]
-        tris = np.stack([self._corners[start], self._corners[start + k + 1],
-                         self._corners[start + k + 2]], axis=1)
+        tris = np.stack(
+            [self._corners[start], self._corners[start + k + 1], self._corners[start + k + 2]],
+            axis=1,
+        )
         return tris, tri_face
 
     def component_labels_of_faces(self) -> IntArray:
@@ -458,13 +478,16 @@ class Mesh:
         small = np.flatnonzero(sizes < 3)
         if small.size:
             f = int(small[0])
-            raise MeshError(f"face {f} has {sizes[f]} vertices {self.faces[f].tolist()}; "
-                            "a face needs at least 3 distinct vertices")
+            raise MeshError(
+                f"face {f} has {sizes[f]} vertices {self.faces[f].tolist()}; "
+                "a face needs at least 3 distinct vertices"
+            )
         bad = np.flatnonzero((c < 0) | (c >= n))
         if bad.size:
             f = int(np.searchsorted(self._offsets, bad[0], side="right") - 1)
-            raise MeshError(f"face {f} uses vertex index {int(c[bad[0]])}, "
-                            f"out of range for {n} vertices")
+            raise MeshError(
+                f"face {f} uses vertex index {int(c[bad[0]])}, out of range for {n} vertices"
+            )
         # repeated vertex inside a face
         fid = self.halfedge_face
         key = fid * n + c
@@ -474,9 +497,11 @@ class Mesh:
             h = int(order[dup[0]])
             f = int(fid[h])
             distinct = np.unique(self.faces[f]).size
-            raise MeshError(f"face {f} {self.faces[f].tolist()} repeats vertex {int(c[h])} "
-                            f"({distinct} distinct vertices); a face needs at least 3 "
-                            "distinct vertices and may use each vertex once")
+            raise MeshError(
+                f"face {f} {self.faces[f].tolist()} repeats vertex {int(c[h])} "
+                f"({distinct} distinct vertices); a face needs at least 3 "
+                "distinct vertices and may use each vertex once"
+            )
         if n == 0:
             raise MeshError("the mesh has no vertices")
         head = self.head
@@ -486,23 +511,30 @@ class Mesh:
             u, w = int(c[h]), int(head[h])
             if kind == "duplicate":
                 faces = np.flatnonzero((c == u) & (head == w))
-                raise MeshError(f"directed edge ({u}, {w}) is used by faces "
-                                f"{fid[faces].tolist()}: inconsistent orientation or "
-                                "a non-manifold edge")
-            raise MeshError(f"edge ({u}, {w}) of face {int(fid[h])} has only one side "
-                            "(a boundary): the mesh must be closed")
+                raise MeshError(
+                    f"directed edge ({u}, {w}) is used by faces "
+                    f"{fid[faces].tolist()}: inconsistent orientation or "
+                    "a non-manifold edge"
+                )
+            raise MeshError(
+                f"edge ({u}, {w}) of face {int(fid[h])} has only one side "
+                "(a boundary): the mesh must be closed"
+            )
         self.__dict__["twin"] = _readonly(twin)
         unused = np.flatnonzero(self.valences == 0)
         if unused.size:
-            raise MeshError(f"vertex {int(unused[0])} is not used by any face "
-                            f"({unused.size} unused vertices)")
+            raise MeshError(
+                f"vertex {int(unused[0])} is not used by any face ({unused.size} unused vertices)"
+            )
         few = np.flatnonzero(self.valences < 3)
         if few.size:
             v = int(few[0])
-            raise MeshError(f"vertex {v} has only {int(self.valences[v])} edges; every vertex "
-                            "needs at least 3 (Section 4 rules out 1- and 2-valent vertices, "
-                            "and the dual of such a vertex would be a face of fewer than "
-                            "3 sides)")
+            raise MeshError(
+                f"vertex {v} has only {int(self.valences[v])} edges; every vertex "
+                "needs at least 3 (Section 4 rules out 1- and 2-valent vertices, "
+                "and the dual of such a vertex would be a face of fewer than "
+                "3 sides)"
+            )
         eh = self.edge_halfedge
         f1, f2 = fid[eh], fid[twin[eh]]
         # (a face on both sides of an edge would repeat a vertex: refused above)
@@ -513,21 +545,38 @@ class Mesh:
         if dup.size:
             a, b = order[dup[0]], order[dup[0] + 1]
             e1, e2 = (tuple(int(x) for x in self.edges[i]) for i in (a, b))
-            raise MeshError(f"faces {int(min(f1[a], f2[a]))} and {int(max(f1[a], f2[a]))} "
-                            f"share more than one edge ({e1} and {e2}); the dual would "
-                            "have a double edge")
+            raise MeshError(
+                f"faces {int(min(f1[a], f2[a]))} and {int(max(f1[a], f2[a]))} "
+                f"share more than one edge ({e1} and {e2}); the dual would "
+                "have a double edge"
+            )
         ring, _ = self._rings
         if not np.array_equal(np.sort(ring), np.arange(c.size)):
             # a vertex whose rotation orbit is shorter than its valence
             bad_v = _multi_fan_vertex(self.rotation, c, self.valences)
-            raise MeshError(f"vertex {bad_v} is non-manifold: its faces form more than one "
-                            "fan")
+            raise MeshError(f"vertex {bad_v} is non-manifold: its faces form more than one fan")
 
 
-_CONNECTIVITY_CACHE = ("faces", "face_sizes", "valences", "n_components", "halfedge_face",
-                       "next", "prev", "head", "twin", "halfedge_edge", "edge_halfedge",
-                       "edges", "rotation", "_rings", "component_labels", "_twin_maker",
-                       "_rings_maker", "_dual_source")
+_CONNECTIVITY_CACHE = (
+    "faces",
+    "face_sizes",
+    "valences",
+    "n_components",
+    "halfedge_face",
+    "next",
+    "prev",
+    "head",
+    "twin",
+    "halfedge_edge",
+    "edge_halfedge",
+    "edges",
+    "rotation",
+    "_rings",
+    "component_labels",
+    "_twin_maker",
+    "_rings_maker",
+    "_dual_source",
+)
 
 
 # ---------------------------------------------------------------------- helpers
@@ -540,30 +589,34 @@ def _as_vertices(vertices: ArrayLike) -> FloatArray:
         raise MeshError(f"vertices must be an (n, 3) array, got shape {v.shape}")
     bad = np.flatnonzero(~np.isfinite(v).all(axis=1))
     if bad.size:
-        raise MeshError(f"vertex {int(bad[0])} has a non-finite coordinate "
-                        f"{v[bad[0]].tolist()}")
+        raise MeshError(f"vertex {int(bad[0])} has a non-finite coordinate {v[bad[0]].tolist()}")
     return v
 
 
 def _as_csr(faces) -> tuple[IntArray, IntArray]:
     if isinstance(faces, np.ndarray) and faces.ndim == 2:
         if faces.dtype.kind not in "iu":
-            whole = np.equal(np.mod(faces, 1), 0).all(axis=1) if faces.dtype.kind == "f" \
+            whole = (
+                np.equal(np.mod(faces, 1), 0).all(axis=1)
+                if faces.dtype.kind == "f"
                 else np.zeros(len(faces), dtype=bool)
+            )
             if not whole.all():
                 f = int(np.flatnonzero(~whole)[0])
-                raise MeshError(f"face {f} has non-integer vertex indices "
-                                f"{faces[f].tolist()}: face indices must be integers")
+                raise MeshError(
+                    f"face {f} has non-integer vertex indices "
+                    f"{faces[f].tolist()}: face indices must be integers"
+                )
         arr = faces.astype(np.int64)
         m, k = arr.shape
         if m == 0:
             raise MeshError("the mesh has no faces")
         return arr.ravel().copy(), np.arange(0, (m + 1) * k, k, dtype=np.int64)[: m + 1]
     if isinstance(faces, np.ndarray) and faces.ndim != 1:
-        raise MeshError(f"faces must be a list of index sequences or an (m, k) array, "
-                        f"got shape {faces.shape}")
-    if not isinstance(faces, np.ndarray) and len(faces) and \
-            len({len(f) for f in faces}) == 1:
+        raise MeshError(
+            f"faces must be a list of index sequences or an (m, k) array, got shape {faces.shape}"
+        )
+    if not isinstance(faces, np.ndarray) and len(faces) and len({len(f) for f in faces}) == 1:
         # a list of faces of one size: one array conversion instead of one per face
         try:
             arr = np.array(faces)

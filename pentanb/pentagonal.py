@@ -9,8 +9,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._build import (check_mesh, check_scale, concat_faces, edge_points, fixed_size,
-                     halfedge_edge_point, output)
+from ._build import (
+    check_mesh,
+    check_scale,
+    concat_faces,
+    edge_points,
+    fixed_size,
+    halfedge_edge_point,
+    output,
+)
 from .mesh import Mesh
 
 __all__ = ["pentagonalize", "preserve_pentagons"]
@@ -56,8 +63,8 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     # the output's twins and vertex rings follow from the input's; written when
     # first asked for (by the dual, say), never found by sorting
     out.__dict__["_twin_maker"] = lambda: np.stack(
-        [5 * twin, 5 * prv[twin] + 2, 5 * twin[nxt] + 1, 5 * nxt + 4, 5 * prv + 3],
-        axis=1).reshape(-1)
+        [5 * twin, 5 * prv[twin] + 2, 5 * twin[nxt] + 1, 5 * nxt + 4, 5 * prv + 3], axis=1
+    ).reshape(-1)
     out.__dict__["_rings_maker"] = lambda: _pentagonalized_rings(mesh, t1 - n)
     return out
 
@@ -77,10 +84,10 @@ def _pentagonalized_rings(mesh: Mesh, t1: np.ndarray):
     h_of_point[t1] = np.arange(H, dtype=np.int64)
     h = h_of_point
     trisection = np.stack([5 * h, 5 * prv[h] + 3, 5 * twin[h] + 1], axis=1).reshape(-1)
-    rings = np.concatenate([5 * prv[ring] + 2, trisection,
-                            5 * np.arange(H, dtype=np.int64) + 4])
-    offsets = np.concatenate([ring_off, ring_off[-1] + 3 * np.arange(1, H + 1),
-                              ring_off[-1] + 3 * H + mesh.offsets[1:]])
+    rings = np.concatenate([5 * prv[ring] + 2, trisection, 5 * np.arange(H, dtype=np.int64) + 4])
+    offsets = np.concatenate(
+        [ring_off, ring_off[-1] + 3 * np.arange(1, H + 1), ring_off[-1] + 3 * H + mesh.offsets[1:]]
+    )
     return rings, offsets
 
 

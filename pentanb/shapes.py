@@ -8,18 +8,32 @@ the command line and the tests; :func:`get` builds one by name.
 from __future__ import annotations
 
 import itertools
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
 from .dual import dual
 from .mesh import Mesh, MeshError
 
-__all__ = ["tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron", "torus",
-           "hexagonal_torus", "genus_surface", "double_torus", "hexagonal_surface",
-           "voxels", "hard_edged_cube", "animal", "SHAPES", "get"]
+__all__ = [
+    "tetrahedron",
+    "cube",
+    "octahedron",
+    "dodecahedron",
+    "icosahedron",
+    "torus",
+    "hexagonal_torus",
+    "genus_surface",
+    "double_torus",
+    "hexagonal_surface",
+    "voxels",
+    "hard_edged_cube",
+    "animal",
+    "SHAPES",
+    "get",
+]
 
-PHI = (1.0 + 5.0 ** 0.5) / 2.0
+PHI = (1.0 + 5.0**0.5) / 2.0
 
 
 def _outward(vertices: np.ndarray, faces: np.ndarray) -> Mesh:
@@ -41,16 +55,18 @@ def tetrahedron() -> Mesh:
 def cube() -> Mesh:
     """The cube [-1, 1]^3 (6 quads); vertex ``4x + 2y + z`` has coordinates (x, y, z) in {-1, 1}."""
     v = np.array(list(itertools.product([-1.0, 1.0], repeat=3)))
-    faces = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4],
-             [1, 5, 7, 3]]
+    faces = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]
     return _outward(v, faces)
 
 
 def octahedron() -> Mesh:
     """Regular octahedron with vertices at +-1 on the axes (8 triangles)."""
     v = np.concatenate([np.eye(3), -np.eye(3)])
-    faces = [[a + 3 * sa, b + 3 * sb, c + 3 * sc] for sa, sb, sc in
-             itertools.product([0, 1], repeat=3) for a, b, c in [(0, 1, 2)]]
+    faces = [
+        [a + 3 * sa, b + 3 * sb, c + 3 * sc]
+        for sa, sb, sc in itertools.product([0, 1], repeat=3)
+        for a, b, c in [(0, 1, 2)]
+    ]
     return _outward(v, faces)
 
 
@@ -60,8 +76,11 @@ def icosahedron() -> Mesh:
     v = np.array([np.roll(p, k) for k in range(3) for p in base])
     d = np.linalg.norm(v[:, None] - v[None], axis=2)
     near = np.isclose(d, 2.0)
-    faces = [t for t in itertools.combinations(range(12), 3)
-             if near[t[0], t[1]] and near[t[1], t[2]] and near[t[0], t[2]]]
+    faces = [
+        t
+        for t in itertools.combinations(range(12), 3)
+        if near[t[0], t[1]] and near[t[1], t[2]] and near[t[0], t[2]]
+    ]
     return _outward(v, faces)
 
 
@@ -70,8 +89,7 @@ def dodecahedron() -> Mesh:
     return dual(icosahedron())
 
 
-def torus(rings: int = 12, sides: int = 8, radius: float = 1.0,
-          tube: float = 0.4) -> Mesh:
+def torus(rings: int = 12, sides: int = 8, radius: float = 1.0, tube: float = 0.4) -> Mesh:
     """A torus as a ``rings x sides`` grid of quads (genus 1).
 
     Parameters
@@ -95,13 +113,15 @@ def torus(rings: int = 12, sides: int = 8, radius: float = 1.0,
     i, j = np.meshgrid(np.arange(rings), np.arange(sides), indexing="ij")
     v = _torus_points((i - 0.5) / rings, (j - 0.5) / sides, radius, tube)
     idx = lambda a, b: (a % rings) * sides + (b % sides)  # noqa: E731
-    quads = np.stack([idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)],
-                     axis=-1).reshape(-1, 4)
+    quads = np.stack([idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)], axis=-1).reshape(
+        -1, 4
+    )
     return Mesh(v.reshape(-1, 3), quads)
 
 
-def hexagonal_torus(rings: int = 12, sides: int = 6, radius: float = 1.0,
-                    tube: float = 0.4) -> Mesh:
+def hexagonal_torus(
+    rings: int = 12, sides: int = 6, radius: float = 1.0, tube: float = 0.4
+) -> Mesh:
     """A torus of hexagons only, every vertex 3-valent: a (6, 3) mesh (Figure 4A).
 
     The dual of a torus grid whose quads are cut by parallel diagonals (every
@@ -120,8 +140,9 @@ def hexagonal_torus(rings: int = 12, sides: int = 6, radius: float = 1.0,
     i, j = np.meshgrid(np.arange(rings), np.arange(sides), indexing="ij")
     idx = lambda a, b: (a % rings) * sides + (b % sides)  # noqa: E731
     a, b, c, d = idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)
-    tris = np.concatenate([np.stack([a, b, c], -1).reshape(-1, 3),
-                           np.stack([a, c, d], -1).reshape(-1, 3)])
+    tris = np.concatenate(
+        [np.stack([a, b, c], -1).reshape(-1, 3), np.stack([a, c, d], -1).reshape(-1, 3)]
+    )
     grid = _torus_points(i / rings, j / sides, radius, tube).reshape(-1, 3)
     hexes = dual(Mesh(grid, tris))
     # triangle centres in grid units: (i + 2/3, j + 1/3) and (i + 1/3, j + 2/3)
@@ -143,8 +164,7 @@ def _grid_size(rings, sides):
     return int(rings), int(sides)
 
 
-def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8,
-                  sides: int = 6) -> Mesh:
+def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8, sides: int = 6) -> Mesh:
     """A chain of ``genus`` tori joined where they touch (Figure 4B style).
 
     Each torus loses its face furthest along +x and, in the middle of the
@@ -176,8 +196,9 @@ def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8,
     v = base.vertices.copy()
     fr, fl = faces[right], faces[left]
     if np.intersect1d(fr, fl).size:
-        raise MeshError(f"faces {right} and {left} of the base share a vertex; "
-                        "cannot chain copies along them")
+        raise MeshError(
+            f"faces {right} and {left} of the base share a vertex; cannot chain copies along them"
+        )
     a = float(np.abs(np.concatenate([v[fr, 0], v[fl, 0]])).mean())
     v[fr, 0] = a
     v[fl, 0] = -a
@@ -240,9 +261,11 @@ def voxels(occupied) -> Mesh:
     shape = np.array(pad.shape) + 1
     quads = []
     # square of the face at +axis, counter-clockwise seen from outside
-    unit = {0: [(0, 0, 0), (0, 1, 0), (0, 1, 1), (0, 0, 1)],
-            1: [(0, 0, 0), (0, 0, 1), (1, 0, 1), (1, 0, 0)],
-            2: [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]}
+    unit = {
+        0: [(0, 0, 0), (0, 1, 0), (0, 1, 1), (0, 0, 1)],
+        1: [(0, 0, 0), (0, 0, 1), (1, 0, 1), (1, 0, 0)],
+        2: [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)],
+    }
     for axis in range(3):
         for sign in (1, -1):
             nb = np.roll(pad, -sign, axis=axis)
@@ -285,15 +308,15 @@ def animal() -> Mesh:
     long ears and a tail (a few hundred quads), scaled into [-1, 1]^3.
     """
     occ = np.zeros((11, 5, 10), dtype=bool)
-    occ[2:7, 1:4, 2:5] = True                 # body
+    occ[2:7, 1:4, 2:5] = True  # body
     for x in (2, 6):
         for y in (1, 3):
-            occ[x, y, 0:2] = True             # legs
-    occ[7:9, 1:4, 4:7] = True                 # head
-    occ[9, 2, 5] = True                       # snout
-    occ[7, 1, 7:10] = True                    # ears
+            occ[x, y, 0:2] = True  # legs
+    occ[7:9, 1:4, 4:7] = True  # head
+    occ[9, 2, 5] = True  # snout
+    occ[7, 1, 7:10] = True  # ears
     occ[7, 3, 7:10] = True
-    occ[1, 2, 4] = True                       # tail
+    occ[1, 2, 4] = True  # tail
     m = voxels(occ)
     v = m.vertices - m.vertices.mean(axis=0)
     return m.with_vertices(v / np.abs(v).max())

@@ -11,15 +11,22 @@ from __future__ import annotations
 
 import os
 import sys
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Callable, Mapping
 
 from . import classic, pentagonal
 from .dual import _check_count, dual
 from .mesh import Mesh, MeshError
 
-__all__ = ["Scheme", "SCHEMES", "subdivide", "predict_counts", "max_iterations",
-           "estimate_bytes", "get_scheme"]
+__all__ = [
+    "Scheme",
+    "SCHEMES",
+    "subdivide",
+    "predict_counts",
+    "max_iterations",
+    "estimate_bytes",
+    "get_scheme",
+]
 
 Counts = tuple[int, int, int]
 
@@ -98,30 +105,84 @@ class _Linear:
 
 
 _LIST = [
-    Scheme("pentagonalize", pentagonal.pentagonalize, "Pentagonalization",
-           "Section 5.1, Figures 1, 6-9, 12", "gyro",
-           lambda V, E, F: (V + 2 * E + F, 5 * E, 2 * E), family="pentagonal"),
-    Scheme("preserve_pentagons", pentagonal.preserve_pentagons, "Pentagon preservation",
-           "Section 5.2, Figures 1D, 10, 11", "quinto (scale 0.5)",
-           lambda V, E, F: (V + 3 * E, 6 * E, F + 2 * E), {"scale": 0.75},
-           family="pentagonal"),
-    Scheme("triangulate", classic.triangulate, "Simplest triangulation",
-           "Figure 2", None, lambda V, E, F: (V + F, 3 * E, 2 * E), exact_counts=False),
-    Scheme("loop_remesh", classic.loop_remesh, "Loop remeshing",
-           "Section 3, Figure 3", "subdivide",
-           lambda V, E, F: (V + E, 4 * E, F + 2 * E)),
-    Scheme("sqrt3_remesh", classic.sqrt3_remesh, "sqrt(3) remeshing",
-           "Section 3", None, lambda V, E, F: (V + F, 3 * E, 2 * E)),
-    Scheme("vertex_insertion", classic.vertex_insertion, "Vertex insertion (Catmull-Clark)",
-           "Section 3", "ortho", lambda V, E, F: (V + E + F, 4 * E, 2 * E)),
-    Scheme("corner_cutting", classic.corner_cutting, "Corner cutting (Doo-Sabin)",
-           "Section 3", "expand", lambda V, E, F: (2 * E, 4 * E, V + E + F),
-           {"scale": 0.5}),
-    Scheme("preserve_hexagons", classic.preserve_hexagons,
-           "Hexagon preservation (dual of Loop)", "Section 4, Figures 4-5", "chamfer",
-           lambda V, E, F: (V + 2 * E, 4 * E, F + E), {"scale": 0.5}),
-    Scheme("honeycomb", classic.honeycomb, "Honeycomb (dual of sqrt(3))",
-           "Section 6, Figure 13", "zip", lambda V, E, F: (2 * E, 3 * E, V + F)),
+    Scheme(
+        "pentagonalize",
+        pentagonal.pentagonalize,
+        "Pentagonalization",
+        "Section 5.1, Figures 1, 6-9, 12",
+        "gyro",
+        lambda V, E, F: (V + 2 * E + F, 5 * E, 2 * E),
+        family="pentagonal",
+    ),
+    Scheme(
+        "preserve_pentagons",
+        pentagonal.preserve_pentagons,
+        "Pentagon preservation",
+        "Section 5.2, Figures 1D, 10, 11",
+        "quinto (scale 0.5)",
+        lambda V, E, F: (V + 3 * E, 6 * E, F + 2 * E),
+        {"scale": 0.75},
+        family="pentagonal",
+    ),
+    Scheme(
+        "triangulate",
+        classic.triangulate,
+        "Simplest triangulation",
+        "Figure 2",
+        None,
+        lambda V, E, F: (V + F, 3 * E, 2 * E),
+        exact_counts=False,
+    ),
+    Scheme(
+        "loop_remesh",
+        classic.loop_remesh,
+        "Loop remeshing",
+        "Section 3, Figure 3",
+        "subdivide",
+        lambda V, E, F: (V + E, 4 * E, F + 2 * E),
+    ),
+    Scheme(
+        "sqrt3_remesh",
+        classic.sqrt3_remesh,
+        "sqrt(3) remeshing",
+        "Section 3",
+        None,
+        lambda V, E, F: (V + F, 3 * E, 2 * E),
+    ),
+    Scheme(
+        "vertex_insertion",
+        classic.vertex_insertion,
+        "Vertex insertion (Catmull-Clark)",
+        "Section 3",
+        "ortho",
+        lambda V, E, F: (V + E + F, 4 * E, 2 * E),
+    ),
+    Scheme(
+        "corner_cutting",
+        classic.corner_cutting,
+        "Corner cutting (Doo-Sabin)",
+        "Section 3",
+        "expand",
+        lambda V, E, F: (2 * E, 4 * E, V + E + F),
+        {"scale": 0.5},
+    ),
+    Scheme(
+        "preserve_hexagons",
+        classic.preserve_hexagons,
+        "Hexagon preservation (dual of Loop)",
+        "Section 4, Figures 4-5",
+        "chamfer",
+        lambda V, E, F: (V + 2 * E, 4 * E, F + E),
+        {"scale": 0.5},
+    ),
+    Scheme(
+        "honeycomb",
+        classic.honeycomb,
+        "Honeycomb (dual of sqrt(3))",
+        "Section 6, Figure 13",
+        "zip",
+        lambda V, E, F: (2 * E, 3 * E, V + F),
+    ),
 ]
 
 #: Every remeshing scheme of the package, by name.
@@ -141,12 +202,14 @@ def get_scheme(scheme: str | Scheme | Callable) -> Scheme | Callable:
     try:
         return SCHEMES[scheme]
     except (KeyError, TypeError):
-        raise ValueError(f"unknown scheme {scheme!r}; known schemes: "
-                         f"{', '.join(SCHEMES)}") from None
+        raise ValueError(
+            f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}"
+        ) from None
 
 
-def predict_counts(counts: Counts, scheme: str | Scheme, iterations: int = 1,
-                   duals: int = 2) -> list[Counts]:
+def predict_counts(
+    counts: Counts, scheme: str | Scheme, iterations: int = 1, duals: int = 2
+) -> list[Counts]:
     """The (V, E, F) after every step of :func:`subdivide`, without building anything.
 
     Parameters
@@ -173,8 +236,9 @@ def predict_counts(counts: Counts, scheme: str | Scheme, iterations: int = 1,
     return out
 
 
-def max_iterations(mesh_or_counts, scheme: str | Scheme, duals: int = 2,
-                   max_faces: int = 100_000, cap: int = 8) -> int:
+def max_iterations(
+    mesh_or_counts, scheme: str | Scheme, duals: int = 2, max_faces: int = 100_000, cap: int = 8
+) -> int:
     """The most iterations of ``scheme`` whose meshes all stay within ``max_faces``.
 
     Predicted from the counts (nothing is built): the bound a slider over
@@ -196,12 +260,15 @@ def max_iterations(mesh_or_counts, scheme: str | Scheme, duals: int = 2,
     int
         0 when even one iteration would be too large.
     """
-    counts = mesh_or_counts if isinstance(mesh_or_counts, tuple) else \
-        (mesh_or_counts.n_vertices, mesh_or_counts.n_edges, mesh_or_counts.n_faces)
+    counts = (
+        mesh_or_counts
+        if isinstance(mesh_or_counts, tuple)
+        else (mesh_or_counts.n_vertices, mesh_or_counts.n_edges, mesh_or_counts.n_faces)
+    )
     steps = predict_counts(counts, scheme, cap, duals)
     per_iteration = 1 + duals
     for k in range(cap):
-        if max(F for _, _, F in steps[k * per_iteration:(k + 1) * per_iteration]) > max_faces:
+        if max(F for _, _, F in steps[k * per_iteration : (k + 1) * per_iteration]) > max_faces:
             return k
     return cap
 
@@ -223,9 +290,16 @@ def default_max_bytes() -> int:
         return 4 << 30
 
 
-def subdivide(mesh: Mesh, scheme: str | Scheme | Callable = "pentagonalize",
-              iterations: int = 1, duals: int = 2, *, progress=None,
-              max_bytes: int | None = None, **options) -> Mesh:
+def subdivide(
+    mesh: Mesh,
+    scheme: str | Scheme | Callable = "pentagonalize",
+    iterations: int = 1,
+    duals: int = 2,
+    *,
+    progress=None,
+    max_bytes: int | None = None,
+    **options,
+) -> Mesh:
     """Repeat: one remeshing, then ``duals`` duals (the paper's subdivision).
 
     Parameters
@@ -270,8 +344,7 @@ def subdivide(mesh: Mesh, scheme: str | Scheme | Callable = "pentagonalize",
             takes = ", ".join(s.options) or "no options"
             raise ValueError(f"scheme {s.name!r} takes {takes}; got {sorted(unknown)}")
         limit = default_max_bytes() if max_bytes is None else int(max_bytes)
-        steps = predict_counts((mesh.n_vertices, mesh.n_edges, mesh.n_faces), s,
-                               iterations, duals)
+        steps = predict_counts((mesh.n_vertices, mesh.n_edges, mesh.n_faces), s, iterations, duals)
         if steps:
             V, E, F = max(steps, key=lambda c: estimate_bytes(*c))
             need = estimate_bytes(V, E, F)
@@ -280,7 +353,8 @@ def subdivide(mesh: Mesh, scheme: str | Scheme | Callable = "pentagonalize",
                     f"{s.name} x{iterations} with {duals} duals would build a mesh of "
                     f"{F:,} faces ({V:,} vertices, {E:,} edges) needing about "
                     f"{need:,} bytes, over the limit of {limit:,} bytes "
-                    "(lower iterations or raise max_bytes)")
+                    "(lower iterations or raise max_bytes)"
+                )
     report = _progress_printer if progress is True else progress
     total = iterations * (1 + duals)
     done = 0
@@ -301,5 +375,9 @@ def subdivide(mesh: Mesh, scheme: str | Scheme | Callable = "pentagonalize",
 def _progress_printer(done: int, total: int, message: str) -> None:
     width = 20
     filled = width * done // max(total, 1)
-    print(f"\r[{'#' * filled}{'.' * (width - filled)}] {done}/{total} {message}",
-          end="\n" if done == total else "", file=sys.stderr, flush=True)
+    print(
+        f"\r[{'#' * filled}{'.' * (width - filled)}] {done}/{total} {message}",
+        end="\n" if done == total else "",
+        file=sys.stderr,
+        flush=True,
+    )

@@ -44,7 +44,7 @@ from __future__ import annotations
 import math
 import numbers
 from fractions import Fraction
-from typing import NamedTuple, Optional, Union
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -72,12 +72,13 @@ __all__ = [
 FloatArray = NDArray[np.float64]
 
 #: ``(v_min, v_max)``; ``v_max`` is :data:`math.inf` when unbounded.
-Range = tuple[int, Union[int, float]]
+Range = tuple[int, int | float]
 
 
 # --------------------------------------------------------------------------
 # Input checking
 # --------------------------------------------------------------------------
+
 
 def _as_int(name: str, value: object, minimum: int) -> int:
     """``value`` as a Python int ``>= minimum``, or a ValueError naming it.
@@ -101,8 +102,9 @@ def _as_int(name: str, value: object, minimum: int) -> int:
 def _as_int_array(name: str, value: ArrayLike, minimum: int) -> NDArray[np.int64]:
     """Array version of :func:`_as_int` (every entry integer-valued, ``>= minimum``)."""
     a = np.asarray(value)
-    if a.dtype == np.bool_ or not (np.issubdtype(a.dtype, np.integer)
-                                   or np.issubdtype(a.dtype, np.floating)):
+    if a.dtype == np.bool_ or not (
+        np.issubdtype(a.dtype, np.integer) or np.issubdtype(a.dtype, np.floating)
+    ):
         raise ValueError(f"{name} must be an integer, got {value!r}")
     if np.issubdtype(a.dtype, np.floating):
         if not np.all(np.isfinite(a)) or np.any(a != np.round(a)):
@@ -116,8 +118,9 @@ def _as_int_array(name: str, value: ArrayLike, minimum: int) -> NDArray[np.int64
 def _as_count_array(name: str, value: ArrayLike) -> FloatArray:
     """``value`` as a float array of positive reals (``inf`` allowed, NaN not)."""
     a = np.asarray(value)
-    if a.dtype == np.bool_ or not (np.issubdtype(a.dtype, np.integer)
-                                   or np.issubdtype(a.dtype, np.floating)):
+    if a.dtype == np.bool_ or not (
+        np.issubdtype(a.dtype, np.integer) or np.issubdtype(a.dtype, np.floating)
+    ):
         raise ValueError(f"{name} must be a positive number, got {value!r}")
     a = a.astype(np.float64)
     if np.any(np.isnan(a)) or np.any(a <= 0):
@@ -129,8 +132,10 @@ def _as_count_array(name: str, value: ArrayLike) -> FloatArray:
 # Equation (1) and its limit
 # --------------------------------------------------------------------------
 
-def _equation_1(k: ArrayLike, g: ArrayLike, count: ArrayLike,
-                names: tuple[str, str]) -> Union[float, FloatArray]:
+
+def _equation_1(
+    k: ArrayLike, g: ArrayLike, count: ArrayLike, names: tuple[str, str]
+) -> float | FloatArray:
     """``2k/(k-2) (1 + (2g-2)/count)``, broadcast, with ``count = inf`` allowed."""
     k = _as_int_array(names[0], k, 3)
     g = _as_int_array("g", g, 0)
@@ -146,7 +151,7 @@ def _equation_1(k: ArrayLike, g: ArrayLike, count: ArrayLike,
     return float(out) if out.ndim == 0 else out
 
 
-def average_valence(n: ArrayLike, g: ArrayLike, v: ArrayLike) -> Union[float, FloatArray]:
+def average_valence(n: ArrayLike, g: ArrayLike, v: ArrayLike) -> float | FloatArray:
     """Average vertex valence of a closed mesh of ``n``-gons: equation (1).
 
     .. math::  m = \\frac{2n}{n - 2} \\left(1 + \\frac{2g - 2}{v}\\right)
@@ -259,7 +264,8 @@ def limit_valence_is_integer(n: int) -> bool:
 # Counts, vertex ranges, existence
 # --------------------------------------------------------------------------
 
-def ngon_mesh_counts(n: int, g: int, v: int) -> Optional[tuple[int, int, int]]:
+
+def ngon_mesh_counts(n: int, g: int, v: int) -> tuple[int, int, int] | None:
     """``(v, e, f)`` of a closed mesh of only ``n``-gons with ``v`` vertices.
 
     Solving Euler's formula ``v - e + f = 2 - 2g`` together with ``2e = n f``
@@ -312,7 +318,7 @@ def _counts_ok_and_3valent(n: int, g: int, v: int) -> bool:
     return counts is not None and 2 * counts[1] >= 3 * v
 
 
-def vertex_range(n: int, g: int) -> Optional[Range]:
+def vertex_range(n: int, g: int) -> Range | None:
     """Range of ``v`` for which an ``n``-gon mesh of genus ``g`` can have ``m >= 3``.
 
     Section 4 asks for the ``v`` at which equation (1) gives an average
@@ -369,7 +375,7 @@ def vertex_range(n: int, g: int) -> Optional[Range]:
     g = _as_int("g", g, 0)
     lhs, rhs = 6 - n, 4 * n * (1 - g)  # m >= 3  <=>  lhs * v >= rhs
     lo = max(1, 3 - 2 * g)  # v >= 1 and v + 2g - 2 > 0
-    hi: Union[int, float] = math.inf
+    hi: int | float = math.inf
     if lhs > 0:
         lo = max(lo, -(-rhs // lhs))  # ceil(rhs / lhs)
     elif lhs == 0:
@@ -384,7 +390,7 @@ def vertex_range(n: int, g: int) -> Optional[Range]:
     v_min = lo + (r - lo) % p
     if hi != math.inf:
         hi = int(hi)
-        v_max: Union[int, float] = hi - (hi - r) % p
+        v_max: int | float = hi - (hi - r) % p
         if v_min > v_max:
             return None
     else:
@@ -392,7 +398,7 @@ def vertex_range(n: int, g: int) -> Optional[Range]:
     return v_min, v_max
 
 
-def min_vertices(n: int, g: int) -> Optional[int]:
+def min_vertices(n: int, g: int) -> int | None:
     """Smallest ``v`` of an ``n``-gon mesh of genus ``g`` with ``m >= 3``.
 
     Section 4 for ``g = 0``: pentagons need ``v >= 20`` ("v = 20 corresponds
@@ -421,7 +427,7 @@ def min_vertices(n: int, g: int) -> Optional[int]:
     return None if r is None else r[0]
 
 
-def can_tile(n: int, g: int, v: Optional[int] = None) -> bool:
+def can_tile(n: int, g: int, v: int | None = None) -> bool:
     """Whether a genus-``g`` mesh of only ``n``-gons with ``m >= 3`` can exist.
 
     Count-wise (Section 4): Euler's formula must give positive integer
@@ -532,6 +538,7 @@ def ngon_preservation_exists(n: int) -> bool:
 # The chart of Section 4
 # --------------------------------------------------------------------------
 
+
 class SchlafliRow(NamedTuple):
     """One row of the paper's chart of ``(n, m)`` Schlafli pairs (Section 4).
 
@@ -556,7 +563,7 @@ class SchlafliRow(NamedTuple):
     m: Fraction
     description: str
     admits_regular: bool
-    dual_of: Optional[tuple[Fraction, Fraction]]
+    dual_of: tuple[Fraction, Fraction] | None
 
 
 def _chart_number(x: Fraction) -> str:
@@ -576,7 +583,7 @@ def schlafli_chart() -> tuple[SchlafliRow, ...]:
     -------
     tuple of SchlafliRow
     """
-    pairs: list[tuple[Fraction, Fraction, Optional[tuple[Fraction, Fraction]]]] = [
+    pairs: list[tuple[Fraction, Fraction, tuple[Fraction, Fraction] | None]] = [
         (Fraction(n), limit_valence(n), None) for n in (6, 5, 4, 3)
     ]
     # The dual of (5, 10/3): 5-valent vertices, faces of average size 10/3.
@@ -587,8 +594,10 @@ def schlafli_chart() -> tuple[SchlafliRow, ...]:
         SchlafliRow(
             n=n,
             m=m,
-            description=(f"Average {_chart_number(n)}-sided faces with average "
-                         f"{_chart_number(m)}-valent vertices"),
+            description=(
+                f"Average {_chart_number(n)}-sided faces with average "
+                f"{_chart_number(m)}-valent vertices"
+            ),
             admits_regular=n.denominator == 1 and m.denominator == 1,
             dual_of=dual,
         )
@@ -600,7 +609,8 @@ def schlafli_chart() -> tuple[SchlafliRow, ...]:
 # Dual statements: replace v with f
 # --------------------------------------------------------------------------
 
-def average_face_size(m: ArrayLike, g: ArrayLike, f: ArrayLike) -> Union[float, FloatArray]:
+
+def average_face_size(m: ArrayLike, g: ArrayLike, f: ArrayLike) -> float | FloatArray:
     """Average face size of a closed mesh whose vertices are all ``m``-valent.
 
     The dual of equation (1) (Section 4: "the same analysis can be repeated
@@ -647,7 +657,7 @@ def limit_face_size(m: int) -> Fraction:
     return Fraction(2 * m, m - 2)
 
 
-def mvalent_mesh_counts(m: int, g: int, f: int) -> Optional[tuple[int, int, int]]:
+def mvalent_mesh_counts(m: int, g: int, f: int) -> tuple[int, int, int] | None:
     """``(v, e, f)`` of a closed mesh of genus ``g`` with only ``m``-valent vertices.
 
     The dual of :func:`ngon_mesh_counts`: ``2e = m v`` and Euler's formula
@@ -680,7 +690,7 @@ def mvalent_mesh_counts(m: int, g: int, f: int) -> Optional[tuple[int, int, int]
     return None if dual is None else (dual[2], dual[1], dual[0])
 
 
-def face_range(m: int, g: int) -> Optional[Range]:
+def face_range(m: int, g: int) -> Range | None:
     """Range of ``f`` for which an ``m``-valent mesh of genus ``g`` has ``n >= 3``.
 
     The dual of :func:`vertex_range` (swap ``v`` and ``f``, ``n`` and ``m``):
@@ -701,7 +711,7 @@ def face_range(m: int, g: int) -> Optional[Range]:
     return vertex_range(m, g)
 
 
-def min_faces(m: int, g: int) -> Optional[int]:
+def min_faces(m: int, g: int) -> int | None:
     """Smallest ``f`` of an ``m``-valent mesh of genus ``g`` with ``n >= 3``.
 
     The dual of :func:`min_vertices`: for ``g = 0``, 4 faces for ``m = 3``

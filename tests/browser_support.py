@@ -31,22 +31,28 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 
 #: Flags for headless Chromium without a GPU, a sandbox or background traffic.
-CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu",
-                  "--enable-unsafe-swiftshader", "--disable-background-networking",
-                  "--disable-component-update", "--no-first-run"]
+CHROMIUM_FLAGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--enable-unsafe-swiftshader",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--no-first-run",
+]
 
 #: Console messages known to be harmless (substrings).  None comes from
 #: pentanb; see the module docstring of :mod:`pentanb.viz.three`.
 HARMLESS_CONSOLE = (
-    "GPU stall due to ReadPixels",                 # SwiftShader performance note
-    "Automatic fallback to software WebGL",        # headless Chromium without GPU
-    "WebGL-",                                      # other GL driver notes
-    "allowUnionTypes",                             # html-manager's JSON schema (ajv)
-    "Unsatisfied version",                         # pythreejs built for older Lumino
+    "GPU stall due to ReadPixels",  # SwiftShader performance note
+    "Automatic fallback to software WebGL",  # headless Chromium without GPU
+    "WebGL-",  # other GL driver notes
+    "allowUnionTypes",  # html-manager's JSON schema (ajv)
+    "Unsatisfied version",  # pythreejs built for older Lumino
     "shared singleton module",
     "Failed to load resource: the server responded with a status of 404",  # favicon etc.
     "[Violation]",
-    "already frozen",                              # pythreejs log when a view is reused
+    "already frozen",  # pythreejs log when a view is reused
     # pythreejs 2.4 under JupyterLab 4, for lights that cast shadows
     # (PointLight, DirectionalLight, SpotLight); pentanb's views use none
     "Error setting state: t.on is not a function",
@@ -71,8 +77,11 @@ def skip_or_fail(message: str):
 def chromium_path() -> str | None:
     """$PENTANB_CHROMIUM when set (only it), else Debian's /usr/bin/chromium."""
     env = os.environ.get("PENTANB_CHROMIUM")
-    candidates = (env,) if env else ("/usr/bin/chromium", shutil.which("chromium"),
-                                     shutil.which("chromium-browser"))
+    candidates = (
+        (env,)
+        if env
+        else ("/usr/bin/chromium", shutil.which("chromium"), shutil.which("chromium-browser"))
+    )
     for candidate in candidates:
         if candidate and os.path.isfile(candidate) and os.access(candidate, os.X_OK):
             return candidate
@@ -84,14 +93,18 @@ def require_browser():
     try:
         from playwright.sync_api import sync_playwright
     except ImportError:
-        skip_or_fail("Python's playwright is not installed (pip install playwright); "
-                     "browser tests need it and Debian's chromium")
+        skip_or_fail(
+            "Python's playwright is not installed (pip install playwright); "
+            "browser tests need it and Debian's chromium"
+        )
     path = chromium_path()
     if path is None:
-        skip_or_fail("no Chromium found at "
-                     f"{os.environ.get('PENTANB_CHROMIUM') or '/usr/bin/chromium'} "
-                     "(apt-get install chromium, or bash .ci/browser-setup.sh); "
-                     "browser tests skipped")
+        skip_or_fail(
+            "no Chromium found at "
+            f"{os.environ.get('PENTANB_CHROMIUM') or '/usr/bin/chromium'} "
+            "(apt-get install chromium, or bash .ci/browser-setup.sh); "
+            "browser tests skipped"
+        )
     return sync_playwright, path
 
 
@@ -129,7 +142,7 @@ class JupyterLab:
         self.root = self.scratch / "root"
         self.log_path = self.scratch / "server.log"
 
-    def __enter__(self) -> "JupyterLab":
+    def __enter__(self) -> JupyterLab:
         self.root.mkdir()
         for folder in {p.parent for p in self.notebooks}:
             for f in folder.iterdir():
@@ -138,24 +151,36 @@ class JupyterLab:
         for nb in self.notebooks:
             data = json.loads(nb.read_text())
             data.setdefault("metadata", {})["kernelspec"] = {
-                "name": "python3", "display_name": "Python 3 (ipykernel)",
-                "language": "python"}
+                "name": "python3",
+                "display_name": "Python 3 (ipykernel)",
+                "language": "python",
+            }
             (self.root / nb.name).write_text(json.dumps(data))
         env = self._env()
         self.port = free_port()
-        cmd = [sys.executable, "-m", "jupyterlab", "--no-browser",
-               f"--port={self.port}", "--ip=127.0.0.1", "--ServerApp.port_retries=0",
-               "--IdentityProvider.token=", "--ServerApp.password=",
-               "--ServerApp.disable_check_xsrf=True",
-               f"--ServerApp.root_dir={self.root}", "--LabApp.expose_app_in_browser=True",
-               "--LabApp.news_url=None",
-               "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
-               "--LabApp.extension_manager=readonly"]
+        cmd = [
+            sys.executable,
+            "-m",
+            "jupyterlab",
+            "--no-browser",
+            f"--port={self.port}",
+            "--ip=127.0.0.1",
+            "--ServerApp.port_retries=0",
+            "--IdentityProvider.token=",
+            "--ServerApp.password=",
+            "--ServerApp.disable_check_xsrf=True",
+            f"--ServerApp.root_dir={self.root}",
+            "--LabApp.expose_app_in_browser=True",
+            "--LabApp.news_url=None",
+            "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
+            "--LabApp.extension_manager=readonly",
+        ]
         if hasattr(os, "geteuid") and os.geteuid() == 0:
             cmd.append("--allow-root")  # CI runs as root
         self.log = open(self.log_path, "w")
-        self.proc = subprocess.Popen(cmd, stdout=self.log, stderr=subprocess.STDOUT,
-                                     env=env, cwd=self.root)
+        self.proc = subprocess.Popen(
+            cmd, stdout=self.log, stderr=subprocess.STDOUT, env=env, cwd=self.root
+        )
         self.url = f"http://127.0.0.1:{self.port}"
         deadline = time.monotonic() + self.startup_timeout
         while True:
@@ -169,8 +194,9 @@ class JupyterLab:
                 pass
             if time.monotonic() > deadline:
                 self.__exit__(None, None, None)
-                raise RuntimeError("jupyter lab did not answer within "
-                                   f"{self.startup_timeout:.0f} s")
+                raise RuntimeError(
+                    f"jupyter lab did not answer within {self.startup_timeout:.0f} s"
+                )
             time.sleep(0.25)
         return self
 
@@ -186,21 +212,31 @@ class JupyterLab:
             JUPYTERLAB_WORKSPACES_DIR=str(self.scratch / "workspaces"),
             IPYTHONDIR=str(self.scratch / "ipython"),
             PYTHONPATH=os.pathsep.join(
-                [str(ROOT)] + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else [])),
+                [str(ROOT)] + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else [])
+            ),
         )
         env.pop("JUPYTER_PATH", None)
         # the kernel is this Python (a user-level spec wins over any other)
         spec = self.scratch / "data" / "kernels" / "python3"
         spec.mkdir(parents=True)
-        (spec / "kernel.json").write_text(json.dumps({
-            "argv": [sys.executable, "-m", "ipykernel_launcher", "-f", "{connection_file}"],
-            "display_name": "Python 3 (ipykernel)", "language": "python"}))
+        (spec / "kernel.json").write_text(
+            json.dumps(
+                {
+                    "argv": [sys.executable, "-m", "ipykernel_launcher", "-f", "{connection_file}"],
+                    "display_name": "Python 3 (ipykernel)",
+                    "language": "python",
+                }
+            )
+        )
         # no autosave (nothing is written back), no news or update pop-ups
         settings = self.scratch / "settings"
         for plugin, values in {
-                "@jupyterlab/docmanager-extension/plugin": {"autosave": False},
-                "@jupyterlab/apputils-extension/notification": {
-                    "fetchNews": "false", "checkForUpdates": False}}.items():
+            "@jupyterlab/docmanager-extension/plugin": {"autosave": False},
+            "@jupyterlab/apputils-extension/notification": {
+                "fetchNews": "false",
+                "checkForUpdates": False,
+            },
+        }.items():
             path = settings / (plugin + ".jupyterlab-settings")
             path.parent.mkdir(parents=True, exist_ok=True)
             path.write_text(json.dumps(values))
@@ -222,14 +258,17 @@ class JupyterLab:
 
 # -- pixels -------------------------------------------------------------------
 
+
 def image(png: bytes):
     from PIL import Image
+
     return Image.open(io.BytesIO(png)).convert("RGB")
 
 
 def nonblank(png: bytes, *, min_fraction: float = 0.01) -> float:
     """Fraction of pixels that differ from the picture's corner (background) colour."""
     import numpy as np
+
     a = np.asarray(image(png), dtype=np.int16)
     background = a[1, 1]
     differs = np.abs(a - background).max(axis=2) > 16
@@ -239,6 +278,7 @@ def nonblank(png: bytes, *, min_fraction: float = 0.01) -> float:
 def changed(before: bytes, after: bytes) -> float:
     """Fraction of pixels that differ between two screenshots of the same size."""
     import numpy as np
+
     a = np.asarray(image(before), dtype=np.int16)
     b = np.asarray(image(after), dtype=np.int16)
     if a.shape != b.shape:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import functools
 from collections import Counter
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
@@ -29,8 +29,9 @@ def cube_split() -> Mesh:
     one triangle, three quads, three pentagons, every vertex 3-valent.
     """
     c = shapes.cube()
-    v = np.concatenate([c.vertices, [(c.vertices[4] + c.vertices[6]) / 2,
-                                     (c.vertices[6] + c.vertices[7]) / 2]])
+    v = np.concatenate(
+        [c.vertices, [(c.vertices[4] + c.vertices[6]) / 2, (c.vertices[6] + c.vertices[7]) / 2]]
+    )
     a, b = 8, 9
     faces = []
     for f in c.faces:
@@ -63,8 +64,7 @@ def prism(n: int) -> Mesh:
 def pyramid(n: int) -> Mesh:
     """A pyramid over a regular n-gon: one n-gon, n triangles, an n-valent apex."""
     t = 2 * np.pi * np.arange(n) / n
-    v = np.concatenate([np.stack([np.cos(t), np.sin(t), np.zeros(n)], axis=1),
-                        [[0.0, 0.0, 1.0]]])
+    v = np.concatenate([np.stack([np.cos(t), np.sin(t), np.zeros(n)], axis=1), [[0.0, 0.0, 1.0]]])
     faces = [list(range(n))[::-1]] + [[i, (i + 1) % n, n] for i in range(n)]
     return Mesh(v, faces)
 
@@ -93,12 +93,21 @@ EXTRA: dict[str, Callable[[], Mesh]] = {
 BUILDERS: dict[str, Callable[[], Mesh]] = {**shapes.SHAPES, **EXTRA}
 CORPUS_NAMES = list(BUILDERS)
 #: Small corpus meshes for the slower (pure-Python) checks.
-SMALL_NAMES = ["tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron",
-               "cube_split", "hexagonal_prism", "pentagonal_pyramid", "small_torus",
-               "merged_icosahedron"]
+SMALL_NAMES = [
+    "tetrahedron",
+    "cube",
+    "octahedron",
+    "dodecahedron",
+    "icosahedron",
+    "cube_split",
+    "hexagonal_prism",
+    "pentagonal_pyramid",
+    "small_torus",
+    "merged_icosahedron",
+]
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def corpus(name: str) -> Mesh:
     """Build (once: meshes are immutable) the corpus mesh called ``name``."""
     return BUILDERS[name]()
@@ -107,7 +116,9 @@ def corpus(name: str) -> Mesh:
 # ---------------------------------------------------------------------- operators
 #: Every operator under test: the registry's schemes and the dual.
 OPERATORS: dict[str, Callable[[Mesh], Mesh]] = {
-    **{name: s.func for name, s in pentanb.SCHEMES.items()}, "dual": pentanb.dual}
+    **{name: s.func for name, s in pentanb.SCHEMES.items()},
+    "dual": pentanb.dual,
+}
 
 
 def expected_counts(name: str, m: Mesh) -> tuple[int, int, int]:
@@ -147,29 +158,29 @@ def expected_face_histogram(name: str, m: Mesh) -> dict[int, int]:
     E = m.n_edges
     hist: Counter = Counter()
     if name == "pentagonalize":
-        hist[5] += 2 * E                          # every n-gon -> n pentagons
+        hist[5] += 2 * E  # every n-gon -> n pentagons
     elif name == "preserve_pentagons":
-        hist.update(sizes)                        # inner n-gon per n-gon
-        hist[5] += 2 * E                          # + n pentagons
+        hist.update(sizes)  # inner n-gon per n-gon
+        hist[5] += 2 * E  # + n pentagons
     elif name == "loop_remesh":
-        hist.update(sizes)                        # central n-gon
-        hist[3] += 2 * E                          # + a triangle per corner
+        hist.update(sizes)  # central n-gon
+        hist[3] += 2 * E  # + a triangle per corner
     elif name in ("sqrt3_remesh",):
         hist[3] += 2 * E
     elif name == "vertex_insertion":
         hist[4] += 2 * E
     elif name == "corner_cutting":
-        hist.update(sizes)                        # face copies
-        hist[4] += E                              # a quad per edge
-        hist.update(vals)                         # a k-gon per k-valent vertex
+        hist.update(sizes)  # face copies
+        hist[4] += E  # a quad per edge
+        hist.update(vals)  # a k-gon per k-valent vertex
     elif name == "preserve_hexagons":
-        hist.update(sizes)                        # face copies
-        hist[6] += E                              # a hexagon per edge
+        hist.update(sizes)  # face copies
+        hist[6] += E  # a hexagon per edge
     elif name == "honeycomb":
-        hist.update(sizes)                        # an n-gon per n-gon
-        hist.update(2 * k for k in vals)          # a 2k-gon per k-valent vertex
+        hist.update(sizes)  # an n-gon per n-gon
+        hist.update(2 * k for k in vals)  # a 2k-gon per k-valent vertex
     elif name == "dual":
-        hist.update(vals)                         # a k-gon per k-valent vertex
+        hist.update(vals)  # a k-gon per k-valent vertex
     elif name == "triangulate":
         hist[3] += sum(1 for s in sizes if s == 3) + sum(s for s in sizes if s > 3)
     else:
@@ -181,7 +192,7 @@ def expected_face_histogram(name: str, m: Mesh) -> dict[int, int]:
 def face_lists(m: Mesh) -> list[list[int]]:
     """The faces as lists of ints, read from ``corners``/``offsets``."""
     c, o = m.corners.tolist(), m.offsets.tolist()
-    return [c[o[i]:o[i + 1]] for i in range(len(o) - 1)]
+    return [c[o[i] : o[i + 1]] for i in range(len(o) - 1)]
 
 
 def face_sizes(m: Mesh) -> list[int]:
@@ -227,20 +238,32 @@ def check_valid(out: Mesh) -> None:
     assert out.vertices.shape == (out.n_vertices, 3)
     assert np.isfinite(out.vertices).all()
     assert out.offsets[0] == 0 and out.offsets[-1] == out.corners.size
-    rebuilt = Mesh(out.vertices, face_lists(out))   # raises MeshError when invalid
+    rebuilt = Mesh(out.vertices, face_lists(out))  # raises MeshError when invalid
     _, _, _, twin = darts(face_lists(out))
     assert out.twin.tolist() == twin
-    for name in ("twin", "next", "prev", "head", "rotation", "halfedge_face",
-                 "halfedge_edge", "edge_halfedge", "edges", "valences", "face_sizes",
-                 "component_labels"):
+    for name in (
+        "twin",
+        "next",
+        "prev",
+        "head",
+        "rotation",
+        "halfedge_face",
+        "halfedge_edge",
+        "edge_halfedge",
+        "edges",
+        "valences",
+        "face_sizes",
+        "component_labels",
+    ):
         assert np.array_equal(getattr(out, name), getattr(rebuilt, name)), name
     assert np.allclose(out.face_centroids, rebuilt.face_centroids, rtol=0, atol=1e-12)
     ring, off = out.vertex_ring
     ring2, off2 = rebuilt.vertex_ring
     assert np.array_equal(off, off2)
     for v in range(out.n_vertices):
-        assert same_faces_up_to_rotation([ring[off[v]:off[v + 1]].tolist()],
-                                         [ring2[off[v]:off[v + 1]].tolist()]), v
+        assert same_faces_up_to_rotation(
+            [ring[off[v] : off[v + 1]].tolist()], [ring2[off[v] : off[v + 1]].tolist()]
+        ), v
 
 
 def same_faces_up_to_rotation(a: list[list[int]], b: list[list[int]]) -> bool:
@@ -325,8 +348,7 @@ def kis(m: Mesh) -> Mesh:
     """Conway's kis: a centroid fan in every face (triangles included)."""
     faces = face_lists(m)
     n = m.n_vertices
-    tris = [[f[i], f[(i + 1) % len(f)], n + k] for k, f in enumerate(faces)
-            for i in range(len(f))]
+    tris = [[f[i], f[(i + 1) % len(f)], n + k] for k, f in enumerate(faces) for i in range(len(f))]
     cent = np.array([m.vertices[f].mean(axis=0) for f in faces])
     return Mesh(np.concatenate([m.vertices, cent]), tris)
 
@@ -376,7 +398,7 @@ def merge_faces(m: Mesh, picks) -> Mesh:
         f, g = where[(u, w)], where[(w, u)]
         F, G = faces[f], faces[g]
         i, j = F.index(w), G.index(u)
-        Fr, Gr = F[i:] + F[:i], G[j:] + G[:j]    # w ... u  and  u ... w
+        Fr, Gr = F[i:] + F[:i], G[j:] + G[:j]  # w ... u  and  u ... w
         merged = Fr + Gr[1:-1]
         trial = [x for k, x in enumerate(faces) if k not in (f, g)] + [merged]
         if polyhedral(trial, m.n_vertices):
@@ -397,7 +419,7 @@ def vertex_configurations(m: Mesh) -> list[tuple[int, ...]]:
         for i in range(len(f)):
             out_edge[(f[i], f[(i + 1) % len(f)])] = (k, f[i - 1])
     first = {}
-    for (v, w) in out_edge:
+    for v, w in out_edge:
         first.setdefault(v, w)
     configs = []
     for v in range(m.n_vertices):

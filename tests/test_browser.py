@@ -27,11 +27,12 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import browser_support as bs  # noqa: E402
+import browser_support as bs
 
 ROOT = bs.ROOT
-NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb")) + \
-    sorted((ROOT / "tests" / "notebooks").glob("*.ipynb"))
+NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb")) + sorted(
+    (ROOT / "tests" / "notebooks").glob("*.ipynb")
+)
 
 #: Seconds a notebook may take to run all its cells.
 RUN_TIMEOUT = 180
@@ -83,9 +84,12 @@ def _listen(page):
 
 
 def _bad_console(messages):
-    return [f"{kind}: {text[:500]}" for kind, text in messages
-            if (kind in ("error", "pageerror") and not bs.harmless(text))
-            or any(f in text for f in bs.FORBIDDEN_CONSOLE)]
+    return [
+        f"{kind}: {text[:500]}"
+        for kind, text in messages
+        if (kind in ("error", "pageerror") and not bs.harmless(text))
+        or any(f in text for f in bs.FORBIDDEN_CONSOLE)
+    ]
 
 
 def _wait_picture(locator, timeout=DRAW_TIMEOUT):
@@ -96,14 +100,17 @@ def _wait_picture(locator, timeout=DRAW_TIMEOUT):
         png = locator.screenshot()
         shots.append(png)
         return png if bs.nonblank(png) > 0.01 else None
+
     return _poll(check, timeout, 0.5), (shots[-1] if shots else None)
 
 
 def _wait_change(locator, before, timeout=DRAW_TIMEOUT):
     """The element's picture once it differs from ``before`` and has settled."""
+
     def check():
         png = locator.screenshot()
         return png if bs.changed(before, png) > 0.0005 else None
+
     changed = _poll(check, timeout, 0.5)
     if changed is None:
         return None
@@ -114,6 +121,7 @@ def _wait_change(locator, before, timeout=DRAW_TIMEOUT):
         same = bs.changed(last[0], png) == 0.0
         last[0] = png
         return same
+
     _poll(settled, 10, 0.5)
     return last[0]
 
@@ -201,13 +209,16 @@ def test_notebook_runs_and_draws_in_jupyterlab(notebook, browser, lab, artifacts
         # move the first slider: the picture beside it changes
         moved = False
         cells = page.locator(".jp-Cell").filter(
-            has=page.locator(".jp-OutputArea-output .widget-slider"))
+            has=page.locator(".jp-OutputArea-output .widget-slider")
+        )
         if cells.count():
             cell = cells.first
             slider = cell.locator(".jp-OutputArea-output .widget-slider").first
             target = None
-            for selector in (".jupyter-threejs >> visible=true",
-                             ".jupyter-widgets-output-area >> visible=true"):
+            for selector in (
+                ".jupyter-threejs >> visible=true",
+                ".jupyter-widgets-output-area >> visible=true",
+            ):
                 candidate = cell.locator(selector).first
                 if candidate.count():
                     target = candidate
@@ -224,21 +235,22 @@ def test_notebook_runs_and_draws_in_jupyterlab(notebook, browser, lab, artifacts
             assert moved, f"{notebook.name}: found no slider beside a picture"
         bad = _bad_console(messages)
         assert not bad, f"{notebook.name}: console errors: {bad}"
-        print(f"\n{notebook.name}: ran in {t_run:.1f} s, "
-              f"checked in {time.monotonic() - t0:.1f} s")
+        print(f"\n{notebook.name}: ran in {t_run:.1f} s, checked in {time.monotonic() - t0:.1f} s")
     finally:
         try:
             page.evaluate(JS_SHUTDOWN)
-        except Exception:  # noqa: BLE001 - the page may be gone already
+        except Exception:
             pass
         page.close()
 
 
 # -- exported pages -------------------------------------------------------------
 
+
 def _offline_page(kind):
     import pentanb
     from pentanb.viz import html
+
     try:
         html.offline_scripts()
     except FileNotFoundError as err:
@@ -251,6 +263,7 @@ def _offline_page(kind):
 @pytest.mark.parametrize("kind", ["explorer", "step_through"])
 def test_offline_html_works_without_network_or_kernel(kind, browser, artifacts, tmp_path):
     from pentanb.viz.html import export_html
+
     widget = _offline_page(kind)
     path = export_html(widget, tmp_path / f"{kind}.html", offline=True)
     context = browser.new_context(offline=True, viewport={"width": 1000, "height": 1000})
@@ -262,11 +275,14 @@ def test_offline_html_works_without_network_or_kernel(kind, browser, artifacts, 
         page.goto(path.as_uri())
         renderer = page.locator(".jupyter-threejs >> visible=true").first
         renderer.wait_for(timeout=DRAW_TIMEOUT * 1000)
-        before, last = _wait_picture(renderer)
+        before, _last = _wait_picture(renderer)
         page.screenshot(path=str(artifacts / f"offline-{kind}-0.png"))
         assert before, f"offline {kind}: the picture stayed blank"
-        after = _move_slider(page.locator(".widget-slider .noUi-handle").first,
-                             page.locator(".jupyter-threejs >> visible=true").first, before)
+        after = _move_slider(
+            page.locator(".widget-slider .noUi-handle").first,
+            page.locator(".jupyter-threejs >> visible=true").first,
+            before,
+        )
         page.screenshot(path=str(artifacts / f"offline-{kind}-1.png"))
         assert after, f"offline {kind}: the slider did not change the picture"
         assert bs.nonblank(after) > 0.01, f"offline {kind}: blank after the slider moved"
@@ -288,8 +304,9 @@ def test_offline_html_works_without_network_or_kernel(kind, browser, artifacts, 
         back = _wait_change(page.locator(".jupyter-threejs >> visible=true").first, turned)
         page.screenshot(path=str(artifacts / f"offline-{kind}-2.png"))
         assert back and bs.nonblank(back) > 0.01, f"offline {kind}: blank after orbit + slider"
-        assert bs.changed(before, back) > 0.0005, \
+        assert bs.changed(before, back) > 0.0005, (
             f"offline {kind}: the turned camera was not kept for the other step"
+        )
         network = [u for u in requests if not u.startswith(("file:", "data:", "blob:"))]
         assert not network, f"offline {kind}: the page asked the network for {network}"
         bad = _bad_console(messages)

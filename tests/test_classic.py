@@ -12,17 +12,40 @@ from collections import Counter
 
 import numpy as np
 import pytest
-from helpers import (check_valid, corpus, darts, expected_counts, face_lists, is_isomorphic,
-                     kis, valences)
+from helpers import (
+    check_valid,
+    corpus,
+    darts,
+    expected_counts,
+    face_lists,
+    is_isomorphic,
+    kis,
+    valences,
+)
 
-from pentanb import (corner_cutting, dual, honeycomb, loop_remesh,
-                     pentagonalize, preserve_hexagons, preserve_pentagons, shapes,
-                     sqrt3_remesh, triangulate, vertex_insertion)
+from pentanb import (
+    corner_cutting,
+    dual,
+    honeycomb,
+    loop_remesh,
+    pentagonalize,
+    preserve_hexagons,
+    preserve_pentagons,
+    shapes,
+    sqrt3_remesh,
+    triangulate,
+    vertex_insertion,
+)
 
-CLASSIC = {"triangulate": triangulate, "loop_remesh": loop_remesh,
-           "sqrt3_remesh": sqrt3_remesh, "vertex_insertion": vertex_insertion,
-           "corner_cutting": corner_cutting, "preserve_hexagons": preserve_hexagons,
-           "honeycomb": honeycomb}
+CLASSIC = {
+    "triangulate": triangulate,
+    "loop_remesh": loop_remesh,
+    "sqrt3_remesh": sqrt3_remesh,
+    "vertex_insertion": vertex_insertion,
+    "corner_cutting": corner_cutting,
+    "preserve_hexagons": preserve_hexagons,
+    "honeycomb": honeycomb,
+}
 
 
 def edge_index(m):
@@ -64,12 +87,13 @@ def test_classic_refuses_non_mesh(name):
         CLASSIC[name](None)
 
 
-@pytest.mark.parametrize("name", ["triangulate", "loop_remesh", "sqrt3_remesh",
-                                  "vertex_insertion", "preserve_hexagons"])
+@pytest.mark.parametrize(
+    "name", ["triangulate", "loop_remesh", "sqrt3_remesh", "vertex_insertion", "preserve_hexagons"]
+)
 def test_old_vertices_do_not_move(corpus_mesh, name):
     m = corpus_mesh
     out = CLASSIC[name](m)
-    assert np.array_equal(out.vertices[:m.n_vertices], m.vertices)
+    assert np.array_equal(out.vertices[: m.n_vertices], m.vertices)
 
 
 @pytest.mark.parametrize("name", ["triangulate", "loop_remesh", "vertex_insertion"])
@@ -91,13 +115,14 @@ def test_triangulate_faces_and_centres(corpus_mesh):
     t = triangulate(m)
     assert face_lists(t) == expected
     for f in big:
-        assert np.allclose(t.vertices[centre[f]], m.vertices[faces[f]].mean(axis=0),
-                           rtol=0, atol=1e-14)
+        assert np.allclose(
+            t.vertices[centre[f]], m.vertices[faces[f]].mean(axis=0), rtol=0, atol=1e-14
+        )
     # old vertices gain an edge to each non-triangle round them; a centre is n-valent
     around = Counter(v for f in big for v in faces[f])
     val = valences(t)
-    assert val[:m.n_vertices] == [k + around[v] for v, k in enumerate(valences(m))]
-    assert val[m.n_vertices:] == [len(faces[f]) for f in big]
+    assert val[: m.n_vertices] == [k + around[v] for v, k in enumerate(valences(m))]
+    assert val[m.n_vertices :] == [len(faces[f]) for f in big]
 
 
 def test_triangulate_cube_by_hand():
@@ -116,7 +141,7 @@ def test_claim_simplest_triangulation_not_iterable(corpus_mesh):
     assert np.array_equal(twice.vertices, once.vertices)
     assert np.array_equal(twice.corners, once.corners)
     assert np.array_equal(twice.offsets, once.offsets)
-    assert twice.n_vertices == once.n_vertices      # no vertex added: not a refinement
+    assert twice.n_vertices == once.n_vertices  # no vertex added: not a refinement
 
 
 def test_triangulate_keeps_triangle_meshes():
@@ -132,17 +157,17 @@ def test_loop_remesh_faces_and_midpoints(corpus_mesh):
     tail, head, nxt, _ = darts(faces)
     mid = mid_index(m)
     out = loop_remesh(m)
-    expected = [[mid[h] for h in range(m.offsets[f], m.offsets[f + 1])]
-                for f in range(m.n_faces)]
+    expected = [[mid[h] for h in range(m.offsets[f], m.offsets[f + 1])] for f in range(m.n_faces)]
     expected += [[mid[h], head[h], mid[nxt[h]]] for h in range(len(tail))]
     assert face_lists(out) == expected
     for e, (a, b) in enumerate(m.edges.tolist()):
-        assert np.allclose(out.vertices[m.n_vertices + e], (m.vertices[a] + m.vertices[b]) / 2,
-                           rtol=0, atol=1e-14)
+        assert np.allclose(
+            out.vertices[m.n_vertices + e], (m.vertices[a] + m.vertices[b]) / 2, rtol=0, atol=1e-14
+        )
     # a midpoint joins its edge's ends and two midpoints in each of its two faces
     val = valences(out)
-    assert val[:m.n_vertices] == valences(m)
-    assert val[m.n_vertices:] == [6] * m.n_edges
+    assert val[: m.n_vertices] == valences(m)
+    assert val[m.n_vertices :] == [6] * m.n_edges
 
 
 def test_claim_loop_remeshing_preserves_triangles_on_mixed_mesh():
@@ -150,7 +175,7 @@ def test_claim_loop_remeshing_preserves_triangles_on_mixed_mesh():
     mesh stays triangular, but "if the original mesh has some non-triangles,
     the resulting mesh does not become a triangular mesh": each non-triangle
     keeps a central copy, every corner becomes a triangle."""
-    m = corpus("cube_split")          # 1 triangle, 3 quads, 3 pentagons; E = 15
+    m = corpus("cube_split")  # 1 triangle, 3 quads, 3 pentagons; E = 15
     out = loop_remesh(m)
     assert out.face_size_histogram() == {3: 1 + 2 * 15, 4: 3, 5: 3}
     again = loop_remesh(out)
@@ -176,14 +201,16 @@ def test_claim_36_schemes_keep_non_6_valent_count_after_first_refinement():
 def test_sqrt3_faces_and_valences(corpus_mesh):
     m = corpus_mesh
     faces = face_lists(m)
-    tail, head, _, twin = darts(faces)
+    tail, _head, _, twin = darts(faces)
     face_of = [f for f, face in enumerate(faces) for _ in face]
     V = m.n_vertices
     out = sqrt3_remesh(m)
-    assert face_lists(out) == [[u, V + face_of[twin[h]], V + face_of[h]]
-                               for h, u in enumerate(tail)]
-    assert np.allclose(out.vertices[V:], [m.vertices[f].mean(axis=0) for f in faces],
-                       rtol=0, atol=1e-14)
+    assert face_lists(out) == [
+        [u, V + face_of[twin[h]], V + face_of[h]] for h, u in enumerate(tail)
+    ]
+    assert np.allclose(
+        out.vertices[V:], [m.vertices[f].mean(axis=0) for f in faces], rtol=0, atol=1e-14
+    )
     # an old vertex joins the centres of its k faces; a centre its n corners and
     # its n neighbours' centres
     val = valences(out)
@@ -213,14 +240,16 @@ def test_vertex_insertion_faces_and_valences(corpus_mesh):
     V, E = m.n_vertices, m.n_edges
     mid = mid_index(m)
     out = vertex_insertion(m)
-    assert face_lists(out) == [[mid[h], head[h], mid[nxt[h]], V + E + face_of[h]]
-                               for h in range(len(tail))]
-    assert np.allclose(out.vertices[V + E:], [m.vertices[f].mean(axis=0) for f in faces],
-                       rtol=0, atol=1e-14)
+    assert face_lists(out) == [
+        [mid[h], head[h], mid[nxt[h]], V + E + face_of[h]] for h in range(len(tail))
+    ]
+    assert np.allclose(
+        out.vertices[V + E :], [m.vertices[f].mean(axis=0) for f in faces], rtol=0, atol=1e-14
+    )
     val = valences(out)
     assert val[:V] == valences(m)
-    assert val[V:V + E] == [4] * E
-    assert val[V + E:] == [len(f) for f in faces]
+    assert val[V : V + E] == [4] * E
+    assert val[V + E :] == [len(f) for f in faces]
 
 
 def test_vertex_insertion_is_ortho_by_counts():
@@ -249,19 +278,20 @@ def test_claim_44_schemes_keep_irregular_count_after_first_refinement():
 def test_corner_cutting_faces_points_valences(corpus_mesh, scale):
     m = corpus_mesh
     faces = face_lists(m)
-    tail, head, nxt, twin = darts(faces)
+    tail, _head, _nxt, _twin = darts(faces)
     face_of = [f for f, face in enumerate(faces) for _ in face]
     out = corner_cutting(m, scale)
     cent = [m.vertices[f].mean(axis=0) for f in faces]
-    expected_pts = [cent[face_of[h]] + scale * (m.vertices[u] - cent[face_of[h]])
-                    for h, u in enumerate(tail)]
+    expected_pts = [
+        cent[face_of[h]] + scale * (m.vertices[u] - cent[face_of[h]]) for h, u in enumerate(tail)
+    ]
     assert np.allclose(out.vertices, expected_pts, rtol=0, atol=1e-13)
     got = face_lists(out)
     F, E = m.n_faces, m.n_edges
     assert got[:F] == [list(range(m.offsets[f], m.offsets[f + 1])) for f in range(F)]
     # one quad per edge: the corners at both ends of the edge, in both its faces
     pairs = []
-    for quad in got[F:F + E]:
+    for quad in got[F : F + E]:
         assert len(quad) == 4
         assert len({face_of[h] for h in quad}) == 2
         ends = sorted({tail[h] for h in quad})
@@ -269,7 +299,7 @@ def test_corner_cutting_faces_points_valences(corpus_mesh, scale):
         pairs.append(tuple(ends))
     assert sorted(pairs) == sorted(map(tuple, m.edges.tolist()))
     # one k-gon per k-valent vertex, made of the corners at that vertex
-    for v, vface in enumerate(got[F + E:]):
+    for v, vface in enumerate(got[F + E :]):
         assert {tail[h] for h in vface} == {v}
         assert len(vface) == m.valences[v]
     assert out.valence_histogram() == {4: 2 * E}
@@ -279,8 +309,9 @@ def test_corner_cutting_cube_face_x1():
     # corners of face 1 (x = 1, centre (1, 0, 0)) at (1, +-1/2, +-1/2)
     out = corner_cutting(shapes.cube())
     copy = out.vertices[face_lists(out)[1]]
-    assert {tuple(p) for p in copy.tolist()} == {(1.0, a, b) for a in (-.5, .5)
-                                                 for b in (-.5, .5)}
+    assert {tuple(p) for p in copy.tolist()} == {
+        (1.0, a, b) for a in (-0.5, 0.5) for b in (-0.5, 0.5)
+    }
 
 
 def test_corner_cutting_is_expand_by_counts():
@@ -309,18 +340,20 @@ def test_scale_is_checked(op, scale):
 def test_preserve_hexagons_faces_points_valences(corpus_mesh):
     m = corpus_mesh
     faces = face_lists(m)
-    tail, head, nxt, twin = darts(faces)
+    tail, _head, _nxt, _twin = darts(faces)
     face_of = [f for f, face in enumerate(faces) for _ in face]
     V, E, F = m.n_vertices, m.n_edges, m.n_faces
     s = 0.4
     out = preserve_hexagons(m, scale=s)
     cent = [m.vertices[f].mean(axis=0) for f in faces]
-    assert np.allclose(out.vertices[V:], [cent[face_of[h]] + s * (m.vertices[u]
-                                                                  - cent[face_of[h]])
-                                          for h, u in enumerate(tail)], rtol=0, atol=1e-13)
+    assert np.allclose(
+        out.vertices[V:],
+        [cent[face_of[h]] + s * (m.vertices[u] - cent[face_of[h]]) for h, u in enumerate(tail)],
+        rtol=0,
+        atol=1e-13,
+    )
     got = face_lists(out)
-    assert got[:F] == [[V + h for h in range(m.offsets[f], m.offsets[f + 1])]
-                       for f in range(F)]
+    assert got[:F] == [[V + h for h in range(m.offsets[f], m.offsets[f + 1])] for f in range(F)]
     # hexagon of edge (a, b): copies of a and b in both faces, a and b
     for hexagon in got[F:]:
         old = [x for x in hexagon if x < V]
@@ -328,8 +361,9 @@ def test_preserve_hexagons_faces_points_valences(corpus_mesh):
         copies = [x - V for x in hexagon if x >= V]
         assert {tail[h] for h in copies} == set(old)
         assert len({face_of[h] for h in copies}) == 2
-    assert sorted(tuple(sorted(x for x in hx if x < V)) for hx in got[F:]) == \
-        sorted(map(tuple, m.edges.tolist()))
+    assert sorted(tuple(sorted(x for x in hx if x < V)) for hx in got[F:]) == sorted(
+        map(tuple, m.edges.tolist())
+    )
     val = valences(out)
     assert val[:V] == valences(m)
     assert val[V:] == [3] * (2 * E)
@@ -384,12 +418,14 @@ def test_claim_63_schemes_keep_non_hexagon_count_after_first_refinement():
 def test_honeycomb_faces_points_valences(corpus_mesh):
     m = corpus_mesh
     faces = face_lists(m)
-    tail, head, nxt, twin = darts(faces)
+    tail, head, _nxt, _twin = darts(faces)
     face_of = [f for f, face in enumerate(faces) for _ in face]
     out = honeycomb(m)
     cent = [m.vertices[f].mean(axis=0) for f in faces]
-    expected = [(m.vertices[u] + m.vertices[w] + cent[face_of[h]]) / 3
-                for h, (u, w) in enumerate(zip(tail, head))]
+    expected = [
+        (m.vertices[u] + m.vertices[w] + cent[face_of[h]]) / 3
+        for h, (u, w) in enumerate(zip(tail, head))
+    ]
     assert np.allclose(out.vertices, expected, rtol=0, atol=1e-13)
     got = face_lists(out)
     F = m.n_faces
@@ -437,8 +473,12 @@ def test_claim_honeycomb_on_pentagonal_mesh_has_no_triangles_or_quads():
     assert ball.face_size_histogram() == {5: 12, 6: 20}
     assert ball.valence_histogram() == {3: 60}
     assert is_isomorphic(ball, dual(kis(shapes.dodecahedron())))
-    for m in (pentagonalize(shapes.cube()), pentagonalize(shapes.torus(4, 3)),
-              preserve_pentagons(shapes.dodecahedron()), pentagonalize(shapes.animal())):
+    for m in (
+        pentagonalize(shapes.cube()),
+        pentagonalize(shapes.torus(4, 3)),
+        preserve_pentagons(shapes.dodecahedron()),
+        pentagonalize(shapes.animal()),
+    ):
         sizes = set(honeycomb(m).face_sizes.tolist())
         assert not sizes & {3, 4}
         # a k-valent vertex becomes a 2k-gon: 3-valent -> hexagons

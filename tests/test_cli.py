@@ -19,7 +19,7 @@ def _block(table: str, scheme: str) -> dict[str, list[str]]:
     lines = table.splitlines()
     start = next(i for i, line in enumerate(lines) if line.startswith(f"{scheme}:"))
     rows = {}
-    for line in lines[start + 2:]:
+    for line in lines[start + 2 :]:
         if not line.strip():
             break
         cells = line.split()
@@ -61,8 +61,9 @@ def test_main_without_arguments_runs_the_demo(capsys):
 
 
 def test_python_dash_m_runs(tmp_path):
-    done = subprocess.run([sys.executable, "-m", "pentanb"], capture_output=True, text=True,
-                          check=True, cwd=tmp_path)
+    done = subprocess.run(
+        [sys.executable, "-m", "pentanb"], capture_output=True, text=True, check=True, cwd=tmp_path
+    )
     assert _block(done.stdout, "pentagonalize")["cube"][:3] == ["38", "60", "24"]
 
 

@@ -91,17 +91,19 @@ def test_ray_distances_on_a_cube():
 
 def test_edge_waviness_is_zero_on_a_straight_edge_and_sees_a_wave():
     from pentanb.shapes import hard_edged_cube
+
     cube = hard_edged_cube(1 / 3)
     assert cv.edge_waviness(cube) == pytest.approx(0.0, abs=1e-9)
     v = cube.vertices.copy()
     ridge = (v[:, 1] == 1) & (v[:, 2] == 1)
-    v[ridge, 1:] += 0.05 * np.cos(np.pi * v[ridge, 0])[:, None]   # bend the edge
+    v[ridge, 1:] += 0.05 * np.cos(np.pi * v[ridge, 0])[:, None]  # bend the edge
     assert cv.edge_waviness(cube.with_vertices(v)) > 0.02
 
 
 def test_pentagonalization_makes_smaller_waves_than_honeycomb():
     # Section 1: no lateral artifact on the hard-edged cube of Figure 1
     from pentanb.shapes import hard_edged_cube
+
     cube = hard_edged_cube()
     ours = cv.edge_waviness(pentanb.subdivide(cube, "pentagonalize", 1, 2))
     theirs = cv.edge_waviness(pentanb.subdivide(cube, "honeycomb", 1, 2))

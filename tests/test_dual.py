@@ -7,12 +7,19 @@ come from that definition, computed here in plain Python.
 
 from __future__ import annotations
 
+import itertools
 from collections import defaultdict
 
 import numpy as np
 import pytest
-from helpers import (check_valid, corpus, face_lists, is_isomorphic,
-                     same_faces_up_to_rotation, vertex_configurations)
+from helpers import (
+    check_valid,
+    corpus,
+    face_lists,
+    is_isomorphic,
+    same_faces_up_to_rotation,
+    vertex_configurations,
+)
 
 from pentanb import Mesh, dual, pentagonalize, preserve_pentagons, shapes, smooth
 
@@ -111,12 +118,20 @@ def test_dual_of_cube_is_octahedron():
     assert is_isomorphic(d, shapes.octahedron())
     # vertices are the face centres: +-1 on the axes, like the octahedron's
     assert sorted(map(tuple, d.vertices.tolist())) == sorted(
-        map(tuple, shapes.octahedron().vertices.tolist()))
+        map(tuple, shapes.octahedron().vertices.tolist())
+    )
 
 
-@pytest.mark.parametrize("name, dual_name", [
-    ("tetrahedron", "tetrahedron"), ("cube", "octahedron"), ("octahedron", "cube"),
-    ("icosahedron", "dodecahedron"), ("dodecahedron", "icosahedron")])
+@pytest.mark.parametrize(
+    "name, dual_name",
+    [
+        ("tetrahedron", "tetrahedron"),
+        ("cube", "octahedron"),
+        ("octahedron", "cube"),
+        ("icosahedron", "dodecahedron"),
+        ("dodecahedron", "icosahedron"),
+    ],
+)
 def test_duals_of_platonic_solids(name, dual_name):
     assert is_isomorphic(dual(shapes.get(name)), shapes.get(dual_name))
 
@@ -137,7 +152,7 @@ def test_dual_leaves_input_unchanged(corpus_mesh):
 
 
 def test_dual_refuses_non_mesh():
-    with pytest.raises(TypeError, match="dual expects a pentanb.Mesh"):
+    with pytest.raises(TypeError, match=r"dual expects a pentanb\.Mesh"):
         dual([[0, 0, 0]])
 
 
@@ -183,8 +198,11 @@ def test_claim_dual_even_keeps_type(corpus_name, k):
 
 
 def test_claim_dual_even_keeps_pentagonal_meshes_pentagonal():
-    for m in (shapes.dodecahedron(), pentagonalize(shapes.cube()),
-              preserve_pentagons(shapes.dodecahedron())):
+    for m in (
+        shapes.dodecahedron(),
+        pentagonalize(shapes.cube()),
+        preserve_pentagons(shapes.dodecahedron()),
+    ):
         for duals in (2, 4):
             assert smooth(m, duals).face_size_histogram() == {5: m.n_faces}
 
@@ -214,8 +232,8 @@ def test_claim_duals_make_tetrahedron_dodecahedron_rounder():
 
     even = [radius_spread(smooth(b, 2 * k)) for k in range(4)]
     odd = [edge_spread(smooth(b, 2 * k + 1)) for k in range(4)]
-    assert all(x > y for x, y in zip(even, even[1:]))
-    assert all(x > y for x, y in zip(odd, odd[1:]))
+    assert all(x > y for x, y in itertools.pairwise(even))
+    assert all(x > y for x, y in itertools.pairwise(odd))
     # (B) is dodecahedral: every dual of it alternates icosahedron, dodecahedron
     for k in range(4):
         assert is_isomorphic(smooth(b, 2 * k + 1), shapes.icosahedron())

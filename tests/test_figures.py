@@ -39,8 +39,7 @@ ROOT = Path(__file__).resolve().parent.parent
 COMMITTED = ROOT / "figures"
 #: matplotlib version the committed PNGs were rendered with.
 COMMITTED_WITH = "3.11.2"
-EXPECTED_FILES = [f"fig{i:02d}.png" for i in range(1, 14)] + ["equation1.png",
-                                                              "convergence.png"]
+EXPECTED_FILES = [f"fig{i:02d}.png" for i in range(1, 14)] + ["equation1.png", "convergence.png"]
 
 
 # ---------------------------------------------------------------------- the command
@@ -61,7 +60,7 @@ def drawn():
 
 
 def test_command_succeeds_and_writes_every_png(figures_run):
-    status, report, progress, out = figures_run
+    status, report, _progress, out = figures_run
     assert status == 0, report
     assert sorted(p.name for p in out.glob("*.png")) == sorted(EXPECTED_FILES)
     for name in EXPECTED_FILES:
@@ -91,19 +90,20 @@ def test_report_lists_every_figure_and_marks_each_claim(figures_run):
 
 def test_report_shows_configurations(figures_run):
     _, report, _, _ = figures_run
-    assert "3.3.4.3.4: 192" in report        # Figure 8: 4.3.3.4.3 regions
-    assert "3.3.3.3.6: 432" in report        # Figure 9: 6.3.3.3.3 everywhere
+    assert "3.3.4.3.4: 192" in report  # Figure 8: 4.3.3.4.3 regions
+    assert "3.3.3.3.6: 432" in report  # Figure 9: 6.3.3.3.3 everywhere
 
 
 def test_pngs_are_byte_identical_to_the_committed_ones(figures_run):
     _, _, _, out = figures_run
     if matplotlib.__version__ != COMMITTED_WITH:
-        pytest.skip(f"committed PNGs were drawn with matplotlib {COMMITTED_WITH}, "
-                    f"this is {matplotlib.__version__}")
+        pytest.skip(
+            f"committed PNGs were drawn with matplotlib {COMMITTED_WITH}, "
+            f"this is {matplotlib.__version__}"
+        )
     missing = [n for n in EXPECTED_FILES if not (COMMITTED / n).exists()]
     assert not missing, f"not committed: {missing}"
-    differ = [n for n in EXPECTED_FILES
-              if (COMMITTED / n).read_bytes() != (out / n).read_bytes()]
+    differ = [n for n in EXPECTED_FILES if (COMMITTED / n).read_bytes() != (out / n).read_bytes()]
     assert not differ, f"rewritten differently: {differ}"
 
 
@@ -124,16 +124,23 @@ def test_png_carries_no_version_or_time(figures_run):
 def test_failing_claim_gives_nonzero_exit(monkeypatch, tmp_path):
     spec = figures.FIGURES["fig02"]
     bad = figures.Claim("a claim that does not hold", 1, 2, False)
-    monkeypatch.setitem(figures.FIGURES, "fig02",
-                        figures.FigureSpec(spec.name, spec.title, spec.caption, spec.draw,
-                                           lambda: [bad], spec.panels))
+    monkeypatch.setitem(
+        figures.FIGURES,
+        "fig02",
+        figures.FigureSpec(
+            spec.name, spec.title, spec.caption, spec.draw, lambda: [bad], spec.panels
+        ),
+    )
     buf = io.StringIO()
     with contextlib.redirect_stdout(buf), contextlib.redirect_stderr(io.StringIO()):
         status = main(["figures", "--out", str(tmp_path), "--only", "2"])
     assert status == 1
     assert "[FAIL] a claim that does not hold" in buf.getvalue()
-    assert buf.getvalue().splitlines()[-1].endswith(
-        "claims hold; FAILED: fig02: a claim that does not hold")
+    assert (
+        buf.getvalue()
+        .splitlines()[-1]
+        .endswith("claims hold; FAILED: fig02: a claim that does not hold")
+    )
 
 
 # ---------------------------------------------------------------------- every figure
@@ -172,7 +179,7 @@ def test_mesh_figures_are_3d_with_a_face_legend(drawn, name):
     assert all(ax.name == "3d" for ax in fig.axes)
     assert len(fig.legends) == 1
     texts = [t.get_text() for t in fig.legends[0].get_texts()]
-    for ax in fig.axes:   # one collection of polygons, axis off
+    for ax in fig.axes:  # one collection of polygons, axis off
         assert not ax.axison
         assert len(ax.collections) == 1
     assert texts and all(t.endswith(")") and t.split("(")[-1][:-1].isdigit() for t in texts)
@@ -211,10 +218,13 @@ def test_fig07_tetrahedron_becomes_dodecahedron():
     assert d.face_size_histogram() == {5: 12} and d.valence_histogram() == {3: 20}
 
 
-@pytest.mark.parametrize("name, expected", [
-    ("fig08", {"3.3.4.3.4": 192, "3.3.3.3.4": 24}),
-    ("fig09", {"3.3.3.3.6": 432}),
-])
+@pytest.mark.parametrize(
+    "name, expected",
+    [
+        ("fig08", {"3.3.4.3.4": 192, "3.3.3.3.4": 24}),
+        ("fig09", {"3.3.3.3.6": 432}),
+    ],
+)
 def test_semiregular_configurations(name, expected):
     a = figures._m(f"{name[:3]}{int(name[3:])}A")
     b = pentanb.dual(a)
@@ -223,8 +233,11 @@ def test_semiregular_configurations(name, expected):
 
 
 def test_equation1_matches_meshes():
-    for mesh in (pentanb.shapes.dodecahedron(), figures._m("fig12B"),
-                 pentanb.shapes.hexagonal_surface(2)):
+    for mesh in (
+        pentanb.shapes.dodecahedron(),
+        figures._m("fig12B"),
+        pentanb.shapes.hexagonal_surface(2),
+    ):
         n = int(mesh.face_sizes[0])
         eq = Fraction(2 * n, n - 2) * (1 + Fraction(2 * mesh.genus - 2, mesh.n_vertices))
         assert eq == Fraction(2 * mesh.n_edges, mesh.n_vertices)
@@ -268,8 +281,7 @@ def _slow_face_configs(mesh):
     return [_canon(mesh.valences[f].tolist()) for f in mesh.faces]
 
 
-@pytest.mark.parametrize("shape", ["cube", "icosahedron", "torus", "hexagonal_genus2",
-                                   "animal"])
+@pytest.mark.parametrize("shape", ["cube", "icosahedron", "torus", "hexagonal_genus2", "animal"])
 def test_configurations_match_slow_reference(shape):
     mesh = pentanb.preserve_pentagons(pentanb.shapes.get(shape))
     assert figures.vertex_configurations(mesh) == _slow_vertex_configs(mesh)
@@ -281,20 +293,20 @@ def test_canonical_configuration():
     assert figures.canonical_configuration("3.4.3.4.3") == "3.3.4.3.4"
     assert figures.canonical_configuration("6.3.3.3.3") == "3.3.3.3.6"
     assert figures.canonical_configuration([4, 6, 8]) == "4.6.8"
-    assert figures.canonical_configuration([4, 8, 6]) == "4.6.8"   # a reflection
-    assert figures.configuration_counts(["5.5.5", "3.3.3", "5.5.5"]) == {"5.5.5": 2,
-                                                                         "3.3.3": 1}
+    assert figures.canonical_configuration([4, 8, 6]) == "4.6.8"  # a reflection
+    assert figures.configuration_counts(["5.5.5", "3.3.3", "5.5.5"]) == {"5.5.5": 2, "3.3.3": 1}
 
 
 def test_dual_swaps_vertex_and_face_configurations():
     mesh = figures._m("fig11A")
-    assert sorted(figures.face_configurations(mesh)) == \
-        sorted(figures.vertex_configurations(pentanb.dual(mesh)))
+    assert sorted(figures.face_configurations(mesh)) == sorted(
+        figures.vertex_configurations(pentanb.dual(mesh))
+    )
 
 
 # ---------------------------------------------------------------------- drawing module
 def test_face_polygons_vectorized_equals_per_face():
-    mesh = figures._m("fig3B")                                   # triangles, quads, pentagon
+    mesh = figures._m("fig3B")  # triangles, quads, pentagon
     polys = vz.face_polygons(mesh)
     assert len(polys) == mesh.n_faces
     for f, p in zip(mesh.faces, polys):
@@ -312,7 +324,7 @@ def test_shading_keeps_hue_and_darkens_faces_turned_away():
     flat = vz.shaded_colors(mesh, shade=False)
     lit = vz.shaded_colors(mesh)
     ratio = lit.sum(axis=1) / flat.sum(axis=1)
-    assert np.allclose(lit, flat * ratio[:, None])               # same colour, scaled
+    assert np.allclose(lit, flat * ratio[:, None])  # same colour, scaled
     assert ratio.min() >= vz.AMBIENT - 1e-12 and ratio.max() <= 1 + 1e-12
     assert ratio.max() - ratio.min() > 0.2
 
@@ -326,6 +338,7 @@ def test_plot_mesh_and_legend():
 
 def test_big_mesh_draws_every_face():
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
     mesh = pentanb.subdivide(pentanb.shapes.animal(), "pentagonalize", 2, 2)
     fig = vz.plot_mesh(mesh)
     fig.savefig(io.BytesIO(), format="png")
@@ -334,15 +347,20 @@ def test_big_mesh_draws_every_face():
 
 
 def test_import_pentanb_does_not_import_matplotlib():
-    code = ("import sys, pentanb, pentanb.convergence, pentanb.cli; "
-            "pentanb.cli.demo_table(['cube']); "
-            "assert 'matplotlib' not in sys.modules, 'matplotlib imported'")
+    code = (
+        "import sys, pentanb, pentanb.convergence, pentanb.cli; "
+        "pentanb.cli.demo_table(['cube']); "
+        "assert 'matplotlib' not in sys.modules, 'matplotlib imported'"
+    )
     subprocess.run([sys.executable, "-c", code], check=True)
 
 
 def test_plot_meshes_one_panel_per_mesh_and_one_legend():
-    meshes = [pentanb.shapes.tetrahedron(), pentanb.shapes.cube(),
-              pentanb.pentagonalize(pentanb.shapes.cube())]
+    meshes = [
+        pentanb.shapes.tetrahedron(),
+        pentanb.shapes.cube(),
+        pentanb.pentagonalize(pentanb.shapes.cube()),
+    ]
     fig = vz.plot_meshes(meshes, ["a", "b", "c"], ncols=2)
     assert [ax.get_title() for ax in fig.axes] == ["a", "b", "c"]
     labels = [t.get_text() for t in fig.legends[0].get_texts()]

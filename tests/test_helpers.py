@@ -8,9 +8,25 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from helpers import (CORPUS_NAMES, check_valid, corpus, cyclic_equal, darts, expected_counts,
-                     face_lists, is_isomorphic, kis, merge_faces, n_components, polyhedral,
-                     prism, reflect, same_faces_up_to_rotation, two_cubes, vertex_configurations)
+from helpers import (
+    CORPUS_NAMES,
+    check_valid,
+    corpus,
+    cyclic_equal,
+    darts,
+    expected_counts,
+    face_lists,
+    is_isomorphic,
+    kis,
+    merge_faces,
+    n_components,
+    polyhedral,
+    prism,
+    reflect,
+    same_faces_up_to_rotation,
+    two_cubes,
+    vertex_configurations,
+)
 
 from pentanb import Mesh, MeshError, pentagonalize, shapes
 
@@ -53,8 +69,7 @@ def test_check_valid_catches_a_wrong_twin():
     m = Mesh.from_csr(c.vertices, c.corners, c.offsets, twin=bad, validate=False)
     with pytest.raises(AssertionError):
         check_valid(m)
-    check_valid(Mesh.from_csr(c.vertices, c.corners, c.offsets, twin=c.twin.copy(),
-                              validate=False))
+    check_valid(Mesh.from_csr(c.vertices, c.corners, c.offsets, twin=c.twin.copy(), validate=False))
 
 
 def test_check_valid_catches_an_invalid_mesh():
@@ -77,7 +92,7 @@ def test_darts_by_hand():
 
 def test_same_faces_up_to_rotation():
     assert same_faces_up_to_rotation([[1, 2, 3], [4, 5, 6, 7]], [[2, 3, 1], [7, 4, 5, 6]])
-    assert not same_faces_up_to_rotation([[1, 2, 3]], [[1, 3, 2]])        # reversed
+    assert not same_faces_up_to_rotation([[1, 2, 3]], [[1, 3, 2]])  # reversed
     assert not same_faces_up_to_rotation([[1, 2, 3], [4, 5, 6]], [[4, 5, 6], [1, 2, 3]])
     assert not same_faces_up_to_rotation([[1, 2, 3]], [[1, 2, 3, 4]])
 
@@ -121,15 +136,18 @@ def test_kis_counts():
         m = corpus(name)
         k = kis(m)
         assert (k.n_vertices, k.n_edges, k.n_faces) == (
-            m.n_vertices + m.n_faces, 3 * m.n_edges, 2 * m.n_edges)
+            m.n_vertices + m.n_faces,
+            3 * m.n_edges,
+            2 * m.n_edges,
+        )
     # kis(cube) is the tetrakis hexahedron: 6 four-valent and 8 six-valent vertices
     assert kis(shapes.cube()).valence_histogram() == {4: 6, 6: 8}
 
 
 def test_polyhedral():
     assert polyhedral(face_lists(shapes.cube()), 8)
-    assert not polyhedral([[0, 1, 2], [0, 2, 1]], 3)                   # 2-valent
-    assert not polyhedral(face_lists(shapes.cube()), 9)                # unused vertex
+    assert not polyhedral([[0, 1, 2], [0, 2, 1]], 3)  # 2-valent
+    assert not polyhedral(face_lists(shapes.cube()), 9)  # unused vertex
 
 
 def test_merge_faces_by_hand():
@@ -158,7 +176,7 @@ def test_cyclic_equal():
     assert cyclic_equal((3, 4, 3, 3, 4), (4, 3, 3, 4, 3))
     assert not cyclic_equal((3, 3, 3, 3, 4), (4, 3, 3, 4, 3))
     assert not cyclic_equal((4, 3, 3, 4), (4, 3, 3, 4, 3))
-    assert cyclic_equal((1, 2, 3), (3, 2, 1))                          # reversed
+    assert cyclic_equal((1, 2, 3), (3, 2, 1))  # reversed
 
 
 def test_expected_counts_by_hand():

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import os
-import re
 import pathlib
+import re
 
 import numpy as np
 import pytest
@@ -13,8 +13,14 @@ from helpers import face_lists
 from pentanb import MeshError, read, shapes, write
 from pentanb.io import read_obj, read_off, write_obj, write_off
 
-CUBE_OBJ_FACES = [[1, 2, 4, 3], [5, 7, 8, 6], [1, 5, 6, 2], [3, 4, 8, 7], [1, 3, 7, 5],
-                  [2, 6, 8, 4]]
+CUBE_OBJ_FACES = [
+    [1, 2, 4, 3],
+    [5, 7, 8, 6],
+    [1, 5, 6, 2],
+    [3, 4, 8, 7],
+    [1, 3, 7, 5],
+    [2, 6, 8, 4],
+]
 
 
 def cube_v_lines():
@@ -42,7 +48,7 @@ def test_round_trip_is_exact(tmp_path, corpus_mesh, ext):
     path = tmp_path / f"mesh{ext}"
     write(m, path)
     back = read(path)
-    assert back.vertices.tobytes() == m.vertices.tobytes()      # bitwise
+    assert back.vertices.tobytes() == m.vertices.tobytes()  # bitwise
     assert face_lists(back) == face_lists(m)
     assert not list(tmp_path.glob("*.part"))
 
@@ -86,21 +92,35 @@ def test_write_obj_and_write_off_fix_the_suffix(tmp_path):
 def test_obj_with_slashes_negative_indices_and_other_lines(tmp_path):
     lines = ["# a cube", "mtllib cube.mtl", "o cube", "g box", "s 1", ""]
     lines += cube_v_lines()
-    lines += ["vn 0 0 1", "vt 0.5 0.5", "usemtl red",
-              "f 1/1/1 2/2/2 4/3/3 3/4/4",           # v/vt/vn
-              "f 5//1 7//1 8//1 6//1",               # v//vn
-              "f 1/1 5/2 6/3 2/4  # an inline comment",
-              "f -6 -5 -1 -2",                       # relative: 3 4 8 7
-              "f 1 3 7 5",
-              "f 2 6 8 4", "", "   "]
+    lines += [
+        "vn 0 0 1",
+        "vt 0.5 0.5",
+        "usemtl red",
+        "f 1/1/1 2/2/2 4/3/3 3/4/4",  # v/vt/vn
+        "f 5//1 7//1 8//1 6//1",  # v//vn
+        "f 1/1 5/2 6/3 2/4  # an inline comment",
+        "f -6 -5 -1 -2",  # relative: 3 4 8 7
+        "f 1 3 7 5",
+        "f 2 6 8 4",
+        "",
+        "   ",
+    ]
     m = read(write_text(tmp_path / "cube.obj", lines))
     assert face_lists(m) == [[i - 1 for i in f] for f in CUBE_OBJ_FACES]
     assert np.array_equal(m.vertices, shapes.cube().vertices)
 
 
 def test_obj_negative_indices_are_relative_to_vertices_so_far(tmp_path):
-    lines = ["v 0 0 0", "v 1 0 0", "v 0 1 0", "f -3 -1 -2",        # (0, 2, 1)
-             "v 0 0 1", "f -4 -3 -1", "f -3 -2 -1", "f -4 -1 -2"]  # (0,1,3) (1,2,3) (0,3,2)
+    lines = [
+        "v 0 0 0",
+        "v 1 0 0",
+        "v 0 1 0",
+        "f -3 -1 -2",  # (0, 2, 1)
+        "v 0 0 1",
+        "f -4 -3 -1",
+        "f -3 -2 -1",
+        "f -4 -1 -2",
+    ]  # (0,1,3) (1,2,3) (0,3,2)
     m = read(write_text(tmp_path / "t.obj", lines))
     assert face_lists(m) == [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]]
 
@@ -135,10 +155,13 @@ def test_obj_short_vertex_line(tmp_path):
 
 def test_obj_face_index_out_of_range(tmp_path):
     lines = _cube_obj_lines()
-    lines[10] = "f 5 7 9 6"                 # line 11: only 8 vertices
+    lines[10] = "f 5 7 9 6"  # line 11: only 8 vertices
     path = write_text(tmp_path / "bad.obj", lines)
-    with pytest.raises(MeshError, match=rf"{esc(path)}:11: face index 9 out of range "
-                                        r"\(8 vertices in the file\)"):
+    with pytest.raises(
+        MeshError,
+        match=rf"{esc(path)}:11: face index 9 out of range "
+        r"\(8 vertices in the file\)",
+    ):
         read(path)
 
 
@@ -173,10 +196,13 @@ def test_obj_without_faces(tmp_path):
 
 
 def test_obj_non_manifold_raises_the_mesh_message_prefixed_with_the_file(tmp_path):
-    lines = _cube_obj_lines()[:-1]                  # the cube minus its last face
+    lines = _cube_obj_lines()[:-1]  # the cube minus its last face
     path = write_text(tmp_path / "open.obj", lines)
-    with pytest.raises(MeshError, match=rf"^{esc(path)}: edge \(\d+, \d+\) of face \d+ has only "
-                                        r"one side \(a boundary\)"):
+    with pytest.raises(
+        MeshError,
+        match=rf"^{esc(path)}: edge \(\d+, \d+\) of face \d+ has only "
+        r"one side \(a boundary\)",
+    ):
         read(path)
 
 
@@ -244,16 +270,19 @@ def test_off_bad_counts_line(tmp_path):
 
 
 def test_off_count_mismatch(tmp_path):
-    lines = _cube_off_lines()[:-1]                  # header says 6 faces, 5 given
+    lines = _cube_off_lines()[:-1]  # header says 6 faces, 5 given
     path = write_text(tmp_path / "bad.off", lines)
-    with pytest.raises(MeshError, match=rf"{esc(path)}: header says 8 vertices and 6 faces "
-                                        r"\(14 lines\) but the file has 13 data lines"):
+    with pytest.raises(
+        MeshError,
+        match=rf"{esc(path)}: header says 8 vertices and 6 faces "
+        r"\(14 lines\) but the file has 13 data lines",
+    ):
         read(path)
 
 
 def test_off_bad_vertex_line(tmp_path):
     lines = _cube_off_lines()
-    lines[4] = "1.0 nope 1.0"                       # line 5
+    lines[4] = "1.0 nope 1.0"  # line 5
     path = write_text(tmp_path / "bad.off", lines)
     with pytest.raises(MeshError, match=rf"{esc(path)}:5: bad vertex line '1.0 nope 1.0'"):
         read(path)
@@ -261,7 +290,7 @@ def test_off_bad_vertex_line(tmp_path):
 
 def test_off_short_vertex_line(tmp_path):
     lines = _cube_off_lines()
-    lines[3] = "1.0 1.0"                            # line 4
+    lines[3] = "1.0 1.0"  # line 4
     path = write_text(tmp_path / "bad.off", lines)
     with pytest.raises(MeshError, match=rf"{esc(path)}:4: bad vertex line"):
         read(path)
@@ -269,7 +298,7 @@ def test_off_short_vertex_line(tmp_path):
 
 def test_off_bad_face_line(tmp_path):
     lines = _cube_off_lines()
-    lines[11] = "4 0 x 3 2"                         # line 12
+    lines[11] = "4 0 x 3 2"  # line 12
     path = write_text(tmp_path / "bad.off", lines)
     with pytest.raises(MeshError, match=rf"{esc(path)}:12: bad face line '4 0 x 3 2'"):
         read(path)
@@ -277,7 +306,7 @@ def test_off_bad_face_line(tmp_path):
 
 def test_off_face_with_too_few_indices(tmp_path):
     lines = _cube_off_lines()
-    lines[10] = "4 0 1 3"                           # line 11
+    lines[10] = "4 0 1 3"  # line 11
     path = write_text(tmp_path / "bad.off", lines)
     with pytest.raises(MeshError, match=rf"{esc(path)}:11: face says 4 vertices but lists 3"):
         read(path)
@@ -285,10 +314,13 @@ def test_off_face_with_too_few_indices(tmp_path):
 
 def test_off_face_index_out_of_range(tmp_path):
     lines = _cube_off_lines()
-    lines[13] = "4 1 5 8 3"                         # line 14
+    lines[13] = "4 1 5 8 3"  # line 14
     path = write_text(tmp_path / "bad.off", lines)
-    with pytest.raises(MeshError, match=rf"{esc(path)}:14: face index 8 out of range "
-                                        r"\(8 vertices\)"):
+    with pytest.raises(
+        MeshError,
+        match=rf"{esc(path)}:14: face index 8 out of range "
+        r"\(8 vertices\)",
+    ):
         read(path)
 
 
@@ -357,8 +389,16 @@ def test_write_replaces_an_existing_file(tmp_path):
 
 def test_obj_face_may_refer_to_a_vertex_defined_later(tmp_path):
     # OBJ readers commonly accept faces before the vertices they use
-    lines = ["f 1 2 3", "f 1 3 4", "f 1 4 2", "f 2 4 3",
-             "v 1 1 1", "v 1 -1 -1", "v -1 1 -1", "v -1 -1 1"]
+    lines = [
+        "f 1 2 3",
+        "f 1 3 4",
+        "f 1 4 2",
+        "f 2 4 3",
+        "v 1 1 1",
+        "v 1 -1 -1",
+        "v -1 1 -1",
+        "v -1 -1 1",
+    ]
     path = write_text(tmp_path / "late.obj", lines)
     m = read(path)
     assert (m.n_vertices, m.n_edges, m.n_faces) == (4, 6, 4)

@@ -7,6 +7,8 @@ with x, y, z in {-1, 1} written as bits) or Euler's formula.
 
 from __future__ import annotations
 
+import functools
+import operator
 import re
 
 import numpy as np
@@ -15,14 +17,15 @@ from helpers import check_valid, corpus, face_lists, two_cubes
 
 from pentanb import Mesh, MeshError, dual, pentagonalize, shapes
 
-CUBE_FACES = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4],
-              [1, 5, 7, 3]]
+CUBE_FACES = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]
 
 
 def cube_vertices() -> np.ndarray:
     # vertex 4x + 2y + z at (x, y, z), bits mapped 0 -> -1, 1 -> +1
-    return np.array([[2 * ((i >> 2) & 1) - 1, 2 * ((i >> 1) & 1) - 1, 2 * (i & 1) - 1]
-                     for i in range(8)], dtype=float)
+    return np.array(
+        [[2 * ((i >> 2) & 1) - 1, 2 * ((i >> 1) & 1) - 1, 2 * (i & 1) - 1] for i in range(8)],
+        dtype=float,
+    )
 
 
 def tetra_faces(a, b, c, d):
@@ -39,7 +42,7 @@ def test_cube_from_ragged_list():
     m = Mesh(cube_vertices(), CUBE_FACES)
     assert [f.tolist() for f in m.faces] == CUBE_FACES
     assert m.offsets.tolist() == [0, 4, 8, 12, 16, 20, 24]
-    assert m.corners.tolist() == sum(CUBE_FACES, [])
+    assert m.corners.tolist() == functools.reduce(operator.iadd, CUBE_FACES, [])
 
 
 def test_faces_as_int_array_and_as_list_agree():
@@ -53,7 +56,7 @@ def test_faces_as_int_array_and_as_list_agree():
 
 def test_faces_as_float_array_of_whole_numbers_are_accepted():
     m = Mesh(cube_vertices(), np.array(CUBE_FACES, dtype=float))
-    assert m.corners.tolist() == sum(CUBE_FACES, [])
+    assert m.corners.tolist() == functools.reduce(operator.iadd, CUBE_FACES, [])
 
 
 def test_non_integer_face_indices_are_refused():
@@ -84,8 +87,11 @@ def test_mesh_error_is_a_value_error():
 def test_error_index_out_of_range_names_face_and_index():
     faces = [list(f) for f in CUBE_FACES]
     faces[3] = [2, 3, 8, 6]
-    with pytest.raises(MeshError, match=r"face 3 uses vertex index 8, out of range for 8 "
-                                        r"vertices"):
+    with pytest.raises(
+        MeshError,
+        match=r"face 3 uses vertex index 8, out of range for 8 "
+        r"vertices",
+    ):
         Mesh(cube_vertices(), faces)
 
 
@@ -104,19 +110,26 @@ def test_error_face_with_fewer_than_3_vertices():
 def test_error_face_with_repeated_vertex():
     faces = [list(f) for f in CUBE_FACES]
     faces[5] = [1, 5, 5, 3]
-    with pytest.raises(MeshError, match=r"face 5 \[1, 5, 5, 3\] repeats vertex 5 "
-                                        r"\(3 distinct vertices\)"):
+    with pytest.raises(
+        MeshError,
+        match=r"face 5 \[1, 5, 5, 3\] repeats vertex 5 "
+        r"\(3 distinct vertices\)",
+    ):
         Mesh(cube_vertices(), faces)
 
 
 def test_error_flipped_face_names_the_directed_edge_and_both_faces():
     faces = [list(f) for f in CUBE_FACES]
-    faces[2] = faces[2][::-1]          # [1, 5, 4, 0]: every edge now runs like its neighbour's
-    with pytest.raises(MeshError, match=r"directed edge \((\d+), (\d+)\) is used by faces "
-                                        r"\[(\d+), (\d+)\]: inconsistent orientation") as info:
+    faces[2] = faces[2][::-1]  # [1, 5, 4, 0]: every edge now runs like its neighbour's
+    with pytest.raises(
+        MeshError,
+        match=r"directed edge \((\d+), (\d+)\) is used by faces "
+        r"\[(\d+), (\d+)\]: inconsistent orientation",
+    ) as info:
         Mesh(cube_vertices(), faces)
-    u, w, f, g = map(int, re.search(r"\((\d+), (\d+)\).*\[(\d+), (\d+)\]",
-                                         str(info.value)).groups())
+    u, w, f, g = map(
+        int, re.search(r"\((\d+), (\d+)\).*\[(\d+), (\d+)\]", str(info.value)).groups()
+    )
     assert 2 in (f, g)
     for k in (f, g):
         fk = faces[k]
@@ -126,8 +139,11 @@ def test_error_flipped_face_names_the_directed_edge_and_both_faces():
 def test_error_three_faces_on_one_edge():
     # three triangles hinge on edge {0, 1}: two of them run 0 -> 1
     v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]], dtype=float)
-    with pytest.raises(MeshError, match=r"directed edge \(0, 1\) is used by faces \[0, 2\]: "
-                                        r".*non-manifold edge"):
+    with pytest.raises(
+        MeshError,
+        match=r"directed edge \(0, 1\) is used by faces \[0, 2\]: "
+        r".*non-manifold edge",
+    ):
         Mesh(v, [[0, 1, 2], [1, 0, 3], [0, 1, 4]])
 
 
@@ -141,9 +157,12 @@ def test_error_two_tetrahedra_sharing_an_edge():
 
 def test_error_boundary_names_the_edge_and_face():
     faces = [list(f) for f in CUBE_FACES]
-    removed = faces.pop(5)             # [1, 5, 7, 3]
-    with pytest.raises(MeshError, match=r"edge \((\d+), (\d+)\) of face (\d+) has only one "
-                                        r"side \(a boundary\)") as info:
+    removed = faces.pop(5)  # [1, 5, 7, 3]
+    with pytest.raises(
+        MeshError,
+        match=r"edge \((\d+), (\d+)\) of face (\d+) has only one "
+        r"side \(a boundary\)",
+    ) as info:
         Mesh(cube_vertices(), faces)
     u, w, f = map(int, re.search(r"\((\d+), (\d+)\) of face (\d+)", str(info.value)).groups())
     # the edge runs opposite to one of the removed face's edges, inside face f
@@ -156,15 +175,21 @@ def test_error_vertex_with_two_fans():
     # the first moved up by 1, its vertex 0 landing on vertex 3
     v = np.concatenate([TETRA, TETRA[1:] + [0, 0, 1]])
     faces = tetra_faces(0, 1, 2, 3) + tetra_faces(3, 4, 5, 6)
-    with pytest.raises(MeshError, match=r"vertex 3 is non-manifold: its faces form more than "
-                                        r"one fan"):
+    with pytest.raises(
+        MeshError,
+        match=r"vertex 3 is non-manifold: its faces form more than "
+        r"one fan",
+    ):
         Mesh(v, faces)
 
 
 def test_error_unused_vertex_names_it_and_counts():
     v = np.concatenate([cube_vertices(), [[0, 0, 0], [5, 5, 5]]])
-    with pytest.raises(MeshError, match=r"vertex 8 is not used by any face "
-                                        r"\(2 unused vertices\)"):
+    with pytest.raises(
+        MeshError,
+        match=r"vertex 8 is not used by any face "
+        r"\(2 unused vertices\)",
+    ):
         Mesh(v, CUBE_FACES)
 
 
@@ -179,8 +204,11 @@ def test_error_non_finite_coordinate(bad):
 @pytest.mark.parametrize("shape", [(8, 2), (8, 4), (24,), (2, 4, 3)])
 def test_error_wrong_vertex_shape(shape):
     v = np.zeros(shape)
-    with pytest.raises(MeshError, match=r"vertices must be an \(n, 3\) array, got shape "
-                                        + repr(shape).replace("(", r"\(").replace(")", r"\)")):
+    with pytest.raises(
+        MeshError,
+        match=r"vertices must be an \(n, 3\) array, got shape "
+        + repr(shape).replace("(", r"\(").replace(")", r"\)"),
+    ):
         Mesh(v, CUBE_FACES)
 
 
@@ -209,7 +237,7 @@ def test_valid_meshes_raise_nothing():
 
 # ====================================================================== from_csr, with_vertices
 def test_from_csr_validates_by_default():
-    c = np.array(sum(CUBE_FACES[:5], []))
+    c = np.array(functools.reduce(operator.iadd, CUBE_FACES[:5], []))
     o = np.arange(0, 21, 4)
     with pytest.raises(MeshError, match="boundary"):
         Mesh.from_csr(cube_vertices(), c, o)
@@ -222,14 +250,16 @@ def test_from_csr_refuses_bad_offsets(offsets):
 
 
 def test_from_csr_equals_constructor():
-    m = Mesh.from_csr(cube_vertices(), sum(CUBE_FACES, []), np.arange(0, 25, 4))
+    m = Mesh.from_csr(
+        cube_vertices(), functools.reduce(operator.iadd, CUBE_FACES, []), np.arange(0, 25, 4)
+    )
     n = Mesh(cube_vertices(), CUBE_FACES)
     assert np.array_equal(m.corners, n.corners) and np.array_equal(m.twin, n.twin)
 
 
 def test_from_csr_copies_its_inputs():
     # a mesh is immutable: it must not alias (nor freeze) the caller's arrays
-    base = np.array(sum(CUBE_FACES, []), dtype=np.int64)
+    base = np.array(functools.reduce(operator.iadd, CUBE_FACES, []), dtype=np.int64)
     offsets = np.arange(0, 25, 4, dtype=np.int64)
     view = base[:]
     m = Mesh.from_csr(cube_vertices(), view, offsets)
@@ -264,8 +294,20 @@ def test_with_vertices_refuses_wrong_shape_and_nan():
 # ====================================================================== immutability
 def test_arrays_are_read_only():
     m = Mesh(cube_vertices(), CUBE_FACES)
-    for arr in (m.vertices, m.corners, m.offsets, m.twin, m.next, m.prev, m.head,
-                m.face_sizes, m.valences, m.halfedge_edge, m.edges, m.face_centroids):
+    for arr in (
+        m.vertices,
+        m.corners,
+        m.offsets,
+        m.twin,
+        m.next,
+        m.prev,
+        m.head,
+        m.face_sizes,
+        m.valences,
+        m.halfedge_edge,
+        m.edges,
+        m.face_centroids,
+    ):
         with pytest.raises(ValueError):
             arr[0] = 1
 
@@ -278,14 +320,28 @@ def test_derived_arrays_are_read_only():
         meshes += [m0, dual(m0), dual(dual(m0)), pentagonalize(m0)]
     for m in meshes:
         ring, ring_off = m.vertex_ring
-        arrays = {"vertices": m.vertices, "corners": m.corners, "offsets": m.offsets,
-                  "twin": m.twin, "next": m.next, "prev": m.prev, "head": m.head,
-                  "rotation": m.rotation, "halfedge_face": m.halfedge_face,
-                  "halfedge_edge": m.halfedge_edge, "edge_halfedge": m.edge_halfedge,
-                  "edges": m.edges, "face_sizes": m.face_sizes, "valences": m.valences,
-                  "face_centroids": m.face_centroids, "face_normals": m.face_normals,
-                  "component_labels": m.component_labels, "face 0": m.faces[0],
-                  "vertex_ring": ring, "vertex_ring offsets": ring_off}
+        arrays = {
+            "vertices": m.vertices,
+            "corners": m.corners,
+            "offsets": m.offsets,
+            "twin": m.twin,
+            "next": m.next,
+            "prev": m.prev,
+            "head": m.head,
+            "rotation": m.rotation,
+            "halfedge_face": m.halfedge_face,
+            "halfedge_edge": m.halfedge_edge,
+            "edge_halfedge": m.edge_halfedge,
+            "edges": m.edges,
+            "face_sizes": m.face_sizes,
+            "valences": m.valences,
+            "face_centroids": m.face_centroids,
+            "face_normals": m.face_normals,
+            "component_labels": m.component_labels,
+            "face 0": m.faces[0],
+            "vertex_ring": ring,
+            "vertex_ring offsets": ring_off,
+        }
         writable = [name for name, a in arrays.items() if a.flags.writeable]
         assert writable == [], repr(m)
 
@@ -308,7 +364,7 @@ def test_constructor_copies_its_inputs():
     v[:] = 0
     f[:] = 0
     assert np.array_equal(m.vertices, cube_vertices())
-    assert m.corners.tolist() == sum(CUBE_FACES, [])
+    assert m.corners.tolist() == functools.reduce(operator.iadd, CUBE_FACES, [])
 
 
 # ====================================================================== counts
@@ -321,8 +377,15 @@ def test_cube_counts_by_hand():
     assert m.genus == 0 and m.n_components == 1
     assert m.face_size_histogram() == {4: 6}
     assert m.valence_histogram() == {3: 8}
-    assert m.counts() == {"V": 8, "E": 12, "F": 6, "faces": {4: 6}, "valences": {3: 8},
-                          "chi": 2, "genus": 0}
+    assert m.counts() == {
+        "V": 8,
+        "E": 12,
+        "F": 6,
+        "faces": {4: 6},
+        "valences": {3: 8},
+        "chi": 2,
+        "genus": 0,
+    }
     assert repr(m) == "Mesh(V=8, E=12, F=6, faces={4:6})"
 
 
@@ -417,7 +480,7 @@ def test_edges_unique_and_halfedge_edge_consistent(corpus_mesh):
     assert np.all(edges[:, 0] < edges[:, 1])
     assert len({tuple(e) for e in edges.tolist()}) == E
     he = m.halfedge_edge
-    assert np.array_equal(he[m.twin], he)                   # twins share their edge
+    assert np.array_equal(he[m.twin], he)  # twins share their edge
     assert np.bincount(he, minlength=E).tolist() == [2] * E  # each edge twice
     lo = np.minimum(m.tail, m.head)
     hi = np.maximum(m.tail, m.head)
@@ -453,20 +516,21 @@ def test_vertex_ring_is_csr_of_rotation_orbits(corpus_mesh):
     assert np.array_equal(np.diff(off), m.valences)
     assert np.array_equal(np.sort(ring), np.arange(m.n_halfedges))
     for v in range(m.n_vertices):
-        r = ring[off[v]:off[v + 1]]
+        r = ring[off[v] : off[v + 1]]
         assert np.all(m.tail[r] == v)
         assert np.array_equal(m.rotation[r], np.roll(r, -1))
 
 
-@pytest.mark.parametrize("name", ["tetrahedron", "cube", "octahedron", "dodecahedron",
-                                  "icosahedron"])
+@pytest.mark.parametrize(
+    "name", ["tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron"]
+)
 def test_rotation_is_counter_clockwise_seen_from_outside(name):
     # convex solids centred at the origin: consecutive outgoing edges turn
     # counter-clockwise about the outward direction (the vertex position)
     m = shapes.get(name)
     ring, off = m.vertex_ring
     for v in range(m.n_vertices):
-        r = ring[off[v]:off[v + 1]]
+        r = ring[off[v] : off[v + 1]]
         d = m.vertices[m.head[r]] - m.vertices[v]
         turn = np.cross(d, np.roll(d, -1, axis=0)) @ m.vertices[v]
         assert np.all(turn > 0)
@@ -488,12 +552,15 @@ def test_degenerate_face_normal_is_zero():
     assert m.volume == 0.0
 
 
-@pytest.mark.parametrize("name, volume", [
-    ("cube", 8.0),
-    ("tetrahedron", 8.0 - 4 * (8.0 / 6.0)),           # cube minus 4 corner tetrahedra
-    ("octahedron", 4.0 / 3.0),                         # 2 pyramids of base 2, height 1
-    ("icosahedron", 5.0 / 12.0 * (3 + 5 ** 0.5) * 8),  # edge length 2
-])
+@pytest.mark.parametrize(
+    "name, volume",
+    [
+        ("cube", 8.0),
+        ("tetrahedron", 8.0 - 4 * (8.0 / 6.0)),  # cube minus 4 corner tetrahedra
+        ("octahedron", 4.0 / 3.0),  # 2 pyramids of base 2, height 1
+        ("icosahedron", 5.0 / 12.0 * (3 + 5**0.5) * 8),  # edge length 2
+    ],
+)
 def test_volume_of_platonic_solids(name, volume):
     assert shapes.get(name).volume == pytest.approx(volume, rel=1e-12)
 
@@ -546,8 +613,11 @@ def test_faces_property_round_trips(corpus_mesh):
 # ---------------------------------------------------------------- meshes the dual cannot take
 def test_two_valent_vertex_is_refused():
     # the "dihedron": two triangles glued along their whole boundary
-    with pytest.raises(MeshError, match=r"vertex 0 has only 2 edges; every vertex needs "
-                                        r"at least 3"):
+    with pytest.raises(
+        MeshError,
+        match=r"vertex 0 has only 2 edges; every vertex needs "
+        r"at least 3",
+    ):
         Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 1]])
 
 
@@ -555,10 +625,21 @@ def test_faces_sharing_two_edges_are_refused():
     # a 3 x 3 quad torus with two neighbouring quads merged into a hexagon:
     # quad [2, 5, 3, 0] now meets the hexagon along (2, 5) and along (0, 3)
     t = shapes.torus(3, 3)
-    faces = [[2, 5, 3, 0], [3, 6, 7, 4], [4, 7, 8, 5], [5, 8, 6, 3], [6, 0, 1, 7],
-             [7, 1, 2, 8], [8, 2, 0, 6], [1, 0, 3, 4, 5, 2]]
-    with pytest.raises(MeshError, match=r"faces 0 and 7 share more than one edge "
-                                        r"\(\(2, 5\) and \(0, 3\)\)"):
+    faces = [
+        [2, 5, 3, 0],
+        [3, 6, 7, 4],
+        [4, 7, 8, 5],
+        [5, 8, 6, 3],
+        [6, 0, 1, 7],
+        [7, 1, 2, 8],
+        [8, 2, 0, 6],
+        [1, 0, 3, 4, 5, 2],
+    ]
+    with pytest.raises(
+        MeshError,
+        match=r"faces 0 and 7 share more than one edge "
+        r"\(\(2, 5\) and \(0, 3\)\)",
+    ):
         Mesh(t.vertices, faces)
 
 
@@ -570,6 +651,7 @@ def test_face_means_of_scalar_and_vector_values():
     assert np.allclose(c.face_means(c.vertices), c.face_centroids)
     # a mesh of quads and pentagons (the reduceat path), against a per-face loop
     from pentanb import preserve_pentagons
+
     p = preserve_pentagons(c)
     by_hand = [p.vertices[f, 0].mean() for f in face_lists(p)]
     assert np.allclose(p.face_means(p.vertices[:, 0]), by_hand)

@@ -34,8 +34,7 @@ CELL_TIMEOUT = 60
 #: Largest committed notebook, in bytes.
 MAX_BYTES = 2 * 1024 * 1024
 #: Output types that count as "the notebook drew something".
-VISUAL_MIMETYPES = ("image/png", "image/svg+xml",
-                    "application/vnd.jupyter.widget-view+json")
+VISUAL_MIMETYPES = ("image/png", "image/svg+xml", "application/vnd.jupyter.widget-view+json")
 
 KERNEL_NAME = "pentanb-test-python"
 
@@ -54,8 +53,9 @@ def kernel_dir(tmp_path_factory) -> str:
     from ipykernel.kernelspec import write_kernel_spec
 
     kernels = tmp_path_factory.mktemp("kernels")
-    write_kernel_spec(kernels / KERNEL_NAME,
-                      overrides={"display_name": f"pentanb tests ({sys.executable})"})
+    write_kernel_spec(
+        kernels / KERNEL_NAME, overrides={"display_name": f"pentanb tests ({sys.executable})"}
+    )
     return str(kernels)
 
 
@@ -96,9 +96,15 @@ def _execute(path: Path, kernel_dir: str, extra_cells=()):
     ksm = KernelSpecManager(kernel_dirs=[kernel_dir], ensure_native_kernel=False)
     km = AsyncKernelManager(kernel_name=KERNEL_NAME, kernel_spec_manager=ksm)
     client = nbclient.NotebookClient(
-        nb, km=km, kernel_name=KERNEL_NAME, timeout=CELL_TIMEOUT,
+        nb,
+        km=km,
+        kernel_name=KERNEL_NAME,
+        timeout=CELL_TIMEOUT,
         resources={"metadata": {"path": str(NOTEBOOK_DIR)}},
-        allow_errors=False, store_widget_state=True, shutdown_kernel="immediate")
+        allow_errors=False,
+        store_widget_state=True,
+        shutdown_kernel="immediate",
+    )
     client.widget_registry["@jupyter-widgets/output"]["OutputModel"] = _quiet_output_widget()
     # cleanup_kc: shut the kernel down afterwards although the client did not
     # create its manager
@@ -114,8 +120,11 @@ def _outputs(nb):
 
 def _widget_outputs(nb):
     """Outputs captured inside Output widgets (stored in the widget state)."""
-    state = nb.metadata.get("widgets", {}).get(
-        "application/vnd.jupyter.widget-state+json", {}).get("state", {})
+    state = (
+        nb.metadata.get("widgets", {})
+        .get("application/vnd.jupyter.widget-state+json", {})
+        .get("state", {})
+    )
     for model in state.values():
         yield from model.get("state", {}).get("outputs", []) or []
 
@@ -128,11 +137,15 @@ def test_notebook_runs(path: Path, kernel_dir: str):
     except nbclient.exceptions.CellExecutionError as exc:
         pytest.fail(f"{path.name}: a cell raised\n{exc}", pytrace=False)
     elapsed = time.perf_counter() - start
-    mimetypes = {mime for out in list(_outputs(nb)) + list(_widget_outputs(nb))
-                 for mime in out.get("data", {})}
+    mimetypes = {
+        mime
+        for out in list(_outputs(nb)) + list(_widget_outputs(nb))
+        for mime in out.get("data", {})
+    }
     drawn = mimetypes.intersection(VISUAL_MIMETYPES)
-    assert drawn, (f"{path.name} produced no figure or widget output "
-                   f"(output types: {sorted(mimetypes)})")
+    assert drawn, (
+        f"{path.name} produced no figure or widget output (output types: {sorted(mimetypes)})"
+    )
     errors = [out for out in _outputs(nb) if out.get("output_type") == "error"]
     assert not errors, f"{path.name}: error outputs {errors}"
     print(f"{path.name}: {elapsed:.1f} s")
@@ -148,8 +161,7 @@ def test_notebook_committed_clean(path: Path):
         if cell.cell_type != "code":
             continue
         assert not cell.get("outputs"), f"{path.name}: cell {i} has outputs"
-        assert cell.get("execution_count") is None, \
-            f"{path.name}: cell {i} has an execution count"
+        assert cell.get("execution_count") is None, f"{path.name}: cell {i} has an execution count"
     assert "widgets" not in nb.metadata, f"{path.name}: saved widget state"
 
 
@@ -157,19 +169,21 @@ def test_notebooks_match_generator(tmp_path: Path):
     """The committed notebooks are what ``notebooks/_build_notebooks.py`` writes."""
     import importlib.util
 
-    spec = importlib.util.spec_from_file_location("_build_notebooks",
-                                                  NOTEBOOK_DIR / "_build_notebooks.py")
+    spec = importlib.util.spec_from_file_location(
+        "_build_notebooks", NOTEBOOK_DIR / "_build_notebooks.py"
+    )
     builder = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(builder)
     built = {p.name: p for p in builder.build(tmp_path)}
-    assert sorted(built) == sorted(p.name for p in NOTEBOOKS), \
+    assert sorted(built) == sorted(p.name for p in NOTEBOOKS), (
         "notebooks/ and _build_notebooks.py list different notebooks"
+    )
     for path in NOTEBOOKS:
         committed = nbformat.read(path, as_version=4)
         fresh = nbformat.read(built[path.name], as_version=4)
-        assert [(c.cell_type, c.source) for c in committed.cells] == \
-               [(c.cell_type, c.source) for c in fresh.cells], \
-            f"{path.name} differs from _build_notebooks.py: run python notebooks/_build_notebooks.py"
+        assert [(c.cell_type, c.source) for c in committed.cells] == [
+            (c.cell_type, c.source) for c in fresh.cells
+        ], f"{path.name} differs from _build_notebooks.py: run python notebooks/_build_notebooks.py"
 
 
 #: Run after a notebook: move every slider and drop-down it created to each end
@@ -228,13 +242,20 @@ def test_notebook_sliders(path: Path, kernel_dir: str):
         nb = _execute(path, kernel_dir, extra_cells=[SWEEP])
     except nbclient.exceptions.CellExecutionError as exc:
         pytest.fail(f"{path.name}: moving a control raised\n{exc}", pytrace=False)
-    text = "".join(out.get("text", "") for out in nb.cells[-1].outputs
-                   if out.get("output_type") == "stream" and out.get("name") == "stdout")
+    text = "".join(
+        out.get("text", "")
+        for out in nb.cells[-1].outputs
+        if out.get("output_type") == "stream" and out.get("name") == "stdout"
+    )
     line = [ln for ln in text.splitlines() if ln.startswith("SWEEP ")]
     assert line, f"{path.name}: the sweep printed nothing:\n{text}"
     import json
-    result = json.loads(line[-1][len("SWEEP "):])
-    assert result["faces"] <= MAX_FACES, \
+
+    result = json.loads(line[-1][len("SWEEP ") :])
+    assert result["faces"] <= MAX_FACES, (
         f"{path.name}: a slider position built {result['faces']:,} faces"
-    print(f"{path.name}: {result['positions']} positions, largest mesh "
-          f"{result['faces']:,} faces, slowest redraw {result['slowest']:.2f} s")
+    )
+    print(
+        f"{path.name}: {result['positions']} positions, largest mesh "
+        f"{result['faces']:,} faces, slowest redraw {result['slowest']:.2f} s"
+    )

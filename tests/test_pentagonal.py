@@ -14,8 +14,16 @@ from collections import Counter
 
 import numpy as np
 import pytest
-from helpers import (check_valid, corpus, cyclic_equal, darts, face_lists, is_isomorphic,
-                     valences, vertex_configurations)
+from helpers import (
+    check_valid,
+    corpus,
+    cyclic_equal,
+    darts,
+    face_lists,
+    is_isomorphic,
+    valences,
+    vertex_configurations,
+)
 
 from pentanb import Mesh, dual, pentagonalize, preserve_pentagons, shapes, smooth, subdivide
 
@@ -38,15 +46,15 @@ def test_pentagonalize_numbering_and_placement(corpus_mesh):
     m = corpus_mesh
     V, E = m.n_vertices, m.n_edges
     p = pentagonalize(m)
-    assert np.array_equal(p.vertices[:V], m.vertices)          # old vertices stay
-    for e, (a, b) in enumerate(m.edges.tolist()):              # a < b
+    assert np.array_equal(p.vertices[:V], m.vertices)  # old vertices stay
+    for e, (a, b) in enumerate(m.edges.tolist()):  # a < b
         pa, pb = m.vertices[a], m.vertices[b]
         assert np.allclose(p.vertices[V + 2 * e], pa + (pb - pa) / 3, rtol=0, atol=1e-14)
-        assert np.allclose(p.vertices[V + 2 * e + 1], pa + 2 * (pb - pa) / 3, rtol=0,
-                           atol=1e-14)
+        assert np.allclose(p.vertices[V + 2 * e + 1], pa + 2 * (pb - pa) / 3, rtol=0, atol=1e-14)
     for f, face in enumerate(face_lists(m)):
-        assert np.allclose(p.vertices[V + 2 * E + f], m.vertices[face].mean(axis=0),
-                           rtol=0, atol=1e-14)
+        assert np.allclose(
+            p.vertices[V + 2 * E + f], m.vertices[face].mean(axis=0), rtol=0, atol=1e-14
+        )
 
 
 def test_pentagonalize_face_of_each_halfedge(corpus_mesh):
@@ -58,12 +66,14 @@ def test_pentagonalize_face_of_each_halfedge(corpus_mesh):
     edge_id = {tuple(e): k for k, e in enumerate(m.edges.tolist())}
     face_of = [f for f, face in enumerate(faces) for _ in face]
 
-    def point(u, w, j):   # j-th trisection point from u towards w
+    def point(u, w, j):  # j-th trisection point from u towards w
         e = edge_id[(min(u, w), max(u, w))]
         return V + 2 * e + (j if u < w else 1 - j)
 
-    expected = [[point(u, w, 0), point(u, w, 1), w, point(w, head[nxt[h]], 0),
-                 V + 2 * E + face_of[h]] for h, (u, w) in enumerate(zip(tail, head))]
+    expected = [
+        [point(u, w, 0), point(u, w, 1), w, point(w, head[nxt[h]], 0), V + 2 * E + face_of[h]]
+        for h, (u, w) in enumerate(zip(tail, head))
+    ]
     assert face_lists(pentagonalize(m)) == expected
 
 
@@ -74,8 +84,8 @@ def test_pentagonalize_valences(corpus_mesh):
     V, E = m.n_vertices, m.n_edges
     val = valences(pentagonalize(m))
     assert val[:V] == valences(m)
-    assert val[V:V + 2 * E] == [3] * (2 * E)
-    assert val[V + 2 * E:] == [len(f) for f in face_lists(m)]
+    assert val[V : V + 2 * E] == [3] * (2 * E)
+    assert val[V + 2 * E :] == [len(f) for f in face_lists(m)]
 
 
 def test_pentagonalize_cube_by_hand():
@@ -83,18 +93,26 @@ def test_pentagonalize_cube_by_hand():
     p = pentagonalize(c)
     V, E = 8, 12
     # trisection points: one coordinate +-1/3, the two others +-1 (24 of them)
-    pts = p.vertices[V:V + 2 * E]
+    pts = p.vertices[V : V + 2 * E]
     assert sorted(map(tuple, np.round(pts * 3).astype(int).tolist())) == sorted(
-        t for axis in range(3) for t in _signs(axis))
+        t for axis in range(3) for t in _signs(axis)
+    )
     assert np.allclose(pts * 3, np.round(pts * 3), rtol=0, atol=1e-14)
     # edge 0 is (0, 1): from (-1, -1, -1) to (-1, -1, 1)
     assert c.edges[0].tolist() == [0, 1]
-    assert np.allclose(p.vertices[8], [-1, -1, -THIRD]) and \
-        np.allclose(p.vertices[9], [-1, -1, THIRD])
+    assert np.allclose(p.vertices[8], [-1, -1, -THIRD]) and np.allclose(
+        p.vertices[9], [-1, -1, THIRD]
+    )
     # centres: face 1 = [4, 6, 7, 5] is the face x = 1
     assert p.vertices[V + 2 * E + 1].tolist() == [1.0, 0.0, 0.0]
-    assert p.vertices[V + 2 * E:].tolist() == [[-1, 0, 0], [1, 0, 0], [0, -1, 0],
-                                               [0, 1, 0], [0, 0, -1], [0, 0, 1]]
+    assert p.vertices[V + 2 * E :].tolist() == [
+        [-1, 0, 0],
+        [1, 0, 0],
+        [0, -1, 0],
+        [0, 1, 0],
+        [0, 0, -1],
+        [0, 0, 1],
+    ]
     # every new point lies in a face plane: the volume stays 8
     assert p.volume == pytest.approx(8.0, rel=1e-12)
 
@@ -119,7 +137,7 @@ def test_pentagonalize_leaves_input_unchanged(corpus_mesh):
 
 
 def test_pentagonalize_refuses_non_mesh():
-    with pytest.raises(TypeError, match="pentagonalize expects a pentanb.Mesh"):
+    with pytest.raises(TypeError, match=r"pentagonalize expects a pentanb\.Mesh"):
         pentagonalize(np.zeros((4, 3)))
 
 
@@ -145,14 +163,17 @@ def test_preserve_pentagons_numbering_and_placement(corpus_mesh):
     q = preserve_pentagons(m, scale=s)
     assert np.array_equal(q.vertices[:V], m.vertices)
     for e, (a, b) in enumerate(m.edges.tolist()):
-        assert np.allclose(q.vertices[V + e], (m.vertices[a] + m.vertices[b]) / 2,
-                           rtol=0, atol=1e-14)
+        assert np.allclose(
+            q.vertices[V + e], (m.vertices[a] + m.vertices[b]) / 2, rtol=0, atol=1e-14
+        )
     faces = face_lists(m)
-    tail, head, nxt, _ = darts(faces)
+    _tail, _head, _nxt, _ = darts(faces)
     h = 0
     for face in faces:
-        mids = [(m.vertices[face[i]] + m.vertices[face[(i + 1) % len(face)]]) / 2
-                for i in range(len(face))]
+        mids = [
+            (m.vertices[face[i]] + m.vertices[face[(i + 1) % len(face)]]) / 2
+            for i in range(len(face))
+        ]
         c = np.mean(mids, axis=0)
         for mid in mids:
             assert np.allclose(q.vertices[V + E + h], c + s * (mid - c), rtol=0, atol=1e-13)
@@ -172,8 +193,9 @@ def test_preserve_pentagons_faces(corpus_mesh):
     for f, face in enumerate(faces):
         assert out[f] == [V + E + h + i for i in range(len(face))]
         h += len(face)
-    assert out[F:] == [[mid[h], head[h], mid[nxt[h]], V + E + nxt[h], V + E + h]
-                       for h in range(len(tail))]
+    assert out[F:] == [
+        [mid[h], head[h], mid[nxt[h]], V + E + nxt[h], V + E + h] for h in range(len(tail))
+    ]
 
 
 def test_preserve_pentagons_valences(corpus_mesh):
@@ -182,8 +204,8 @@ def test_preserve_pentagons_valences(corpus_mesh):
     V, E = m.n_vertices, m.n_edges
     val = valences(preserve_pentagons(m))
     assert val[:V] == valences(m)
-    assert val[V:V + E] == [4] * E
-    assert val[V + E:] == [3] * (2 * E)
+    assert val[V : V + E] == [4] * E
+    assert val[V + E :] == [3] * (2 * E)
 
 
 @pytest.mark.parametrize("scale, r", [(0.5, 0.5), (0.75, 0.75)])
@@ -202,8 +224,7 @@ def test_preserve_pentagons_cube_face_x1(scale, r):
 
 def test_preserve_pentagons_default_scale_is_three_quarters():
     m = shapes.cube()
-    assert np.array_equal(preserve_pentagons(m).vertices,
-                          preserve_pentagons(m, 0.75).vertices)
+    assert np.array_equal(preserve_pentagons(m).vertices, preserve_pentagons(m, 0.75).vertices)
 
 
 @pytest.mark.parametrize("scale", [0, 1, -0.5, 1.5, float("nan"), float("inf"), "big", None])
@@ -221,7 +242,7 @@ def test_preserve_pentagons_leaves_input_unchanged(corpus_mesh):
 
 
 def test_preserve_pentagons_refuses_non_mesh():
-    with pytest.raises(TypeError, match="preserve_pentagons expects a pentanb.Mesh"):
+    with pytest.raises(TypeError, match=r"preserve_pentagons expects a pentanb\.Mesh"):
         preserve_pentagons("cube")
 
 
@@ -238,8 +259,10 @@ def test_pentagonalize_is_gyro_by_counts():
     assert p.valence_histogram() == {3: 80, 5: 12}
 
 
-@pytest.mark.parametrize("a, b", [("cube", "octahedron"), ("dodecahedron", "icosahedron"),
-                                  ("tetrahedron", "tetrahedron")])
+@pytest.mark.parametrize(
+    "a, b",
+    [("cube", "octahedron"), ("dodecahedron", "icosahedron"), ("tetrahedron", "tetrahedron")],
+)
 def test_pentagonalize_of_dual_pairs_agree(a, b):
     # gyro(X) and gyro(dual X) are the same polyhedron (up to mirror image)
     pa, pb = pentagonalize(shapes.get(a)), pentagonalize(shapes.get(b))
@@ -300,11 +323,11 @@ def test_claim_each_ngon_becomes_ngon_plus_n_pentagons(corpus_mesh):
     V, E, F = m.n_vertices, m.n_edges, m.n_faces
     q = preserve_pentagons(m)
     sizes = [len(f) for f in face_lists(m)]
-    owner = [f for f, n in enumerate(sizes) for _ in range(n)]   # copy vertex -> face
+    owner = [f for f, n in enumerate(sizes) for _ in range(n)]  # copy vertex -> face
     central, pentagons = Counter(), Counter()
     for face in face_lists(q):
         mine = {owner[x - V - E] for x in face if x >= V + E}
-        assert len(mine) == 1                      # every face lies in one old face
+        assert len(mine) == 1  # every face lies in one old face
         f = mine.pop()
         if all(x >= V + E for x in face):
             central[f] += 1
@@ -316,13 +339,14 @@ def test_claim_each_ngon_becomes_ngon_plus_n_pentagons(corpus_mesh):
     assert [pentagons[f] for f in range(F)] == sizes
 
 
-@pytest.mark.parametrize("name", ["dodecahedron", "cube", "cube_split", "torus",
-                                  "hexagonal_genus2"])
+@pytest.mark.parametrize(
+    "name", ["dodecahedron", "cube", "cube_split", "torus", "hexagonal_genus2"]
+)
 def test_claim_preservation_keeps_pentagonal_meshes_pentagonal(name):
     """Section 5.2 and Figure 1D: "If we start with a pentagonal mesh, the new
     mesh will contain only pentagons"."""
     m = corpus(name)
-    start = m if name == "dodecahedron" else pentagonalize(m)   # Figure 1B
+    start = m if name == "dodecahedron" else pentagonalize(m)  # Figure 1B
     mesh = start
     for _ in range(3):
         mesh = preserve_pentagons(mesh)
@@ -336,7 +360,7 @@ def test_claim_preservation_number_of_non_pentagons_constant(corpus_mesh):
     m = corpus_mesh
     before = sum(1 for f in face_lists(m) if len(f) != 5)
     mesh = m
-    for k in range(3):
+    for _ in range(3):
         mesh = preserve_pentagons(mesh)
         assert int(np.sum(mesh.face_sizes != 5)) == before
     for k in (1, 2):
@@ -387,8 +411,7 @@ def test_claim_hex_torus_pentagonalization_6_3_3_3_3():
     h = shapes.hexagonal_torus()
     fig9a = smooth(pentagonalize(h), 2)
     val = valences(fig9a)
-    assert all(cyclic_equal([val[v] for v in f], (6, 3, 3, 3, 3))
-               for f in face_lists(fig9a))
+    assert all(cyclic_equal([val[v] for v in f], (6, 3, 3, 3, 3)) for f in face_lists(fig9a))
     configs = vertex_configurations(dual(fig9a))
     assert len(configs) == 2 * h.n_edges
     assert all(cyclic_equal(c, (6, 3, 3, 3, 3)) for c in configs)

@@ -9,9 +9,18 @@ triangulated solids with random pairs of adjacent faces merged (see
 from __future__ import annotations
 
 import numpy as np
-from helpers import (OPERATORS, check_valid, expected_counts, expected_face_histogram,
-                     face_lists, kis, merge_faces, polyhedral, same_faces_up_to_rotation,
-                     valences)
+from helpers import (
+    OPERATORS,
+    check_valid,
+    expected_counts,
+    expected_face_histogram,
+    face_lists,
+    kis,
+    merge_faces,
+    polyhedral,
+    same_faces_up_to_rotation,
+    valences,
+)
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
@@ -20,8 +29,7 @@ from pentanb import SCHEMES, Mesh, dual, predict_counts, shapes, subdivide
 
 PLATONIC = ["tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron"]
 SCALED = {"preserve_pentagons", "corner_cutting", "preserve_hexagons"}
-PROPS = settings(max_examples=40, deadline=None,
-                 suppress_health_check=[HealthCheck.too_slow])
+PROPS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
 def _triangulated(name: str) -> Mesh:
@@ -57,8 +65,13 @@ def closed_meshes(draw) -> Mesh:
             else:
                 m = OPERATORS[name](m)
         return m
-    base = _triangulated(draw(st.sampled_from(["icosahedron", "octahedron", "sqrt3_cube",
-                                               "kis_dodecahedron", "loop_tetrahedron"])))
+    base = _triangulated(
+        draw(
+            st.sampled_from(
+                ["icosahedron", "octahedron", "sqrt3_cube", "kis_dodecahedron", "loop_tetrahedron"]
+            )
+        )
+    )
     return merge_faces(base, draw(st.lists(st.integers(0, 10**6), min_size=1, max_size=12)))
 
 
@@ -98,8 +111,11 @@ def test_registry_counts_predict_every_scheme(m):
         if name == "triangulate":
             continue
         out = s(m)
-        assert s.counts(m.n_vertices, m.n_edges, m.n_faces) == \
-            (out.n_vertices, out.n_edges, out.n_faces)
+        assert s.counts(m.n_vertices, m.n_edges, m.n_faces) == (
+            out.n_vertices,
+            out.n_edges,
+            out.n_faces,
+        )
 
 
 @PROPS
@@ -121,8 +137,8 @@ def test_pentagonalize_valences_and_faces(m):
     assert p.face_size_histogram() == {5: 2 * E}
     val = valences(p)
     assert val[:V] == valences(m)
-    assert val[V:V + 2 * E] == [3] * (2 * E)
-    assert val[V + 2 * E:] == [len(f) for f in face_lists(m)]
+    assert val[V : V + 2 * E] == [3] * (2 * E)
+    assert val[V + 2 * E :] == [len(f) for f in face_lists(m)]
 
 
 @PROPS
@@ -138,9 +154,10 @@ def test_conversion_schemes_give_their_type(m):
 
 
 @PROPS
-@given(closed_meshes(),
-       st.lists(st.tuples(st.sampled_from(list(SCHEMES)), st.integers(0, 2)),
-                min_size=1, max_size=3))
+@given(
+    closed_meshes(),
+    st.lists(st.tuples(st.sampled_from(list(SCHEMES)), st.integers(0, 2)), min_size=1, max_size=3),
+)
 def test_subdivide_random_scheme_sequences(m, steps):
     counts = (m.n_vertices, m.n_edges, m.n_faces)
     for name, duals in steps:
@@ -159,8 +176,10 @@ def test_subdivide_random_scheme_sequences(m, steps):
 
 
 @PROPS
-@given(st.sampled_from(["icosahedron", "octahedron", "sqrt3_cube", "kis_dodecahedron"]),
-       st.lists(st.integers(0, 10**6), min_size=1, max_size=12))
+@given(
+    st.sampled_from(["icosahedron", "octahedron", "sqrt3_cube", "kis_dodecahedron"]),
+    st.lists(st.integers(0, 10**6), min_size=1, max_size=12),
+)
 def test_merge_faces_removes_one_edge_and_face_per_merge(base_name, picks):
     base = _triangulated(base_name)
     m = merge_faces(base, picks)
@@ -204,7 +223,7 @@ def test_components_of_disjoint_unions(parts, rnd):
     assert m.genus == sum(p.genus for p in parts)
     assert m.euler_characteristic == sum(p.euler_characteristic for p in parts)
     labels = _union_find_labels(face_lists(m), m.n_vertices)
-    assert m.component_labels.tolist() == labels     # each component's smallest index
+    assert m.component_labels.tolist() == labels  # each component's smallest index
     d = dual(m)
     check_valid(d)
     assert d.n_components == len(parts)

@@ -18,7 +18,7 @@ from helpers import check_valid, face_lists
 
 from pentanb import MeshError, shapes
 
-PHI = (1 + 5 ** 0.5) / 2
+PHI = (1 + 5**0.5) / 2
 
 
 def edge_lengths(m):
@@ -33,18 +33,21 @@ def test_every_shape_is_valid_outward_and_connected(name):
     assert m.n_components == 1
 
 
-@pytest.mark.parametrize("name, counts, faces, valences, genus", [
-    ("tetrahedron", (4, 6, 4), {3: 4}, {3: 4}, 0),
-    ("cube", (8, 12, 6), {4: 6}, {3: 8}, 0),
-    ("octahedron", (6, 12, 8), {3: 8}, {4: 6}, 0),
-    ("dodecahedron", (20, 30, 12), {5: 12}, {3: 20}, 0),
-    ("icosahedron", (12, 30, 20), {3: 20}, {5: 12}, 0),
-    ("torus", (96, 192, 96), {4: 96}, {4: 96}, 1),                   # 12 x 8
-    ("hexagonal_torus", (144, 216, 72), {6: 72}, {3: 144}, 1),       # 12 x 6
-    ("double_torus", (96 - 4, 192 - 4, 96 - 2), {4: 94}, {4: 88, 6: 4}, 2),
-    ("hexagonal_genus2", (192 - 6, 288 - 6, 96 - 2), {6: 94}, {3: 180, 4: 6}, 2),
-    ("genus3", (144 - 8, 288 - 8, 144 - 4), {4: 140}, {4: 128, 6: 8}, 3),
-])
+@pytest.mark.parametrize(
+    "name, counts, faces, valences, genus",
+    [
+        ("tetrahedron", (4, 6, 4), {3: 4}, {3: 4}, 0),
+        ("cube", (8, 12, 6), {4: 6}, {3: 8}, 0),
+        ("octahedron", (6, 12, 8), {3: 8}, {4: 6}, 0),
+        ("dodecahedron", (20, 30, 12), {5: 12}, {3: 20}, 0),
+        ("icosahedron", (12, 30, 20), {3: 20}, {5: 12}, 0),
+        ("torus", (96, 192, 96), {4: 96}, {4: 96}, 1),  # 12 x 8
+        ("hexagonal_torus", (144, 216, 72), {6: 72}, {3: 144}, 1),  # 12 x 6
+        ("double_torus", (96 - 4, 192 - 4, 96 - 2), {4: 94}, {4: 88, 6: 4}, 2),
+        ("hexagonal_genus2", (192 - 6, 288 - 6, 96 - 2), {6: 94}, {3: 180, 4: 6}, 2),
+        ("genus3", (144 - 8, 288 - 8, 144 - 4), {4: 140}, {4: 128, 6: 8}, 3),
+    ],
+)
 def test_shape_counts_by_hand(name, counts, faces, valences, genus):
     m = shapes.get(name)
     assert (m.n_vertices, m.n_edges, m.n_faces) == counts
@@ -69,7 +72,7 @@ def test_shapes_are_fresh_and_equal_each_call():
 def test_tetrahedron_is_regular_and_inscribed_in_the_cube():
     m = shapes.tetrahedron()
     assert np.array_equal(np.abs(m.vertices), np.ones((4, 3)))
-    assert np.allclose(edge_lengths(m), 2 * 2 ** 0.5)
+    assert np.allclose(edge_lengths(m), 2 * 2**0.5)
 
 
 def test_cube_vertex_numbering():
@@ -83,16 +86,21 @@ def test_cube_vertex_numbering():
 def test_octahedron_vertices_on_axes():
     m = shapes.octahedron()
     assert sorted(map(tuple, m.vertices.tolist())) == sorted(
-        map(tuple, np.concatenate([np.eye(3), -np.eye(3)]).tolist()))
-    assert np.allclose(edge_lengths(m), 2 ** 0.5)
+        map(tuple, np.concatenate([np.eye(3), -np.eye(3)]).tolist())
+    )
+    assert np.allclose(edge_lengths(m), 2**0.5)
 
 
 def test_icosahedron_vertices_and_edges():
     m = shapes.icosahedron()
-    expected = {p for s1, s2 in itertools.product((-1, 1), repeat=2)
-                for p in [(0.0, s1, s2 * PHI), (s2 * PHI, 0.0, s1), (s1, s2 * PHI, 0.0)]}
-    assert {tuple(np.round(p, 12)) for p in m.vertices.tolist()} == \
-        {tuple(np.round(p, 12)) for p in expected}
+    expected = {
+        p
+        for s1, s2 in itertools.product((-1, 1), repeat=2)
+        for p in [(0.0, s1, s2 * PHI), (s2 * PHI, 0.0, s1), (s1, s2 * PHI, 0.0)]
+    }
+    assert {tuple(np.round(p, 12)) for p in m.vertices.tolist()} == {
+        tuple(np.round(p, 12)) for p in expected
+    }
     assert np.allclose(edge_lengths(m), 2)
 
 
@@ -106,8 +114,9 @@ def test_dodecahedron_is_regular():
         assert np.allclose((m.vertices[f] - c) @ n, 0, atol=1e-12)
 
 
-@pytest.mark.parametrize("name", ["tetrahedron", "cube", "octahedron", "dodecahedron",
-                                  "icosahedron"])
+@pytest.mark.parametrize(
+    "name", ["tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron"]
+)
 def test_platonic_normals_point_outwards(name):
     m = shapes.get(name)
     assert np.all(np.einsum("ij,ij->i", m.face_normals, m.face_centroids) > 0)
@@ -122,7 +131,7 @@ def test_torus_counts_and_surface(rings, sides):
     assert (m.n_vertices, m.n_edges, m.n_faces) == (n, 2 * n, n)
     assert m.valence_histogram() == {4: n} and m.genus == 1
     x, y, z = m.vertices.T
-    assert np.allclose((np.hypot(x, y) - R) ** 2 + z ** 2, r ** 2)
+    assert np.allclose((np.hypot(x, y) - R) ** 2 + z**2, r**2)
     # face 0 is centred on the outer equator at +x: its corners sit at angles
     # +-pi/rings round the axis and +-pi/sides round the tube
     c = m.face_centroids[0]
@@ -139,16 +148,26 @@ def test_hexagonal_torus_counts_and_surface(rings, sides):
     assert (m.n_vertices, m.n_edges, m.n_faces) == (2 * n, 3 * n, n)
     assert m.face_size_histogram() == {6: n} and m.valence_histogram() == {3: 2 * n}
     x, y, z = m.vertices.T
-    assert np.allclose((np.hypot(x, y) - R) ** 2 + z ** 2, r ** 2)
+    assert np.allclose((np.hypot(x, y) - R) ** 2 + z**2, r**2)
     # face 0 surrounds grid point (0, 0) = (R + r, 0, 0)
     d = np.linalg.norm(m.face_centroids - [R + r, 0, 0], axis=1)
     assert np.argmin(d) == 0
     assert m.volume > 0
 
 
-@pytest.mark.parametrize("kwargs", [{"rings": 2}, {"sides": 2}, {"rings": 4.0},
-                                    {"rings": True}, {"tube": 1.0}, {"tube": 0.0},
-                                    {"tube": -0.1}, {"radius": 0.3}])
+@pytest.mark.parametrize(
+    "kwargs",
+    [
+        {"rings": 2},
+        {"sides": 2},
+        {"rings": 4.0},
+        {"rings": True},
+        {"tube": 1.0},
+        {"tube": 0.0},
+        {"tube": -0.1},
+        {"radius": 0.3},
+    ],
+)
 @pytest.mark.parametrize("builder", [shapes.torus, shapes.hexagonal_torus])
 def test_torus_refuses_bad_sizes(builder, kwargs):
     with pytest.raises(ValueError):
@@ -162,9 +181,11 @@ def test_genus_surface_counts(genus, rings, sides):
     m = shapes.genus_surface(genus, rings=rings, sides=sides)
     check_valid(m)
     n, g = rings * sides, genus
-    assert (m.n_vertices, m.n_edges, m.n_faces) == (g * n - 4 * (g - 1),
-                                                    2 * g * n - 4 * (g - 1),
-                                                    g * n - 2 * (g - 1))
+    assert (m.n_vertices, m.n_edges, m.n_faces) == (
+        g * n - 4 * (g - 1),
+        2 * g * n - 4 * (g - 1),
+        g * n - 2 * (g - 1),
+    )
     assert m.genus == g and m.n_components == 1 and m.volume > 0
     # the glued squares' corners: 4 + 4 - 2 = 6 edges each
     expected = {4: m.n_vertices - 4 * (g - 1)}
@@ -179,9 +200,11 @@ def test_hexagonal_surface_counts_and_equation_1(genus, rings, sides):
     m = shapes.hexagonal_surface(genus, rings, sides)
     check_valid(m)
     n, g = rings * sides, genus
-    assert (m.n_vertices, m.n_edges, m.n_faces) == (2 * g * n - 6 * (g - 1),
-                                                    3 * g * n - 6 * (g - 1),
-                                                    g * n - 2 * (g - 1))
+    assert (m.n_vertices, m.n_edges, m.n_faces) == (
+        2 * g * n - 6 * (g - 1),
+        3 * g * n - 6 * (g - 1),
+        g * n - 2 * (g - 1),
+    )
     assert m.face_size_histogram() == {6: m.n_faces}
     assert m.genus == g and m.volume > 0
     # equation (1) for hexagons: sum(valence - 3) = 6(g - 1)

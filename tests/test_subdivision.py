@@ -10,15 +10,30 @@ import re
 
 import numpy as np
 import pytest
-from helpers import (OPERATORS, check_valid, corpus, expected_counts, expected_face_histogram,
-                     face_lists, two_cubes)
+from helpers import (
+    OPERATORS,
+    check_valid,
+    corpus,
+    expected_counts,
+    expected_face_histogram,
+    face_lists,
+    two_cubes,
+)
 
 import pentanb
 from pentanb import SCHEMES, MeshError, Scheme, dual, predict_counts, shapes, smooth, subdivide
 
-OPERATOR_NAMES = ["pentagonalize", "preserve_pentagons", "triangulate", "loop_remesh",
-                  "sqrt3_remesh", "vertex_insertion", "corner_cutting", "preserve_hexagons",
-                  "honeycomb"]
+OPERATOR_NAMES = [
+    "pentagonalize",
+    "preserve_pentagons",
+    "triangulate",
+    "loop_remesh",
+    "sqrt3_remesh",
+    "vertex_insertion",
+    "corner_cutting",
+    "preserve_hexagons",
+    "honeycomb",
+]
 
 
 # ====================================================================== every operator x corpus
@@ -72,16 +87,17 @@ def test_registry_lists_every_operator_exported_at_top_level():
         assert name in pentanb.__all__
     # and nothing exported at top level that maps meshes to meshes is missing
     drawing = {"view", "explore", "step_through", "export_html", "figures", "topology"}
-    for name in set(pentanb.__all__) - drawing:     # (those import matplotlib & co.)
+    for name in set(pentanb.__all__) - drawing:  # (those import matplotlib & co.)
         obj = getattr(pentanb, name)
-        if inspect.isfunction(obj) and obj.__module__ in ("pentanb.classic",
-                                                          "pentanb.pentagonal"):
+        if inspect.isfunction(obj) and obj.__module__ in ("pentanb.classic", "pentanb.pentagonal"):
             assert name in SCHEMES
 
 
 def test_registry_families_and_references():
-    assert {n for n, s in SCHEMES.items() if s.family == "pentagonal"} == \
-        {"pentagonalize", "preserve_pentagons"}
+    assert {n for n, s in SCHEMES.items() if s.family == "pentagonal"} == {
+        "pentagonalize",
+        "preserve_pentagons",
+    }
     assert SCHEMES["pentagonalize"].conway == "gyro"
     assert "quinto" in SCHEMES["preserve_pentagons"].conway
     for s in SCHEMES.values():
@@ -91,8 +107,9 @@ def test_registry_families_and_references():
 def test_registry_options_are_the_functions_keyword_defaults():
     for s in SCHEMES.values():
         params = inspect.signature(s.func).parameters
-        defaults = {k: p.default for k, p in params.items()
-                    if p.default is not inspect.Parameter.empty}
+        defaults = {
+            k: p.default for k, p in params.items() if p.default is not inspect.Parameter.empty
+        }
         assert dict(s.options) == defaults
 
 
@@ -101,7 +118,7 @@ def test_registry_counts_agree_with_the_formulas(corpus_mesh):
     for name, s in SCHEMES.items():
         got = s.counts(m.n_vertices, m.n_edges, m.n_faces)
         want = expected_counts(name, m)
-        if name == "triangulate":    # documented as an upper bound
+        if name == "triangulate":  # documented as an upper bound
             assert all(g >= w for g, w in zip(got, want))
             if 3 not in m.face_sizes:
                 assert got == want
@@ -112,8 +129,7 @@ def test_registry_counts_agree_with_the_formulas(corpus_mesh):
 def test_scheme_is_callable_with_options():
     m = shapes.cube()
     s = SCHEMES["preserve_pentagons"]
-    assert np.array_equal(s(m, scale=0.5).vertices,
-                          pentanb.preserve_pentagons(m, 0.5).vertices)
+    assert np.array_equal(s(m, scale=0.5).vertices, pentanb.preserve_pentagons(m, 0.5).vertices)
 
 
 # ====================================================================== subdivide
@@ -200,7 +216,7 @@ def test_predict_counts_matches_the_built_meshes(name):
         for _ in range(duals):
             mesh = dual(mesh)
             built.append((mesh.n_vertices, mesh.n_edges, mesh.n_faces))
-    if name == "triangulate":     # an upper bound (triangles are kept)
+    if name == "triangulate":  # an upper bound (triangles are kept)
         assert all(p >= b for ps, bs in zip(steps, built) for p, b in zip(ps, bs))
     else:
         assert steps == built
@@ -209,7 +225,10 @@ def test_predict_counts_matches_the_built_meshes(name):
 def test_predict_counts_by_hand():
     # cube, pentagonalize: (8 + 24 + 6, 60, 24), then duals swap V and F
     assert predict_counts((8, 12, 6), "pentagonalize", 1, 2) == [
-        (38, 60, 24), (24, 60, 38), (38, 60, 24)]
+        (38, 60, 24),
+        (24, 60, 38),
+        (38, 60, 24),
+    ]
     assert predict_counts((8, 12, 6), "honeycomb", 2, 0) == [(24, 36, 14), (72, 108, 38)]
 
 
@@ -232,16 +251,16 @@ def test_memory_guard_refuses_before_building(monkeypatch):
     # every pentagonalization multiplies E by 5 and makes 2E faces; duals keep
     # the counts after an even number: after the 12th, E = 12 * 5**12,
     # F = 2 * 12 * 5**11 and (Euler, chi = 2) V = 2 + E - F
-    E = 12 * 5 ** 12
-    F = 2 * 12 * 5 ** 11
+    E = 12 * 5**12
+    F = 2 * 12 * 5**11
     V = 2 + E - F
     got = re.search(r"([\d,]+) faces \(([\d,]+) vertices, ([\d,]+) edges\)", msg)
     assert got, msg
     faces, verts, edges = (int(x.replace(",", "")) for x in got.groups())
-    assert (faces, verts, edges) in {(F, V, E), (V, F, E)}   # the mesh or its dual
+    assert (faces, verts, edges) in {(F, V, E), (V, F, E)}  # the mesh or its dual
     assert f"{faces:,} faces" in msg
     need = int(re.search(r"([\d,]+) bytes", msg).group(1).replace(",", ""))
-    assert need >= 8 * 2 * E > 10**6             # at least one int64 per corner
+    assert need >= 8 * 2 * E > 10**6  # at least one int64 per corner
     assert "1,000,000" in msg
 
 
@@ -256,8 +275,7 @@ def test_memory_guard_lets_small_requests_through():
 def test_progress_callback_is_called_after_every_step():
     calls = []
     m = shapes.cube()
-    subdivide(m, "pentagonalize", iterations=2, duals=2,
-              progress=lambda *a: calls.append(a))
+    subdivide(m, "pentagonalize", iterations=2, duals=2, progress=lambda *a: calls.append(a))
     assert [c[0] for c in calls] == [1, 2, 3, 4, 5, 6]
     assert all(c[1] == 6 for c in calls)
     assert all(isinstance(c[2], str) for c in calls)
@@ -275,8 +293,9 @@ def test_progress_true_prints_to_stderr(capsys):
 
 def test_progress_with_zero_duals():
     calls = []
-    subdivide(shapes.cube(), "honeycomb", iterations=3, duals=0,
-              progress=lambda *a: calls.append(a[:2]))
+    subdivide(
+        shapes.cube(), "honeycomb", iterations=3, duals=0, progress=lambda *a: calls.append(a[:2])
+    )
     assert calls == [(1, 3), (2, 3), (3, 3)]
 
 
@@ -299,8 +318,11 @@ def test_max_iterations_bounds_a_slider():
         v, e, f = v + 2 * e + f, 5 * e, 2 * e
         biggest.append(max(f, v))  # the dual in between has V faces
     for limit in (30, 200, 1000, 5000, 20000):
-        expected = sum(1 for b in biggest if b <= limit) if all(
-            biggest[i] <= biggest[i + 1] for i in range(5)) else None
+        expected = (
+            sum(1 for b in biggest if b <= limit)
+            if all(biggest[i] <= biggest[i + 1] for i in range(5))
+            else None
+        )
         assert pentanb.max_iterations(cube, "pentagonalize", 2, max_faces=limit) == expected
         assert pentanb.max_iterations(counts, "pentagonalize", 2, max_faces=limit) == expected
 

@@ -15,10 +15,10 @@ import pytest
 pytest.importorskip("ipywidgets")
 pytest.importorskip("pythreejs")
 
-import pentanb  # noqa: E402
-from pentanb import shapes  # noqa: E402
-from pentanb.colors import EDGE_COLOR, face_rgb, _hex_to_rgb  # noqa: E402
-from pentanb.viz import html, steps, three  # noqa: E402
+import pentanb
+from pentanb import shapes
+from pentanb.colors import EDGE_COLOR, _hex_to_rgb, face_rgb
+from pentanb.viz import html, steps, three
 
 
 def arr(attribute):
@@ -61,8 +61,7 @@ def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
     seg = arr(v.edge_geometry.attributes["position"]).reshape(-1, 2, 3)
     np.testing.assert_allclose(seg, mesh.vertices[mesh.edges], atol=1e-6)
     ecol = arr(v.edge_geometry.attributes["color"])
-    np.testing.assert_allclose(ecol, np.tile(_hex_to_rgb(EDGE_COLOR), (len(ecol), 1)),
-                               atol=1e-6)
+    np.testing.assert_allclose(ecol, np.tile(_hex_to_rgb(EDGE_COLOR), (len(ecol), 1)), atol=1e-6)
 
 
 @pytest.mark.parametrize("name", list(MESHES))
@@ -111,6 +110,7 @@ def _scene_objects(obj):
 def test_view_uses_no_light_that_breaks_jupyterlab():
     """pythreejs' shadow-casting lights print "Error setting state" in JupyterLab 4."""
     import pythreejs as P3
+
     v = pentanb.view(shapes.cube())
     kinds = {type(o) for o in _scene_objects(v.scene)}
     assert not kinds & {P3.PointLight, P3.DirectionalLight, P3.SpotLight}
@@ -120,8 +120,11 @@ def test_view_uses_no_light_that_breaks_jupyterlab():
 def test_update_bumps_buffer_versions():
     """A replaced array must reach the GPU: its version rises past the browser's."""
     v = pentanb.view(shapes.cube())
-    attrs = [v.face_geometry.attributes["position"], v.face_geometry.index,
-             v.edge_geometry.attributes["position"]]
+    attrs = [
+        v.face_geometry.attributes["position"],
+        v.face_geometry.index,
+        v.edge_geometry.attributes["position"],
+    ]
     before = [a.version for a in attrs]
     v.update(shapes.tetrahedron())
     after = [a.version for a in attrs]
@@ -161,6 +164,7 @@ def test_fan_corner_triangles_matches_mesh_fan_triangles():
 
 
 # -- explorer ----------------------------------------------------------------
+
 
 def test_explorer_slider_updates_geometry_in_place():
     e = pentanb.explore("cube", iterations=0)
@@ -206,6 +210,7 @@ def test_explorer_accepts_a_mesh_and_refits_on_a_new_shape():
 
 def test_explorer_caches_what_a_slider_revisits(monkeypatch):
     import pentanb.subdivision as sub
+
     calls = []
     real = sub.subdivide
 
@@ -228,8 +233,7 @@ def test_explorer_refuses_too_large_with_the_size(monkeypatch):
     geometry_before = arr(e.view.face_geometry.attributes["position"]).copy()
     e.iterations.value = 4  # 24 * 5**3 = 3000 faces > 1000
     assert "3,000 faces" in e.status.value
-    np.testing.assert_array_equal(arr(e.view.face_geometry.attributes["position"]),
-                                  geometry_before)
+    np.testing.assert_array_equal(arr(e.view.face_geometry.attributes["position"]), geometry_before)
     assert e.progress.layout.visibility == "hidden"
 
 
@@ -249,6 +253,7 @@ def test_explorer_drives_the_progress_bar():
 
 
 # -- step-through --------------------------------------------------------------
+
 
 @pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
 @pytest.mark.parametrize("name", ["tetrahedron", "cube", "mixed"])
@@ -274,16 +279,29 @@ def test_step_through_stages(scheme, name):
         assert inserted == 2 * len(mesh.corners)  # copy edges and spokes
     # after every group, all pieces are pentagon-coloured at the end
     np.testing.assert_allclose(
-        last_group.face_colors[-len(mesh.corners):],
-        face_rgb(np.full(len(mesh.corners), 5)))
+        last_group.face_colors[-len(mesh.corners) :], face_rgb(np.full(len(mesh.corners), 5))
+    )
+
     # the geometric pieces cover the result's area
-    area = lambda p, o: sum(np.linalg.norm(np.cross(p[o[f] + 1:o[f + 1] - 1] - p[o[f]],  # noqa: E731
-                                                    p[o[f] + 2:o[f + 1]] - p[o[f]]),
-                                           axis=1).sum() for f in range(len(o) - 1))
+    def area(p, o):
+        return sum(
+            np.linalg.norm(
+                np.cross(
+                    p[o[f] + 1 : o[f + 1] - 1] - p[o[f]],
+                    p[o[f] + 2 : o[f + 1]] - p[o[f]],
+                ),
+                axis=1,
+            ).sum()
+            for f in range(len(o) - 1)
+        )
+
     expected_area = area(expected.vertices[expected.corners], expected.offsets)
-    assert abs(area(last_group.positions, last_group.offsets) - expected_area) \
-        < 1e-9 * max(expected_area, 1) + 1e-9 or scheme == "preserve_pentagons" \
+    assert (
+        abs(area(last_group.positions, last_group.offsets) - expected_area)
+        < 1e-9 * max(expected_area, 1) + 1e-9
+        or scheme == "preserve_pentagons"
         or name == "mixed"
+    )
 
 
 def test_step_slider_updates_the_view_in_place():
@@ -306,6 +324,7 @@ def test_step_through_other_schemes_show_input_result_duals():
 
 # -- export ----------------------------------------------------------------------
 
+
 def test_export_online_page_references_the_cdn(tmp_path):
     path = html.export_html(shapes.cube(), tmp_path / "cube.html", offline=False)
     text = path.read_text()
@@ -316,8 +335,12 @@ def test_export_online_page_references_the_cdn(tmp_path):
 
 
 def _state(text):
-    m = re.search(r'<script type="application/vnd.jupyter.widget-state\+json">\n(.*?)\n'
-                  r'</script>', text, re.S)
+    m = re.search(
+        r'<script type="application/vnd.jupyter.widget-state\+json">\n(.*?)\n'
+        r"</script>",
+        text,
+        re.S,
+    )
     return json.loads(m.group(1))
 
 
@@ -326,6 +349,7 @@ def _require_offline_scripts():
         html.offline_scripts()
     except FileNotFoundError as err:
         import os
+
         if os.environ.get("CI") == "true":
             pytest.fail(f"CI must have the npm cache (.ci/browser-setup.sh): {err}")
         pytest.skip(str(err))
@@ -336,7 +360,7 @@ def test_export_offline_page_loads_no_script_from_the_network(tmp_path):
     e = pentanb.explore("tetrahedron", iterations=2)
     path = html.export_html(e, tmp_path / "explorer.html")
     text = path.read_text()
-    assert not re.search(r'<script[^>]+src=', text)
+    assert not re.search(r"<script[^>]+src=", text)
     assert "cdn.jsdelivr" not in text.split("<body>")[1]
     state = _state(text)
     names = [s["model_name"] for s in state["state"].values()]
@@ -358,8 +382,11 @@ def test_offline_without_cache_says_how_to_fill_it(tmp_path, monkeypatch):
 def test_import_pentanb_does_not_import_the_widget_libraries():
     import subprocess
     import sys
-    code = ("import sys, pentanb; bad = [m for m in ('pythreejs', 'ipywidgets') "
-            "if m in sys.modules]; print(bad); sys.exit(1 if bad else 0)")
+
+    code = (
+        "import sys, pentanb; bad = [m for m in ('pythreejs', 'ipywidgets') "
+        "if m in sys.modules]; print(bad); sys.exit(1 if bad else 0)"
+    )
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr
 

@@ -8,6 +8,7 @@ their number of faces, independently of the module's algebra.
 
 from __future__ import annotations
 
+import itertools
 import math
 from fractions import Fraction
 
@@ -67,13 +68,15 @@ def _meshes_by_face_count(n: int, g: int, v_stop: int) -> dict[int, tuple[int, i
 
 def _admissible(n: int, g: int, v_stop: int) -> list[int]:
     """Oracle: the v < v_stop whose counts exist and have 2e >= 3v (m >= 3)."""
-    return sorted(v for v, (_, e, _) in _meshes_by_face_count(n, g, v_stop).items()
-                  if 2 * e >= 3 * v)
+    return sorted(
+        v for v, (_, e, _) in _meshes_by_face_count(n, g, v_stop).items() if 2 * e >= 3 * v
+    )
 
 
 # --------------------------------------------------------------------------
 # Claims of Section 4, one test each
 # --------------------------------------------------------------------------
+
 
 def test_claim_equation_1_from_euler_with_platonic_solids():
     # m = 2e / v for each solid, by hand: 12/4, 24/8, 24/6, 60/20, 60/12.
@@ -177,11 +180,18 @@ def test_claim_limit_is_planar_g1_value():
 
 def test_claim_2n_over_n_minus_2_monotone_decreasing_below_3_after_6():
     # Hand: 6, 4, 10/3, 3, 14/5, 8/3, 18/7 for n = 3 .. 9.
-    hand = [Fraction(6), Fraction(4), Fraction(10, 3), Fraction(3),
-            Fraction(14, 5), Fraction(8, 3), Fraction(18, 7)]
+    hand = [
+        Fraction(6),
+        Fraction(4),
+        Fraction(10, 3),
+        Fraction(3),
+        Fraction(14, 5),
+        Fraction(8, 3),
+        Fraction(18, 7),
+    ]
     assert [limit_valence(n) for n in range(3, 10)] == hand
     values = [limit_valence(n) for n in range(3, 200)]
-    assert all(a > b for a, b in zip(values, values[1:]))
+    assert all(a > b for a, b in itertools.pairwise(values))
     for n in range(3, 200):
         assert (limit_valence(n) > 3) == (n < 6)
         assert (limit_valence(n) < 3) == (n > 6)
@@ -327,7 +337,7 @@ def test_chart_regular_versus_semiregular():
     # semi-regular tesselations, but (5, 10/3) can only have semi-regular".
     regular = {(int(row.n), int(row.m)) for row in SCHLAFLI_CHART if row.admits_regular}
     assert regular == {(4, 4), (6, 3), (3, 6)}
-    assert not [row for row in SCHLAFLI_CHART if row.n == 5][0].admits_regular
+    assert not next(row for row in SCHLAFLI_CHART if row.n == 5).admits_regular
 
 
 def test_schlafli_chart_function_matches_constant():
@@ -338,6 +348,7 @@ def test_schlafli_chart_function_matches_constant():
 # Dual statements (replace v with f)
 # --------------------------------------------------------------------------
 
+
 def test_dual_platonic_counts():
     # The m-valent solid with f faces: swap (v, f) of its dual.
     for name, n, m, v, e, f in PLATONIC:
@@ -347,8 +358,8 @@ def test_dual_platonic_counts():
 
 def test_dual_min_faces_octahedron_icosahedron():
     # n = 2m/(m-2) (1 - 2/f) >= 3: f >= 4 (m=3), 8 (m=4), 20 (m=5), never (m=6).
-    assert min_faces(3, 0) == 4   # tetrahedron
-    assert min_faces(4, 0) == 8   # octahedron
+    assert min_faces(3, 0) == 4  # tetrahedron
+    assert min_faces(4, 0) == 8  # octahedron
     assert min_faces(5, 0) == 20  # icosahedron
     assert min_faces(6, 0) is None
     assert face_range(5, 0) == (20, math.inf)
@@ -368,8 +379,9 @@ def test_dual_limit_face_size():
 # Exact values, tori, arrays
 # --------------------------------------------------------------------------
 
+
 def test_platonic_counts():
-    for name, n, m, v, e, f in PLATONIC:
+    for name, n, _m, v, e, f in PLATONIC:
         assert ngon_mesh_counts(n, 0, v) == (v, e, f), name
 
 
@@ -423,6 +435,7 @@ def test_scalar_returns_float_and_accepts_integer_valued_numbers():
 # Properties and brute force
 # --------------------------------------------------------------------------
 
+
 @settings(max_examples=300, deadline=None)
 @given(n=st.integers(3, 40), g=st.integers(0, 10), v=st.integers(1, 5000))
 def test_property_counts_satisfy_euler_and_equation_1(n, g, v):
@@ -443,8 +456,9 @@ def test_property_counts_satisfy_euler_and_equation_1(n, g, v):
 
 
 @settings(max_examples=200, deadline=None)
-@given(n=st.integers(3, 40), g=st.integers(0, 10),
-       v1=st.integers(1, 10**6), v2=st.integers(1, 10**6))
+@given(
+    n=st.integers(3, 40), g=st.integers(0, 10), v1=st.integers(1, 10**6), v2=st.integers(1, 10**6)
+)
 def test_property_monotone_in_v(n, g, v1, v2):
     if v1 > v2:
         v1, v2 = v2, v1
@@ -495,52 +509,56 @@ def test_property_dual_formula_swaps_v_and_f(n, g, f):
 # Errors
 # --------------------------------------------------------------------------
 
-@pytest.mark.parametrize("call, match", [
-    (lambda: average_valence(2, 0, 10), r"n must be an integer >= 3, got 2"),
-    (lambda: average_valence(5.5, 0, 10), r"n must be an integer"),
-    (lambda: average_valence(True, 0, 10), r"n must be an integer"),
-    (lambda: average_valence("5", 0, 10), r"n must be an integer"),
-    (lambda: average_valence([5, 2], 0, 10), r"n must be an integer >= 3"),
-    (lambda: average_valence(5, -1, 10), r"g must be an integer >= 0"),
-    (lambda: average_valence(5, 0.5, 10), r"g must be an integer"),
-    (lambda: average_valence(5, 0, 0), r"v must be > 0"),
-    (lambda: average_valence(5, 0, -3), r"v must be > 0"),
-    (lambda: average_valence(5, 0, [20, 0]), r"v must be > 0"),
-    (lambda: average_valence(5, 0, np.nan), r"v must be > 0"),
-    (lambda: average_valence(5, 0, "20"), r"v must be a positive number"),
-    (lambda: limit_valence(2), r"n must be an integer >= 3"),
-    (lambda: limit_valence(4.5), r"n must be an integer"),
-    (lambda: limit_valence(math.inf), r"n must be an integer"),
-    (lambda: limit_valence_is_integer(1), r"n must be an integer >= 3"),
-    (lambda: ngon_mesh_counts(2, 0, 4), r"n must be an integer >= 3"),
-    (lambda: ngon_mesh_counts(5, -1, 20), r"g must be an integer >= 0"),
-    (lambda: ngon_mesh_counts(5, 0, 0), r"v must be an integer >= 1, got 0"),
-    (lambda: ngon_mesh_counts(5, 0, -20), r"v must be an integer >= 1"),
-    (lambda: ngon_mesh_counts(5, 0, 20.5), r"v must be an integer"),
-    (lambda: vertex_range(2, 0), r"n must be an integer >= 3"),
-    (lambda: vertex_range(5, -2), r"g must be an integer >= 0"),
-    (lambda: vertex_range(5, 1.5), r"g must be an integer"),
-    (lambda: min_vertices(0, 0), r"n must be an integer >= 3"),
-    (lambda: min_vertices(5, -1), r"g must be an integer >= 0"),
-    (lambda: can_tile(2, 0), r"n must be an integer >= 3"),
-    (lambda: can_tile(5, -1), r"g must be an integer >= 0"),
-    (lambda: can_tile(5, 0, 0), r"v must be an integer >= 1"),
-    (lambda: can_tile(5, 0, 2.5), r"v must be an integer"),
-    (lambda: ngonalization_exists(2), r"n must be an integer >= 3"),
-    (lambda: ngonalization_exists(5.5), r"n must be an integer"),
-    (lambda: ngon_preservation_exists(2), r"n must be an integer >= 3"),
-    (lambda: ngon_preservation_exists(None), r"n must be an integer"),
-    (lambda: average_face_size(2, 0, 10), r"m must be an integer >= 3"),
-    (lambda: average_face_size(5, -1, 10), r"g must be an integer >= 0"),
-    (lambda: average_face_size(5, 0, 0), r"f must be > 0"),
-    (lambda: limit_face_size(2), r"m must be an integer >= 3"),
-    (lambda: mvalent_mesh_counts(2, 0, 4), r"m must be an integer >= 3"),
-    (lambda: mvalent_mesh_counts(5, -1, 4), r"g must be an integer >= 0"),
-    (lambda: mvalent_mesh_counts(5, 0, 0), r"f must be an integer >= 1"),
-    (lambda: face_range(2, 0), r"m must be an integer >= 3"),
-    (lambda: face_range(5, -1), r"g must be an integer >= 0"),
-    (lambda: min_faces(1, 0), r"m must be an integer >= 3"),
-])
+
+@pytest.mark.parametrize(
+    "call, match",
+    [
+        (lambda: average_valence(2, 0, 10), r"n must be an integer >= 3, got 2"),
+        (lambda: average_valence(5.5, 0, 10), r"n must be an integer"),
+        (lambda: average_valence(True, 0, 10), r"n must be an integer"),
+        (lambda: average_valence("5", 0, 10), r"n must be an integer"),
+        (lambda: average_valence([5, 2], 0, 10), r"n must be an integer >= 3"),
+        (lambda: average_valence(5, -1, 10), r"g must be an integer >= 0"),
+        (lambda: average_valence(5, 0.5, 10), r"g must be an integer"),
+        (lambda: average_valence(5, 0, 0), r"v must be > 0"),
+        (lambda: average_valence(5, 0, -3), r"v must be > 0"),
+        (lambda: average_valence(5, 0, [20, 0]), r"v must be > 0"),
+        (lambda: average_valence(5, 0, np.nan), r"v must be > 0"),
+        (lambda: average_valence(5, 0, "20"), r"v must be a positive number"),
+        (lambda: limit_valence(2), r"n must be an integer >= 3"),
+        (lambda: limit_valence(4.5), r"n must be an integer"),
+        (lambda: limit_valence(math.inf), r"n must be an integer"),
+        (lambda: limit_valence_is_integer(1), r"n must be an integer >= 3"),
+        (lambda: ngon_mesh_counts(2, 0, 4), r"n must be an integer >= 3"),
+        (lambda: ngon_mesh_counts(5, -1, 20), r"g must be an integer >= 0"),
+        (lambda: ngon_mesh_counts(5, 0, 0), r"v must be an integer >= 1, got 0"),
+        (lambda: ngon_mesh_counts(5, 0, -20), r"v must be an integer >= 1"),
+        (lambda: ngon_mesh_counts(5, 0, 20.5), r"v must be an integer"),
+        (lambda: vertex_range(2, 0), r"n must be an integer >= 3"),
+        (lambda: vertex_range(5, -2), r"g must be an integer >= 0"),
+        (lambda: vertex_range(5, 1.5), r"g must be an integer"),
+        (lambda: min_vertices(0, 0), r"n must be an integer >= 3"),
+        (lambda: min_vertices(5, -1), r"g must be an integer >= 0"),
+        (lambda: can_tile(2, 0), r"n must be an integer >= 3"),
+        (lambda: can_tile(5, -1), r"g must be an integer >= 0"),
+        (lambda: can_tile(5, 0, 0), r"v must be an integer >= 1"),
+        (lambda: can_tile(5, 0, 2.5), r"v must be an integer"),
+        (lambda: ngonalization_exists(2), r"n must be an integer >= 3"),
+        (lambda: ngonalization_exists(5.5), r"n must be an integer"),
+        (lambda: ngon_preservation_exists(2), r"n must be an integer >= 3"),
+        (lambda: ngon_preservation_exists(None), r"n must be an integer"),
+        (lambda: average_face_size(2, 0, 10), r"m must be an integer >= 3"),
+        (lambda: average_face_size(5, -1, 10), r"g must be an integer >= 0"),
+        (lambda: average_face_size(5, 0, 0), r"f must be > 0"),
+        (lambda: limit_face_size(2), r"m must be an integer >= 3"),
+        (lambda: mvalent_mesh_counts(2, 0, 4), r"m must be an integer >= 3"),
+        (lambda: mvalent_mesh_counts(5, -1, 4), r"g must be an integer >= 0"),
+        (lambda: mvalent_mesh_counts(5, 0, 0), r"f must be an integer >= 1"),
+        (lambda: face_range(2, 0), r"m must be an integer >= 3"),
+        (lambda: face_range(5, -1), r"g must be an integer >= 0"),
+        (lambda: min_faces(1, 0), r"m must be an integer >= 3"),
+    ],
+)
 def test_errors(call, match):
     with pytest.raises(ValueError, match=match):
         call()
@@ -556,10 +574,12 @@ def test_module_needs_only_numpy():
     import pentanb.topology
 
     path = Path(pentanb.topology.__file__)
-    code = ("import importlib.util, sys; "
-            f"spec = importlib.util.spec_from_file_location('topology', {str(path)!r}); "
-            "module = importlib.util.module_from_spec(spec); "
-            "spec.loader.exec_module(module); "
-            "assert 'matplotlib' not in sys.modules, 'matplotlib imported'; "
-            "assert module.min_vertices(5, 0) == 20")
+    code = (
+        "import importlib.util, sys; "
+        f"spec = importlib.util.spec_from_file_location('topology', {str(path)!r}); "
+        "module = importlib.util.module_from_spec(spec); "
+        "spec.loader.exec_module(module); "
+        "assert 'matplotlib' not in sys.modules, 'matplotlib imported'; "
+        "assert module.min_vertices(5, 0) == 20"
+    )
     subprocess.run([sys.executable, "-c", code], check=True)

@@ -33,8 +33,7 @@ from ipywidgets.embed import dependency_state, escape_script
 
 from ..mesh import Mesh
 
-__all__ = ["export_html", "js_dir", "offline_scripts", "HTML_MANAGER_VERSION",
-           "REQUIREJS_VERSION"]
+__all__ = ["export_html", "js_dir", "offline_scripts", "HTML_MANAGER_VERSION", "REQUIREJS_VERSION"]
 
 #: Versions fetched by ``.ci/browser-setup.sh`` and used by online pages.
 HTML_MANAGER_VERSION = "1.0.15"
@@ -72,6 +71,7 @@ def js_dir() -> Path:
 
 def _pythreejs_static() -> Path:
     import pythreejs
+
     return Path(pythreejs.__file__).parent / "static"
 
 
@@ -94,11 +94,13 @@ def offline_scripts() -> dict[str, Path]:
     missing = [str(p) for p in files.values() if not p.is_file()]
     if missing:
         raise FileNotFoundError(
-            "an offline page needs these files, which are missing: " + ", ".join(missing)
+            "an offline page needs these files, which are missing: "
+            + ", ".join(missing)
             + f". Fetch them with: npm install --prefix {js_dir()} "
             f"@jupyter-widgets/html-manager@{HTML_MANAGER_VERSION} "
             f"requirejs@{REQUIREJS_VERSION} (or run .ci/browser-setup.sh; "
-            "PENTANB_JS_DIR chooses the folder), or export with offline=False")
+            "PENTANB_JS_DIR chooses the folder), or export with offline=False"
+        )
     return files
 
 
@@ -113,26 +115,30 @@ def _data_url(path: Path) -> str:
 
 def _script_block(offline: bool) -> str:
     if not offline:
-        return (f'<script src="{_CDN}/requirejs@{REQUIREJS_VERSION}/require.js" '
-                'crossorigin="anonymous"></script>\n'
-                f'<script src="{_CDN}/@jupyter-widgets/html-manager@{HTML_MANAGER_VERSION}'
-                '/dist/embed-amd.js" crossorigin="anonymous"></script>')
+        return (
+            f'<script src="{_CDN}/requirejs@{REQUIREJS_VERSION}/require.js" '
+            'crossorigin="anonymous"></script>\n'
+            f'<script src="{_CDN}/@jupyter-widgets/html-manager@{HTML_MANAGER_VERSION}'
+            '/dist/embed-amd.js" crossorigin="anonymous"></script>'
+        )
     f = offline_scripts()
     # pythreejs' AMD modules are anonymous; requirejs loads them from data:
     # URLs under their names, so html-manager finds them without a CDN
-    paths = {"jupyter-threejs": _data_url(f["jupyter-threejs"]),
-             "three": _data_url(f["three"])}
-    return "\n".join([
-        "<script>" + _inline(f["requirejs"].read_text(encoding="utf-8")) + "</script>",
-        "<script>require.config({paths: " + json.dumps(paths) + "});</script>",
-        # data-jupyter-widgets-cdn-only is absent: html-manager asks requirejs first
-        "<script>" + _inline(f["html-manager"].read_text(encoding="utf-8")) + "</script>",
-    ])
+    paths = {"jupyter-threejs": _data_url(f["jupyter-threejs"]), "three": _data_url(f["three"])}
+    return "\n".join(
+        [
+            "<script>" + _inline(f["requirejs"].read_text(encoding="utf-8")) + "</script>",
+            "<script>require.config({paths: " + json.dumps(paths) + "});</script>",
+            # data-jupyter-widgets-cdn-only is absent: html-manager asks requirejs first
+            "<script>" + _inline(f["html-manager"].read_text(encoding="utf-8")) + "</script>",
+        ]
+    )
 
 
 def _exportable(obj) -> W.Widget:
-    from .three import Explorer, MeshView, view
     from .steps import StepThrough
+    from .three import Explorer, MeshView, view
+
     if isinstance(obj, Mesh):
         return view(obj)
     if isinstance(obj, (Explorer, StepThrough)):
@@ -183,7 +189,8 @@ def export_html(obj, path, offline: bool = True, *, title: str = "pentanb") -> P
         heading=f"<h3>{_html_escape(title)}</h3>" if title else "",
         state=escape_script(json.dumps(manager_state)),
         views='<script type="application/vnd.jupyter.widget-view+json">\n'
-              + escape_script(json.dumps(spec)) + "\n</script>",
+        + escape_script(json.dumps(spec))
+        + "\n</script>",
     )
     path = Path(path)
     path.write_text(page, encoding="utf-8")

@@ -24,7 +24,7 @@ Examples
 from __future__ import annotations
 
 import contextlib
-from typing import Mapping, Sequence
+from collections.abc import Mapping, Sequence
 
 import matplotlib
 import numpy as np
@@ -37,10 +37,25 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from ..colors import EDGE_COLOR, face_color, face_label, face_rgb
 from ..mesh import Mesh
 
-__all__ = ["draw_mesh", "plot_mesh", "plot_meshes", "add_face_legend", "panel_figure", "label_panel",
-           "draw_flat", "draw_segments", "face_polygons", "shaded_colors", "view_direction",
-           "fit_view",
-           "save_figure", "style", "DPI", "ELEV", "AZIM"]
+__all__ = [
+    "draw_mesh",
+    "plot_mesh",
+    "plot_meshes",
+    "add_face_legend",
+    "panel_figure",
+    "label_panel",
+    "draw_flat",
+    "draw_segments",
+    "face_polygons",
+    "shaded_colors",
+    "view_direction",
+    "fit_view",
+    "save_figure",
+    "style",
+    "DPI",
+    "ELEV",
+    "AZIM",
+]
 
 #: Resolution of every saved figure (dots per inch).
 DPI = 120
@@ -101,8 +116,7 @@ def face_polygons(mesh: Mesh, faces: np.ndarray | None = None):
         sel_sizes = sizes[faces]
         # corner indices of the chosen faces, still in CSR order
         start = np.repeat(offsets[faces], sel_sizes)
-        local = np.arange(sel_sizes.sum()) - np.repeat(np.cumsum(sel_sizes) - sel_sizes,
-                                                        sel_sizes)
+        local = np.arange(sel_sizes.sum()) - np.repeat(np.cumsum(sel_sizes) - sel_sizes, sel_sizes)
         corners = mesh.corners[start + local]
     pts = mesh.vertices[corners]
     if sel_sizes.size and np.all(sel_sizes == sel_sizes[0]):
@@ -127,9 +141,15 @@ def _lights(elev: float, azim: float) -> tuple[np.ndarray, np.ndarray]:
     return key / np.linalg.norm(key), eye
 
 
-def shaded_colors(mesh: Mesh, elev: float = ELEV, azim: float = AZIM, *,
-                  shade: bool = True, ambient: float = AMBIENT,
-                  faces: np.ndarray | None = None) -> np.ndarray:
+def shaded_colors(
+    mesh: Mesh,
+    elev: float = ELEV,
+    azim: float = AZIM,
+    *,
+    shade: bool = True,
+    ambient: float = AMBIENT,
+    faces: np.ndarray | None = None,
+) -> np.ndarray:
     """RGB colour of every face: its face-size colour times a Lambert term.
 
     Parameters
@@ -154,8 +174,9 @@ def shaded_colors(mesh: Mesh, elev: float = ELEV, azim: float = AZIM, *,
         return rgb
     normals = mesh.face_normals if faces is None else mesh.face_normals[faces]
     key, head = _lights(elev, azim)
-    lambert = (KEY * np.clip(normals @ key, 0.0, 1.0)
-               + (1.0 - KEY) * np.clip(normals @ head, 0.0, 1.0))
+    lambert = KEY * np.clip(normals @ key, 0.0, 1.0) + (1.0 - KEY) * np.clip(
+        normals @ head, 0.0, 1.0
+    )
     return rgb * np.minimum(ambient + (1.0 - ambient) * lambert, 1.0)[:, None]
 
 
@@ -177,18 +198,16 @@ def fit_view(ax, points: np.ndarray, zoom: float = 1.0, fill: float = 0.94) -> N
     aspect = tuple(span / span.max())
     pos = ax.get_position(original=True)
     fw, fh = ax.figure.get_size_inches()
-    pw, ph = pos.width * fw, pos.height * fh           # the panel, inches
-    side = min(pw, ph)                                 # mplot3d's square, inches
+    pw, ph = pos.width * fw, pos.height * fh  # the panel, inches
+    side = min(pw, ph)  # mplot3d's square, inches
     view = ax.viewLim
-    unit = side / max(view.width, view.height)         # inches per projected unit
+    unit = side / max(view.width, view.height)  # inches per projected unit
     z = 1.0
-    for _ in range(3):                                 # perspective: refine twice
+    for _ in range(3):  # perspective: refine twice
         ax.set_box_aspect(aspect, zoom=z)
         xs, ys, _ = proj3d.proj_transform(*points.T, ax.get_proj())
-        hx = (max(xs.max() - view.x0 - view.width / 2, view.x0 + view.width / 2 - xs.min())
-              * unit)
-        hy = (max(ys.max() - view.y0 - view.height / 2, view.y0 + view.height / 2 - ys.min())
-              * unit)
+        hx = max(xs.max() - view.x0 - view.width / 2, view.x0 + view.width / 2 - xs.min()) * unit
+        hy = max(ys.max() - view.y0 - view.height / 2, view.y0 + view.height / 2 - ys.min()) * unit
         z *= fill * min(pw / 2 / max(hx, 1e-12), ph / 2 / max(hy, 1e-12))
     ax.set_box_aspect(aspect, zoom=z * zoom)
 
@@ -198,10 +217,20 @@ def _edge_width(n_faces: int) -> float:
 
 
 # ---------------------------------------------------------------------- drawing
-def draw_mesh(ax, mesh: Mesh, *, wireframe: bool = True, shade: bool = True,
-              title: str | None = None, elev: float = ELEV, azim: float = AZIM,
-              zoom: float = 1.0, edge_width: float | None = None,
-              faces: np.ndarray | None = None, proj: str = "persp") -> Poly3DCollection:
+def draw_mesh(
+    ax,
+    mesh: Mesh,
+    *,
+    wireframe: bool = True,
+    shade: bool = True,
+    title: str | None = None,
+    elev: float = ELEV,
+    azim: float = AZIM,
+    zoom: float = 1.0,
+    edge_width: float | None = None,
+    faces: np.ndarray | None = None,
+    proj: str = "persp",
+) -> Poly3DCollection:
     """Draw a mesh into a 3-D axes: one shaded polygon per face, coloured by sides.
 
     Parameters
@@ -232,10 +261,13 @@ def draw_mesh(ax, mesh: Mesh, *, wireframe: bool = True, shade: bool = True,
     colors = shaded_colors(mesh, elev, azim, shade=shade, faces=faces)
     n = len(polys)
     lw = _edge_width(n) if edge_width is None else edge_width
-    coll = Poly3DCollection(polys, facecolors=colors,
-                            edgecolors=EDGE_COLOR if wireframe else colors,
-                            linewidths=lw if wireframe else 0.15)
-    coll.set_clip_on(False)   # mplot3d's square may be narrower than a wide panel
+    coll = Poly3DCollection(
+        polys,
+        facecolors=colors,
+        edgecolors=EDGE_COLOR if wireframe else colors,
+        linewidths=lw if wireframe else 0.15,
+    )
+    coll.set_clip_on(False)  # mplot3d's square may be narrower than a wide panel
     ax.add_collection3d(coll)
     ax.view_init(elev=elev, azim=azim)
     ax.set_proj_type(proj)
@@ -259,9 +291,16 @@ def label_panel(ax, text: str) -> None:
     ax.set_title(text, y=-0.02, va="top", pad=0)
 
 
-def draw_flat(ax, mesh: Mesh, faces: np.ndarray | None = None, *,
-              wireframe: bool = True, alpha: float = 1.0, edge_width: float = 1.2,
-              zorder: float = 1.0) -> PolyCollection:
+def draw_flat(
+    ax,
+    mesh: Mesh,
+    faces: np.ndarray | None = None,
+    *,
+    wireframe: bool = True,
+    alpha: float = 1.0,
+    edge_width: float = 1.2,
+    zorder: float = 1.0,
+) -> PolyCollection:
     """Draw faces of a planar mesh (z ignored) into a 2-D axes, coloured by sides.
 
     Used for the single-polygon diagrams (Figures 6 and 10).
@@ -269,9 +308,14 @@ def draw_flat(ax, mesh: Mesh, faces: np.ndarray | None = None, *,
     polys = face_polygons(mesh, faces)
     sizes = mesh.face_sizes if faces is None else mesh.face_sizes[np.asarray(faces)]
     flat = [np.asarray(p)[:, :2] for p in polys]
-    coll = PolyCollection(flat, facecolors=face_rgb(sizes), alpha=alpha,
-                          edgecolors=EDGE_COLOR if wireframe else "none",
-                          linewidths=edge_width, zorder=zorder)
+    coll = PolyCollection(
+        flat,
+        facecolors=face_rgb(sizes),
+        alpha=alpha,
+        edgecolors=EDGE_COLOR if wireframe else "none",
+        linewidths=edge_width,
+        zorder=zorder,
+    )
     ax.add_collection(coll)
     ax.set_aspect("equal")
     ax.set_axis_off()
@@ -285,10 +329,17 @@ def draw_segments(ax, segments: np.ndarray, **kwargs) -> LineCollection:
     return coll
 
 
-def panel_figure(n_panels: int, ncols: int | None = None, *, panel_size: float = 3.0,
-                 projection: str | None = "3d", suptitle: str | None = None,
-                 legend_space: float = 0.0, label_space: float = 0.42,
-                 aspect: float = 1.0) -> tuple[Figure, list]:
+def panel_figure(
+    n_panels: int,
+    ncols: int | None = None,
+    *,
+    panel_size: float = 3.0,
+    projection: str | None = "3d",
+    suptitle: str | None = None,
+    legend_space: float = 0.0,
+    label_space: float = 0.42,
+    aspect: float = 1.0,
+) -> tuple[Figure, list]:
     """A figure with a grid of panels (3-D axes by default), room for labels under each.
 
     Parameters
@@ -323,8 +374,12 @@ def panel_figure(n_panels: int, ncols: int | None = None, *, panel_size: float =
     for i in range(n_panels):
         r, c = divmod(i, ncols)
         bottom = legend_space + (nrows - 1 - r) * (ph + label_space) + label_space
-        axes.append(fig.add_axes((c * panel_size / width, bottom / height,
-                                  panel_size / width, ph / height), projection=projection))
+        axes.append(
+            fig.add_axes(
+                (c * panel_size / width, bottom / height, panel_size / width, ph / height),
+                projection=projection,
+            )
+        )
     if suptitle:
         fig.suptitle(suptitle, y=1 - 0.1 / height, va="top", fontsize=10.5)
     return fig, axes
@@ -344,8 +399,14 @@ def _sizes_of(sizes) -> list[int]:
     return sorted(out)
 
 
-def add_face_legend(fig_or_ax, sizes, *, loc: str | None = None, ncol: int | None = None,
-                    title: str | None = "faces by number of sides"):
+def add_face_legend(
+    fig_or_ax,
+    sizes,
+    *,
+    loc: str | None = None,
+    ncol: int | None = None,
+    title: str | None = "faces by number of sides",
+):
     """A legend of the face-size colours.
 
     Parameters
@@ -364,36 +425,72 @@ def add_face_legend(fig_or_ax, sizes, *, loc: str | None = None, ncol: int | Non
     matplotlib.legend.Legend
     """
     present = _sizes_of(sizes)
-    handles = [Patch(facecolor=face_color(n), edgecolor=EDGE_COLOR, linewidth=0.6,
-                     label=f"{face_label(n)} ({n})") for n in present]
+    handles = [
+        Patch(
+            facecolor=face_color(n),
+            edgecolor=EDGE_COLOR,
+            linewidth=0.6,
+            label=f"{face_label(n)} ({n})",
+        )
+        for n in present
+    ]
     ncol = len(handles) if ncol is None else ncol
     if isinstance(fig_or_ax, Figure):
-        return fig_or_ax.legend(handles=handles, loc=loc or "lower center", ncol=ncol,
-                                frameon=False, title=title, title_fontsize=8.5,
-                                bbox_to_anchor=(0.5, 0.0))
-    return fig_or_ax.legend(handles=handles, loc=loc or "best", ncol=ncol, frameon=False,
-                            title=title, title_fontsize=8.5)
+        return fig_or_ax.legend(
+            handles=handles,
+            loc=loc or "lower center",
+            ncol=ncol,
+            frameon=False,
+            title=title,
+            title_fontsize=8.5,
+            bbox_to_anchor=(0.5, 0.0),
+        )
+    return fig_or_ax.legend(
+        handles=handles,
+        loc=loc or "best",
+        ncol=ncol,
+        frameon=False,
+        title=title,
+        title_fontsize=8.5,
+    )
 
 
-def plot_mesh(mesh: Mesh, *, wireframe: bool = True, shade: bool = True,
-              title: str | None = None, legend: bool = True, size: float = 4.0,
-              **kwargs) -> Figure:
+def plot_mesh(
+    mesh: Mesh,
+    *,
+    wireframe: bool = True,
+    shade: bool = True,
+    title: str | None = None,
+    legend: bool = True,
+    size: float = 4.0,
+    **kwargs,
+) -> Figure:
     """One mesh in a figure of its own, with a face-size legend.
 
     Keyword arguments go to :func:`draw_mesh`.
     """
     with style():
-        fig, (ax,) = panel_figure(1, panel_size=size, legend_space=0.5 if legend else 0,
-                                  label_space=0.42 if title else 0.05)
+        fig, (ax,) = panel_figure(
+            1,
+            panel_size=size,
+            legend_space=0.5 if legend else 0,
+            label_space=0.42 if title else 0.05,
+        )
         draw_mesh(ax, mesh, wireframe=wireframe, shade=shade, title=title, **kwargs)
         if legend:
             add_face_legend(fig, mesh)
     return fig
 
 
-def plot_meshes(meshes: Sequence[Mesh], titles: Sequence[str] | None = None, *,
-                ncols: int | None = None, panel_size: float = 2.6,
-                suptitle: str | None = None, **kwargs) -> Figure:
+def plot_meshes(
+    meshes: Sequence[Mesh],
+    titles: Sequence[str] | None = None,
+    *,
+    ncols: int | None = None,
+    panel_size: float = 2.6,
+    suptitle: str | None = None,
+    **kwargs,
+) -> Figure:
     """Several meshes side by side, one panel each, with one face-size legend.
 
     Parameters
@@ -411,8 +508,9 @@ def plot_meshes(meshes: Sequence[Mesh], titles: Sequence[str] | None = None, *,
     if len(titles) != len(meshes):
         raise ValueError(f"{len(meshes)} meshes but {len(titles)} titles")
     with style():
-        fig, axes = panel_figure(len(meshes), ncols, panel_size=panel_size,
-                                 suptitle=suptitle, legend_space=0.5)
+        fig, axes = panel_figure(
+            len(meshes), ncols, panel_size=panel_size, suptitle=suptitle, legend_space=0.5
+        )
         for ax, mesh, title in zip(axes, meshes, titles):
             draw_mesh(ax, mesh, title=title, **kwargs)
         add_face_legend(fig, meshes)

@@ -12,12 +12,12 @@ result and its duals, built by the package's own operators.
 
 from __future__ import annotations
 
-import numpy as np
 import ipywidgets as W
+import numpy as np
 
-from ..colors import face_rgb, _hex_to_rgb
+from ..colors import _hex_to_rgb, face_rgb
 from ..mesh import Mesh
-from .three import Drawing, MeshView, slider_stack, _histogram
+from .three import Drawing, MeshView, _histogram, slider_stack
 
 __all__ = ["stages", "StepThrough", "step_through"]
 
@@ -29,8 +29,9 @@ FACE_POINT_COLOR = "#c00000"
 
 
 def _input_caption(mesh: Mesh) -> str:
-    return (f"The input mesh: {mesh.n_vertices} vertices, {mesh.n_edges} edges, "
-            f"{mesh.n_faces} faces.")
+    return (
+        f"The input mesh: {mesh.n_vertices} vertices, {mesh.n_edges} edges, {mesh.n_faces} faces."
+    )
 
 
 def _halfedges(mesh: Mesh):
@@ -60,15 +61,24 @@ def _pieces(parts):
     return positions, offsets, sizes
 
 
-def _draw(positions, offsets, colors, segments, seg_colors, points, point_colors,
-          legend) -> Drawing:
-    return Drawing(positions=positions, offsets=offsets, face_colors=colors,
-                   segments=segments, segment_colors=seg_colors, points=points,
-                   point_colors=point_colors, legend=legend)
+def _draw(
+    positions, offsets, colors, segments, seg_colors, points, point_colors, legend
+) -> Drawing:
+    return Drawing(
+        positions=positions,
+        offsets=offsets,
+        face_colors=colors,
+        segments=segments,
+        segment_colors=seg_colors,
+        points=points,
+        point_colors=point_colors,
+        legend=legend,
+    )
 
 
-def stages(mesh: Mesh, scheme: str = "pentagonalize", *, duals: int = 2,
-           scale: float | None = None) -> list[tuple[str, object]]:
+def stages(
+    mesh: Mesh, scheme: str = "pentagonalize", *, duals: int = 2, scale: float | None = None
+) -> list[tuple[str, object]]:
     """The stages of one application of a scheme, as (caption, Drawing or Mesh).
 
     ``"pentagonalize"`` (Section 5.1) and ``"preserve_pentagons"``
@@ -77,6 +87,7 @@ def stages(mesh: Mesh, scheme: str = "pentagonalize", *, duals: int = 2,
     """
     from ..dual import dual
     from ..subdivision import SCHEMES
+
     if scheme not in SCHEMES:
         raise ValueError(f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}")
     s = SCHEMES[scheme]
@@ -90,14 +101,20 @@ def stages(mesh: Mesh, scheme: str = "pentagonalize", *, duals: int = 2,
     else:
         out = [(_input_caption(mesh), mesh)]
     result = s(mesh, **opts)
-    out.append((f"{s.label}: the remeshed mesh, {result.n_vertices} vertices, "
-                f"{result.n_edges} edges, {result.n_faces} faces ({s.paper}).", result))
+    out.append(
+        (
+            f"{s.label}: the remeshed mesh, {result.n_vertices} vertices, "
+            f"{result.n_edges} edges, {result.n_faces} faces ({s.paper}).",
+            result,
+        )
+    )
     m = result
     for k in range(duals):
         m = dual(m)
         what = "the dual" if k == 0 else "the dual of the dual" if k == 1 else f"dual {k + 1}"
-        out.append((f"Dual pass {k + 1}: {what} "
-                    "(Section 5: apply the dual an even number of times).", m))
+        out.append(
+            (f"Dual pass {k + 1}: {what} (Section 5: apply the dual an even number of times).", m)
+        )
     return out
 
 
@@ -118,15 +135,30 @@ def _pentagonalize_stages(mesh: Mesh):
     ep_col = np.tile(_hex_to_rgb(EDGE_POINT_COLOR), (len(edge_pts), 1))
     fp_col = np.tile(_hex_to_rgb(FACE_POINT_COLOR), (len(face_pts), 1))
     legend0 = _histogram(sizes)
-    out = [(_input_caption(mesh),
-            _draw(positions, offsets, parent, old_edges, black, None, None, legend0)),
-           (f"Step 1: every edge is cut into three equal parts: {2 * mesh.n_edges} new "
+    out = [
+        (
+            _input_caption(mesh),
+            _draw(positions, offsets, parent, old_edges, black, None, None, legend0),
+        ),
+        (
+            f"Step 1: every edge is cut into three equal parts: {2 * mesh.n_edges} new "
             "points (black).",
-            _draw(positions, offsets, parent, old_edges, black, edge_pts, ep_col, legend0)),
-           ("Step 2a: a point sphere at the centroid of every face (red).",
-            _draw(positions, offsets, parent, old_edges, black,
-                  np.concatenate([edge_pts, face_pts]), np.concatenate([ep_col, fp_col]),
-                  legend0))]
+            _draw(positions, offsets, parent, old_edges, black, edge_pts, ep_col, legend0),
+        ),
+        (
+            "Step 2a: a point sphere at the centroid of every face (red).",
+            _draw(
+                positions,
+                offsets,
+                parent,
+                old_edges,
+                black,
+                np.concatenate([edge_pts, face_pts]),
+                np.concatenate([ep_col, fp_col]),
+                legend0,
+            ),
+        ),
+    ]
     spoke = np.stack([c, t1], axis=1)  # inserted edge of half-edge h
     jn = j[nxt]
     n_groups = int(sizes.max())
@@ -135,18 +167,30 @@ def _pentagonalize_stages(mesh: Mesh):
         colors = np.where(done[:, None], face_rgb(np.full(len(j), 5)), _lighten(parent))
         inserted = j <= g
         segs = np.concatenate([old_edges, spoke[inserted]])
-        seg_col = np.concatenate([black, np.where((j[inserted] == g)[:, None],
-                                                  _hex_to_rgb(NEW_EDGE_COLOR), 0.0)])
+        seg_col = np.concatenate(
+            [black, np.where((j[inserted] == g)[:, None], _hex_to_rgb(NEW_EDGE_COLOR), 0.0)]
+        )
         legend = _histogram(sizes[np.unique(hf[~done])])  # faces not yet split
         if done.any():
             legend[5] = legend.get(5, 0) + int(done.sum())
-        out.append((f"Step 2b, group {g + 1} of {n_groups}: an edge from each point "
-                    f"sphere to the first trisection point after corner {g + 1} of its "
-                    "face (every third corner of the subdivided face); a pentagon is "
-                    "closed when both its edges are in.",
-                    _draw(positions, offsets, colors, segs, seg_col,
-                          np.concatenate([edge_pts, face_pts]),
-                          np.concatenate([ep_col, fp_col]), legend)))
+        out.append(
+            (
+                f"Step 2b, group {g + 1} of {n_groups}: an edge from each point "
+                f"sphere to the first trisection point after corner {g + 1} of its "
+                "face (every third corner of the subdivided face); a pentagon is "
+                "closed when both its edges are in.",
+                _draw(
+                    positions,
+                    offsets,
+                    colors,
+                    segs,
+                    seg_col,
+                    np.concatenate([edge_pts, face_pts]),
+                    np.concatenate([ep_col, fp_col]),
+                    legend,
+                ),
+            )
+        )
     return out
 
 
@@ -171,39 +215,70 @@ def _preservation_stages(mesh: Mesh, scale: float):
     q_col = np.tile(_hex_to_rgb(FACE_POINT_COLOR), (len(q), 1))
     legend0 = _histogram(sizes)
     ring = np.concatenate([parent_face, _lighten(parent_face[hf])])
-    out = [(_input_caption(mesh),
-            _draw(positions, offsets, parent, old_edges, black, None, None, legend0)),
-           (f"Step 1: every edge is cut at its midpoint: {mesh.n_edges} new points (black).",
-            _draw(positions, offsets, parent, old_edges, black, mids, mp_col, legend0)),
-           (f"Step 2: in every face the midpoints are scaled by {scale:g} about their "
+    out = [
+        (
+            _input_caption(mesh),
+            _draw(positions, offsets, parent, old_edges, black, None, None, legend0),
+        ),
+        (
+            f"Step 1: every edge is cut at its midpoint: {mesh.n_edges} new points (black).",
+            _draw(positions, offsets, parent, old_edges, black, mids, mp_col, legend0),
+        ),
+        (
+            f"Step 2: in every face the midpoints are scaled by {scale:g} about their "
             "centroid: a smaller copy of the face, with as many sides.",
-            _draw(positions, offsets, ring,
-                  np.concatenate([old_edges, copy_edges]),
-                  np.concatenate([black, np.tile(_hex_to_rgb(NEW_EDGE_COLOR),
-                                                 (len(copy_edges), 1))]),
-                  np.concatenate([mids, q]), np.concatenate([mp_col, q_col]),
-                  legend0))]
+            _draw(
+                positions,
+                offsets,
+                ring,
+                np.concatenate([old_edges, copy_edges]),
+                np.concatenate([black, np.tile(_hex_to_rgb(NEW_EDGE_COLOR), (len(copy_edges), 1))]),
+                np.concatenate([mids, q]),
+                np.concatenate([mp_col, q_col]),
+                legend0,
+            ),
+        ),
+    ]
     spoke = np.stack([q, mid], axis=1)
     jn = j[nxt]
     n_groups = int(sizes.max())
     for g in range(n_groups):
         done = np.maximum(j, jn) <= g
-        colors = np.concatenate([parent_face, np.where(
-            done[:, None], face_rgb(np.full(len(j), 5)), _lighten(parent_face[hf]))])
+        colors = np.concatenate(
+            [
+                parent_face,
+                np.where(done[:, None], face_rgb(np.full(len(j), 5)), _lighten(parent_face[hf])),
+            ]
+        )
         inserted = j <= g
         segs = np.concatenate([old_edges, copy_edges, spoke[inserted]])
-        seg_col = np.concatenate([black, np.zeros((len(copy_edges), 3)),
-                                  np.where((j[inserted] == g)[:, None],
-                                           _hex_to_rgb(NEW_EDGE_COLOR), 0.0)])
+        seg_col = np.concatenate(
+            [
+                black,
+                np.zeros((len(copy_edges), 3)),
+                np.where((j[inserted] == g)[:, None], _hex_to_rgb(NEW_EDGE_COLOR), 0.0),
+            ]
+        )
         legend = _histogram(sizes)
         if done.any():
             legend[5] = legend.get(5, 0) + int(done.sum())
-        out.append((f"Step 3, group {g + 1} of {n_groups}: an edge from corner {g + 1} "
-                    "of every copy to its midpoint; a pentagon is closed when both its "
-                    "edges are in.",
-                    _draw(positions, offsets, colors, segs, seg_col,
-                          np.concatenate([mids, q]), np.concatenate([mp_col, q_col]),
-                          legend)))
+        out.append(
+            (
+                f"Step 3, group {g + 1} of {n_groups}: an edge from corner {g + 1} "
+                "of every copy to its midpoint; a pentagon is closed when both its "
+                "edges are in.",
+                _draw(
+                    positions,
+                    offsets,
+                    colors,
+                    segs,
+                    seg_col,
+                    np.concatenate([mids, q]),
+                    np.concatenate([mp_col, q_col]),
+                    legend,
+                ),
+            )
+        )
     return out
 
 
@@ -218,13 +293,26 @@ class StepThrough(W.VBox):
     stages : list of (caption, Drawing or Mesh)
     """
 
-    def __init__(self, mesh: Mesh, scheme: str = "pentagonalize", *, duals: int = 2,
-                 scale: float | None = None, width: int = 600, height: int = 450):
+    def __init__(
+        self,
+        mesh: Mesh,
+        scheme: str = "pentagonalize",
+        *,
+        duals: int = 2,
+        scale: float | None = None,
+        width: int = 600,
+        height: int = 450,
+    ):
         self.scheme = scheme
         self.stages = stages(mesh, scheme, duals=duals, scale=scale)
-        self.step = W.IntSlider(value=0, min=0, max=len(self.stages) - 1,
-                                description="step", continuous_update=True,
-                                layout=W.Layout(width="420px"))
+        self.step = W.IntSlider(
+            value=0,
+            min=0,
+            max=len(self.stages) - 1,
+            description="step",
+            continuous_update=True,
+            layout=W.Layout(width="420px"),
+        )
         self.caption = W.HTML(self._caption(0))
         self.view = MeshView(self.stages[0][1], width=width, height=height)
         self.step.observe(self._on_step, names="value")
@@ -242,16 +330,26 @@ class StepThrough(W.VBox):
     def static_copy(self) -> W.Widget:
         """A kernel-free copy (one view per stage, slider linked in the browser)."""
         from ..subdivision import SCHEMES
-        return slider_stack([d for _, d in self.stages],
-                            [self._caption(k) for k in range(len(self.stages))],
-                            self.view, description="step",
-                            title=f"<b>{SCHEMES[self.scheme].label}</b>, step by step",
-                            value=self.step.value)
+
+        return slider_stack(
+            [d for _, d in self.stages],
+            [self._caption(k) for k in range(len(self.stages))],
+            self.view,
+            description="step",
+            title=f"<b>{SCHEMES[self.scheme].label}</b>, step by step",
+            value=self.step.value,
+        )
 
 
-def step_through(mesh: Mesh, scheme: str = "pentagonalize", *, duals: int = 2,
-                 scale: float | None = None, width: int = 600,
-                 height: int = 450) -> StepThrough:
+def step_through(
+    mesh: Mesh,
+    scheme: str = "pentagonalize",
+    *,
+    duals: int = 2,
+    scale: float | None = None,
+    width: int = 600,
+    height: int = 450,
+) -> StepThrough:
     """Step through one application of a scheme with a slider, for the classroom.
 
     For pentagonalization (Section 5.1): the input; edges cut in three; a

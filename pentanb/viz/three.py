@@ -52,18 +52,17 @@ from __future__ import annotations
 import itertools
 import math
 from collections import OrderedDict
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import ipywidgets as W
 import numpy as np
 import pythreejs as P3
 
-from ..colors import EDGE_COLOR, face_color, face_label, face_rgb, _hex_to_rgb
+from ..colors import EDGE_COLOR, _hex_to_rgb, face_color, face_label, face_rgb
 from ..mesh import Mesh, MeshError
 
-__all__ = ["Drawing", "MeshView", "Explorer", "view", "explore", "step_through",
-           "drawing"]
+__all__ = ["Drawing", "MeshView", "Explorer", "view", "explore", "step_through", "drawing"]
 
 #: Colour of the points drawn by the step-through (new vertices).
 POINT_COLOR = "#000000"
@@ -72,6 +71,7 @@ POINT_COLOR = "#000000"
 # --------------------------------------------------------------------------
 # what is drawn
 # --------------------------------------------------------------------------
+
 
 @dataclass
 class Drawing:
@@ -183,8 +183,11 @@ def buffers(d: Drawing) -> dict[str, np.ndarray]:
         seg_color = np.tile(_hex_to_rgb(EDGE_COLOR).astype(np.float32), (len(seg), 1))
     else:
         seg_color = np.repeat(np.asarray(d.segment_colors, dtype=np.float32), 2, axis=0)
-    pts = np.zeros((0, 3), np.float32) if d.points is None else \
-        np.asarray(d.points, dtype=np.float32).reshape(-1, 3)
+    pts = (
+        np.zeros((0, 3), np.float32)
+        if d.points is None
+        else np.asarray(d.points, dtype=np.float32).reshape(-1, 3)
+    )
     if d.point_colors is None:
         pt_color = np.tile(_hex_to_rgb(POINT_COLOR).astype(np.float32), (len(pts), 1))
     else:
@@ -212,28 +215,34 @@ def legend_html(legend: dict, counts=None) -> str:
         items.append(
             '<span style="white-space:nowrap;margin-right:12px">'
             f'<span style="display:inline-block;width:12px;height:12px;'
-            f'background:{face_color(n)};border:1px solid {EDGE_COLOR};'
+            f"background:{face_color(n)};border:1px solid {EDGE_COLOR};"
             'vertical-align:middle;margin-right:4px"></span>'
-            f'{legend[n]:,} {face_label(n)}</span>')
+            f"{legend[n]:,} {face_label(n)}</span>"
+        )
     text = "".join(items)
     if counts is not None:
         V, E, F = counts
-        text += (f'<span style="white-space:nowrap;color:#555">V = {V:,}, E = {E:,}, '
-                 f'F = {F:,}</span>')
+        text += (
+            f'<span style="white-space:nowrap;color:#555">V = {V:,}, E = {E:,}, F = {F:,}</span>'
+        )
     return f'<div class="pentanb-legend" style="line-height:1.6">{text}</div>'
 
 
 def counts_text(mesh: Mesh) -> str:
     """One line of counts: V, E, F, Euler characteristic and faces per size."""
-    sizes = ", ".join(f"{c:,} {face_label(n)}"
-                      for n, c in sorted(_histogram(mesh.face_sizes).items()))
-    return (f"V = {mesh.n_vertices:,} &nbsp; E = {mesh.n_edges:,} &nbsp; "
-            f"F = {mesh.n_faces:,} &nbsp; ({sizes})")
+    sizes = ", ".join(
+        f"{c:,} {face_label(n)}" for n, c in sorted(_histogram(mesh.face_sizes).items())
+    )
+    return (
+        f"V = {mesh.n_vertices:,} &nbsp; E = {mesh.n_edges:,} &nbsp; "
+        f"F = {mesh.n_faces:,} &nbsp; ({sizes})"
+    )
 
 
 # --------------------------------------------------------------------------
 # the view
 # --------------------------------------------------------------------------
+
 
 def _fit(positions: np.ndarray, fov: float, aspect: float):
     """Centre, radius and a camera position showing every point."""
@@ -322,11 +331,21 @@ class MeshView(W.VBox):
     legend : ipywidgets.HTML
     """
 
-    def __init__(self, mesh, *, width: int = 600, height: int = 450, edges: bool = True,
-                 legend: bool = True, background: str = "#ffffff", fov: float = 40.0,
-                 toggle: bool = True, point_size: float | None = None,
-                 camera: P3.PerspectiveCamera | None = None,
-                 target: tuple | None = None):
+    def __init__(
+        self,
+        mesh,
+        *,
+        width: int = 600,
+        height: int = 450,
+        edges: bool = True,
+        legend: bool = True,
+        background: str = "#ffffff",
+        fov: float = 40.0,
+        toggle: bool = True,
+        point_size: float | None = None,
+        camera: P3.PerspectiveCamera | None = None,
+        target: tuple | None = None,
+    ):
         d = _as_drawing(mesh)
         b = buffers(d)
         self._drawing = d
@@ -338,28 +357,45 @@ class MeshView(W.VBox):
 
         self.face_geometry = P3.BufferGeometry(
             attributes={"position": attr(b["position"]), "color": attr(b["color"])},
-            index=attr(b["index"]))
+            index=attr(b["index"]),
+        )
         self.face_material = P3.MeshPhongMaterial(
-            vertexColors="VertexColors", flatShading=True, side="DoubleSide",
-            shininess=1, specular="#000000", polygonOffset=True,
-            polygonOffsetFactor=1.0, polygonOffsetUnits=1.0)
+            vertexColors="VertexColors",
+            flatShading=True,
+            side="DoubleSide",
+            shininess=1,
+            specular="#000000",
+            polygonOffset=True,
+            polygonOffsetFactor=1.0,
+            polygonOffsetUnits=1.0,
+        )
         self._serial = 0
-        self.faces = P3.Mesh(self.face_geometry, self.face_material, frustumCulled=False,
-                             name="pentanb-faces-0")
+        self.faces = P3.Mesh(
+            self.face_geometry, self.face_material, frustumCulled=False, name="pentanb-faces-0"
+        )
 
         self.edge_geometry = P3.BufferGeometry(
-            attributes={"position": attr(b["edge_position"]), "color": attr(b["edge_color"])})
+            attributes={"position": attr(b["edge_position"]), "color": attr(b["edge_color"])}
+        )
         self.edges = P3.LineSegments(
-            self.edge_geometry, P3.LineBasicMaterial(vertexColors="VertexColors"),
-            frustumCulled=False, visible=bool(edges and b["edge_count"]))
+            self.edge_geometry,
+            P3.LineBasicMaterial(vertexColors="VertexColors"),
+            frustumCulled=False,
+            visible=bool(edges and b["edge_count"]),
+        )
 
         self.point_geometry = P3.BufferGeometry(
-            attributes={"position": attr(b["point_position"]),
-                        "color": attr(b["point_color"])})
-        self.point_material = P3.PointsMaterial(vertexColors="VertexColors",
-                                                sizeAttenuation=True, size=0.03)
-        self.points = P3.Points(self.point_geometry, self.point_material,
-                                frustumCulled=False, visible=bool(b["point_count"]))
+            attributes={"position": attr(b["point_position"]), "color": attr(b["point_color"])}
+        )
+        self.point_material = P3.PointsMaterial(
+            vertexColors="VertexColors", sizeAttenuation=True, size=0.03
+        )
+        self.points = P3.Points(
+            self.point_geometry,
+            self.point_material,
+            frustumCulled=False,
+            visible=bool(b["point_count"]),
+        )
 
         aspect = width / height
         centre, radius, position = _fit(d.positions, fov, aspect)
@@ -367,15 +403,20 @@ class MeshView(W.VBox):
         # are lit, faces turned away darker (lights with shadows, such as
         # PointLight and DirectionalLight, print "Error setting state" in
         # JupyterLab 4)
-        self.headlight = P3.HemisphereLight(color="#ffffff", groundColor="#202020",
-                                            intensity=0.6)
+        self.headlight = P3.HemisphereLight(color="#ffffff", groundColor="#202020", intensity=0.6)
         self.ambient = P3.AmbientLight(color="#ffffff", intensity=0.45)
         objects = [self.faces, self.edges, self.points, self.ambient]
         if camera is None:
             self.camera = P3.PerspectiveCamera(
-                position=tuple(float(c) for c in position), up=(0.0, 0.0, 1.0), fov=fov,
-                aspect=aspect, near=radius / 100, far=radius * 100,
-                quaternion=look_at_quaternion(position, centre), children=[self.headlight])
+                position=tuple(float(c) for c in position),
+                up=(0.0, 0.0, 1.0),
+                fov=fov,
+                aspect=aspect,
+                near=radius / 100,
+                far=radius * 100,
+                quaternion=look_at_quaternion(position, centre),
+                children=[self.headlight],
+            )
             objects.append(self.camera)
         else:
             # a camera shared with other views stays outside every scene (an
@@ -386,23 +427,34 @@ class MeshView(W.VBox):
             objects.append(self.headlight)
             centre = np.asarray(target if target is not None else centre, dtype=np.float64)
         self.scene = P3.Scene(children=objects, background=background)
-        self.controls = P3.OrbitControls(controlling=self.camera,
-                                         target=tuple(float(c) for c in centre))
-        self.renderer = P3.Renderer(scene=self.scene, camera=self.camera,
-                                    controls=[self.controls], width=width, height=height,
-                                    antialias=True, background=background)
+        self.controls = P3.OrbitControls(
+            controlling=self.camera, target=tuple(float(c) for c in centre)
+        )
+        self.renderer = P3.Renderer(
+            scene=self.scene,
+            camera=self.camera,
+            controls=[self.controls],
+            width=width,
+            height=height,
+            antialias=True,
+            background=background,
+        )
         self._set_point_size(radius)
 
-        self.wireframe = W.Checkbox(value=bool(edges), description="edges", indent=False,
-                                    layout=W.Layout(width="auto"))
+        self.wireframe = W.Checkbox(
+            value=bool(edges), description="edges", indent=False, layout=W.Layout(width="auto")
+        )
         self._edges_present = bool(b["edge_count"])
         self._link = W.jslink((self.wireframe, "value"), (self.edges, "visible"))
         self.legend = W.HTML(legend_html(d.legend, d.counts) if legend else "")
         self._show_legend = legend
         bottom = [self.legend] + ([self.wireframe] if toggle else [])
-        self.bottom = W.HBox(bottom, layout=W.Layout(align_items="center",
-                                                     justify_content="space-between",
-                                                     width=f"{width}px"))
+        self.bottom = W.HBox(
+            bottom,
+            layout=W.Layout(
+                align_items="center", justify_content="space-between", width=f"{width}px"
+            ),
+        )
         super().__init__([self.renderer, self.bottom])
         self.add_class("pentanb-view")
 
@@ -471,8 +523,9 @@ class MeshView(W.VBox):
 
     def fit_camera(self) -> None:
         """Point the camera at the whole drawing again."""
-        centre, radius, position = _fit(self._drawing.positions, self.camera.fov,
-                                        self.camera.aspect)
+        centre, radius, position = _fit(
+            self._drawing.positions, self.camera.fov, self.camera.aspect
+        )
         with self.renderer.hold():
             self.camera.near = radius / 100
             self.camera.far = radius * 100
@@ -486,18 +539,31 @@ class MeshView(W.VBox):
         self.point_material.size = float(self._point_size or radius * 0.09)
 
     # -- embedding ----------------------------------------------------------
-    def copy(self, mesh=None, **kwargs) -> "MeshView":
+    def copy(self, mesh=None, **kwargs) -> MeshView:
         """A new, independent view of ``mesh`` (default: the one shown)."""
         r = self.renderer
-        opts = dict(width=r.width, height=r.height, edges=self.wireframe.value,
-                    legend=self._show_legend, background=r.background,
-                    fov=self.camera.fov, point_size=self._point_size)
+        opts = dict(
+            width=r.width,
+            height=r.height,
+            edges=self.wireframe.value,
+            legend=self._show_legend,
+            background=r.background,
+            fov=self.camera.fov,
+            point_size=self._point_size,
+        )
         opts.update(kwargs)
         return MeshView(self._drawing if mesh is None else mesh, **opts)
 
 
-def view(mesh: Mesh, *, width: int = 600, height: int = 450, edges: bool = True,
-         legend: bool = True, background: str = "#ffffff") -> MeshView:
+def view(
+    mesh: Mesh,
+    *,
+    width: int = 600,
+    height: int = 450,
+    edges: bool = True,
+    legend: bool = True,
+    background: str = "#ffffff",
+) -> MeshView:
     """An interactive 3D view of a mesh (pythreejs, orbit controls).
 
     Faces are flat shaded and coloured by their number of sides, with the
@@ -527,8 +593,9 @@ def view(mesh: Mesh, *, width: int = 600, height: int = 450, edges: bool = True,
     >>> import pentanb
     >>> pentanb.view(pentanb.pentagonalize(pentanb.shapes.cube()))  # doctest: +SKIP
     """
-    return MeshView(mesh, width=width, height=height, edges=edges, legend=legend,
-                    background=background)
+    return MeshView(
+        mesh, width=width, height=height, edges=edges, legend=legend, background=background
+    )
 
 
 # --------------------------------------------------------------------------
@@ -559,12 +626,23 @@ class Explorer(W.HBox):
     view : MeshView
     """
 
-    def __init__(self, mesh="dodecahedron", scheme: str = "pentagonalize", *,
-                 iterations: int = 1, duals: int = 2, scale: float | None = None,
-                 max_iterations: int = 5, max_faces: int = 250_000,
-                 max_bytes: int | None = None, width: int = 560, height: int = 460):
+    def __init__(
+        self,
+        mesh="dodecahedron",
+        scheme: str = "pentagonalize",
+        *,
+        iterations: int = 1,
+        duals: int = 2,
+        scale: float | None = None,
+        max_iterations: int = 5,
+        max_faces: int = 250_000,
+        max_bytes: int | None = None,
+        width: int = 560,
+        height: int = 460,
+    ):
         from .. import shapes
         from ..subdivision import SCHEMES
+
         self._schemes = SCHEMES
         self._meshes: dict = {}
         names = list(shapes.SHAPES)
@@ -575,8 +653,7 @@ class Explorer(W.HBox):
             shapes.get(mesh)  # unknown names raise here, listing the known ones
             options, first = names, mesh
         else:
-            raise TypeError("explore() takes a pentanb.Mesh or a shape name "
-                            f"({', '.join(names)})")
+            raise TypeError(f"explore() takes a pentanb.Mesh or a shape name ({', '.join(names)})")
         if scheme not in SCHEMES:
             raise ValueError(f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}")
         self.max_faces = int(max_faces)
@@ -588,33 +665,73 @@ class Explorer(W.HBox):
 
         style = {"description_width": "80px"}
         wide = W.Layout(width="300px")
-        self.shape = W.Dropdown(options=options, value=first, description="shape",
-                                style=style, layout=wide)
-        self.scheme = W.Dropdown(options=[(s.label, s.name) for s in SCHEMES.values()],
-                                 value=scheme, description="scheme", style=style,
-                                 layout=wide)
-        self.iterations = W.IntSlider(value=iterations, min=0, max=max_iterations,
-                                      description="iterations", continuous_update=False,
-                                      style=style, layout=wide)
-        self.duals = W.IntSlider(value=duals, min=0, max=4, description="dual passes",
-                                 continuous_update=False, style=style, layout=wide)
+        self.shape = W.Dropdown(
+            options=options, value=first, description="shape", style=style, layout=wide
+        )
+        self.scheme = W.Dropdown(
+            options=[(s.label, s.name) for s in SCHEMES.values()],
+            value=scheme,
+            description="scheme",
+            style=style,
+            layout=wide,
+        )
+        self.iterations = W.IntSlider(
+            value=iterations,
+            min=0,
+            max=max_iterations,
+            description="iterations",
+            continuous_update=False,
+            style=style,
+            layout=wide,
+        )
+        self.duals = W.IntSlider(
+            value=duals,
+            min=0,
+            max=4,
+            description="dual passes",
+            continuous_update=False,
+            style=style,
+            layout=wide,
+        )
         default_scale = SCHEMES[scheme].options.get("scale", 0.75)
-        self.scale = W.FloatSlider(value=default_scale if scale is None else scale,
-                                   min=0.05, max=0.95, step=0.05, readout_format=".2f",
-                                   description="scale", continuous_update=False,
-                                   style=style, layout=wide)
-        self.progress = W.IntProgress(value=0, min=0, max=1, description="",
-                                      layout=W.Layout(width="300px", visibility="hidden"))
+        self.scale = W.FloatSlider(
+            value=default_scale if scale is None else scale,
+            min=0.05,
+            max=0.95,
+            step=0.05,
+            readout_format=".2f",
+            description="scale",
+            continuous_update=False,
+            style=style,
+            layout=wide,
+        )
+        self.progress = W.IntProgress(
+            value=0,
+            min=0,
+            max=1,
+            description="",
+            layout=W.Layout(width="300px", visibility="hidden"),
+        )
         self.status = W.HTML("", layout=W.Layout(width="300px"))
 
         first_mesh = self._base(first)
         self.view = MeshView(first_mesh, width=width, height=height, toggle=False)
         self.wireframe = self.view.wireframe
         self.counts = W.HTML("")
-        panel = W.VBox([W.HTML("<b>Semiregular pentagonal subdivision</b>"),
-                        self.shape, self.scheme, self.iterations, self.duals, self.scale,
-                        self.wireframe, self.progress, self.status],
-                       layout=W.Layout(width="320px"))
+        panel = W.VBox(
+            [
+                W.HTML("<b>Semiregular pentagonal subdivision</b>"),
+                self.shape,
+                self.scheme,
+                self.iterations,
+                self.duals,
+                self.scale,
+                self.wireframe,
+                self.progress,
+                self.status,
+            ],
+            layout=W.Layout(width="320px"),
+        )
         right = W.VBox([self.view, self.counts])
         super().__init__([panel, right])
         self.add_class("pentanb-explorer")
@@ -629,6 +746,7 @@ class Explorer(W.HBox):
     def _base(self, name: str) -> Mesh:
         if name not in self._meshes:
             from .. import shapes
+
             self._meshes[name] = shapes.get(name)
         return self._meshes[name]
 
@@ -654,6 +772,7 @@ class Explorer(W.HBox):
     def mesh_at(self, iterations: int | None = None, progress: Callable | None = None) -> Mesh:
         """The mesh for the current settings (cached); raises MeshError when too large."""
         from ..subdivision import predict_counts, subdivide
+
         it = self.iterations.value if iterations is None else int(iterations)
         key = self.key(it)
         if key in self._cache:
@@ -661,15 +780,15 @@ class Explorer(W.HBox):
             return self._cache[key]
         base = self._base(self.shape.value)
         scheme, duals, opts = self.scheme.value, self.duals.value, self._options()
-        counts = predict_counts((base.n_vertices, base.n_edges, base.n_faces), scheme,
-                                it, duals)
+        counts = predict_counts((base.n_vertices, base.n_edges, base.n_faces), scheme, it, duals)
         if counts and counts[-1][2] > self.max_faces:
             V, E, F = counts[-1]
             raise MeshError(
                 f"{scheme} x{it} with {duals} duals would make a mesh of {F:,} faces "
                 f"({V:,} vertices, {E:,} edges); this view draws at most "
                 f"{self.max_faces:,} faces. Lower the iterations, or call "
-                "pentanb.subdivide() yourself.")
+                "pentanb.subdivide() yourself."
+            )
         # start from the deepest cached level below
         start, mesh = 0, base
         for j in range(it - 1, 0, -1):
@@ -679,11 +798,14 @@ class Explorer(W.HBox):
         total = (it - start) * (1 + duals)
         done = 0
         for j in range(start + 1, it + 1):
+
             def step(d, t, message, _offset=done):
                 if progress:
                     progress(_offset + d, total, message)
-            mesh = subdivide(mesh, scheme, 1, duals, progress=step,
-                             max_bytes=self.max_bytes, **opts)
+
+            mesh = subdivide(
+                mesh, scheme, 1, duals, progress=step, max_bytes=self.max_bytes, **opts
+            )
             done += 1 + duals
             self._store(self.key(j), mesh)
         if it == 0:
@@ -699,6 +821,7 @@ class Explorer(W.HBox):
 
     def refresh(self, fit: bool = False) -> None:
         """Compute (or fetch) the mesh of the current settings and show it."""
+
         def report(done, total, message):
             self.progress.max = max(total, 1)
             self.progress.value = done
@@ -712,8 +835,10 @@ class Explorer(W.HBox):
         try:
             mesh = self.mesh_at(progress=report)
         except (MeshError, ValueError) as err:
-            self.status.value = (f'<span style="color:#b00020">{_escape(str(err))}</span>'
-                                 '<br>(the picture still shows the previous mesh)')
+            self.status.value = (
+                f'<span style="color:#b00020">{_escape(str(err))}</span>'
+                "<br>(the picture still shows the previous mesh)"
+            )
             self.progress.layout.visibility = "hidden"
             return
         self.progress.layout.visibility = "hidden"
@@ -744,20 +869,28 @@ class Explorer(W.HBox):
                 break
         label = self._schemes[self.scheme.value].label
         opts = self._options()
-        title = (f"<b>{_escape(str(self.shape.value))}</b>: {label}"
-                 + (f" (scale {opts['scale']:.2f})" if opts else "")
-                 + f", {self.duals.value} dual passes per iteration")
-        return slider_stack(meshes, [counts_text(m) for m in meshes], self.view,
-                            description="iterations", title=title,
-                            value=min(self.iterations.value, len(meshes) - 1))
+        title = (
+            f"<b>{_escape(str(self.shape.value))}</b>: {label}"
+            + (f" (scale {opts['scale']:.2f})" if opts else "")
+            + f", {self.duals.value} dual passes per iteration"
+        )
+        return slider_stack(
+            meshes,
+            [counts_text(m) for m in meshes],
+            self.view,
+            description="iterations",
+            title=title,
+            value=min(self.iterations.value, len(meshes) - 1),
+        )
 
 
 def _escape(text: str) -> str:
     return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
-def slider_stack(items, captions, like: MeshView, *, description: str = "step",
-                 title: str = "", value: int = 0) -> W.VBox:
+def slider_stack(
+    items, captions, like: MeshView, *, description: str = "step", title: str = "", value: int = 0
+) -> W.VBox:
     """A slider choosing one of several prebuilt views, linked in the browser.
 
     Every item (a Mesh or a Drawing) gets its own :class:`MeshView` with the
@@ -767,18 +900,29 @@ def slider_stack(items, captions, like: MeshView, *, description: str = "step",
     cam = like.camera
     # one camera for all the views, outside their scenes: orbiting one view
     # moves the camera of all
-    camera = P3.PerspectiveCamera(position=tuple(cam.position), up=tuple(cam.up),
-                                  quaternion=tuple(cam.quaternion), fov=cam.fov,
-                                  aspect=cam.aspect, near=cam.near, far=cam.far)
-    views = [like.copy(item, camera=camera, target=tuple(like.controls.target))
-             for item in items]
+    camera = P3.PerspectiveCamera(
+        position=tuple(cam.position),
+        up=tuple(cam.up),
+        quaternion=tuple(cam.quaternion),
+        fov=cam.fov,
+        aspect=cam.aspect,
+        near=cam.near,
+        far=cam.far,
+    )
+    views = [like.copy(item, camera=camera, target=tuple(like.controls.target)) for item in items]
     for v in views:
         v.point_material.size = like.point_material.size
         v.wireframe.value = like.wireframe.value
     stack = W.Stack(views, selected_index=value)
     texts = W.Stack([W.HTML(c) for c in captions], selected_index=value)
-    slider = W.IntSlider(value=value, min=0, max=len(views) - 1, description=description,
-                         continuous_update=True, layout=W.Layout(width="420px"))
+    slider = W.IntSlider(
+        value=value,
+        min=0,
+        max=len(views) - 1,
+        description=description,
+        continuous_update=True,
+        layout=W.Layout(width="420px"),
+    )
     W.jslink((slider, "value"), (stack, "selected_index"))
     W.jslink((slider, "value"), (texts, "selected_index"))
     for v in views[1:]:
@@ -788,10 +932,19 @@ def slider_stack(items, captions, like: MeshView, *, description: str = "step",
     return box
 
 
-def explore(mesh="dodecahedron", scheme: str = "pentagonalize", *, iterations: int = 1,
-            duals: int = 2, scale: float | None = None, max_iterations: int = 5,
-            max_faces: int = 250_000, max_bytes: int | None = None,
-            width: int = 560, height: int = 460) -> Explorer:
+def explore(
+    mesh="dodecahedron",
+    scheme: str = "pentagonalize",
+    *,
+    iterations: int = 1,
+    duals: int = 2,
+    scale: float | None = None,
+    max_iterations: int = 5,
+    max_faces: int = 250_000,
+    max_bytes: int | None = None,
+    width: int = 560,
+    height: int = 460,
+) -> Explorer:
     """A panel of controls beside one 3D view, with a live line of counts.
 
     Moving a control rebuilds the mesh with :func:`pentanb.subdivide` (or
@@ -824,12 +977,22 @@ def explore(mesh="dodecahedron", scheme: str = "pentagonalize", *, iterations: i
     -------
     Explorer
     """
-    return Explorer(mesh, scheme, iterations=iterations, duals=duals, scale=scale,
-                    max_iterations=max_iterations, max_faces=max_faces,
-                    max_bytes=max_bytes, width=width, height=height)
+    return Explorer(
+        mesh,
+        scheme,
+        iterations=iterations,
+        duals=duals,
+        scale=scale,
+        max_iterations=max_iterations,
+        max_faces=max_faces,
+        max_bytes=max_bytes,
+        width=width,
+        height=height,
+    )
 
 
 def step_through(mesh, scheme: str = "pentagonalize", **kwargs):
     """A classroom step-through of a scheme; see :func:`pentanb.viz.steps.step_through`."""
     from .steps import step_through as _step_through
+
     return _step_through(mesh, scheme, **kwargs)
