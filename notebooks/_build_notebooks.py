@@ -7,7 +7,7 @@ script.
 
 The notebooks are thin: they call :mod:`pentanb` (``pentanb.figures`` for the
 paper's figures and their claims, ``pentanb.viz`` for drawing,
-``pentanb.topology`` and ``pentanb.convergence`` for the numbers) and explain.
+``pentanb.topology`` and ``pentanb.analysis.convergence`` for the numbers) and explain.
 The only code of their own is widget wiring and a cache of built meshes.
 """
 
@@ -182,7 +182,8 @@ NB01 = [
         n = sizes.pop()
         measured = 2 * mesh.n_edges / mesh.n_vertices
         predicted = topology.average_valence(n, mesh.genus, mesh.n_vertices)
-        print(f"{name:>18}  {n}  {mesh.genus}  {mesh.n_vertices:3d}  {measured:10.4f}  {predicted:12.4f}")
+        row = f"{n}  {mesh.genus}  {mesh.n_vertices:3d}  {measured:10.4f}  {predicted:12.4f}"
+        print(f"{name:>18}  {row}")
         assert abs(measured - predicted) < 1e-9
     """),
     md(r"""
@@ -257,7 +258,10 @@ NB02 = [
     of duals. Then you can slide through the dual passes, and step through the
     scheme one stage at a time.
     """),
-    setup("from pentanb.convergence import radius_spread", "from pentanb.viz.mpl import plot_mesh"),
+    setup(
+        "from pentanb.analysis.convergence import radius_spread",
+        "from pentanb.viz.mpl import plot_mesh",
+    ),
     CACHE,
     md("""
     ## Figure 6: the scheme on one face
@@ -372,7 +376,7 @@ NB03 = [
     (A) the hard-edged cube, (B) one pentagonalization, (C) two, (D) pentagon
     preservation applied to (B); two duals after each.
 
-    "No lateral artifact" is measured (`pentanb.convergence.edge_waviness`): rays
+    "No lateral artifact" is measured (`pentanb.analysis.convergence.edge_waviness`): rays
     shot from the middle half of one of the cube's straight edges, perpendicular
     to it, hit the smoothed surface; a wave pattern would make their lengths
     oscillate. The claims compare that range with honeycomb (the dual of
@@ -389,7 +393,7 @@ NB03 = [
     0 means a straight edge stayed straight):
     """),
     code("""
-    from pentanb.convergence import edge_waviness
+    from pentanb.analysis.convergence import edge_waviness
 
     print(f"{'scheme':>36}  {'1 iteration':>12}  {'2 iterations':>12}")
     for s in pentanb.SCHEMES.values():
@@ -1008,7 +1012,7 @@ NB08 = [
     > continuity. However, there is still a need for theoretical proofs for
     > convergence."
 
-    This notebook measures it (`pentanb.convergence`). Two numbers describe a mesh:
+    This notebook measures it (`pentanb.analysis.convergence`). Two numbers describe a mesh:
 
     * the **crease angle**: the angle between the normals of two faces sharing an
       edge. On a $G^1$ (tangent-continuous) limit surface the largest crease angle
@@ -1021,7 +1025,7 @@ NB08 = [
     (remesh + two duals each time).
     """),
     setup(
-        "from pentanb import convergence",
+        "from pentanb.analysis import convergence",
         "",
         "from matplotlib.figure import Figure",
         "from matplotlib.ticker import NullFormatter, ScalarFormatter",

@@ -14,20 +14,24 @@ load when a drawing function is first called.
 from __future__ import annotations
 
 from . import shapes, topology
-from .classic import (
+from .io import read, write
+from .mesh import Mesh, MeshError
+from .schemes import (
+    SCHEMES,
+    Scheme,
     corner_cutting,
+    dual,
     honeycomb,
     loop_remesh,
+    pentagonalize,
     preserve_hexagons,
+    preserve_pentagons,
+    smooth,
     sqrt3_remesh,
     triangulate,
     vertex_insertion,
 )
-from .dual import dual, smooth
-from .io import read, write
-from .mesh import Mesh, MeshError
-from .pentagonal import pentagonalize, preserve_pentagons
-from .subdivision import SCHEMES, Scheme, max_iterations, predict_counts, subdivide
+from .subdivision import max_iterations, predict_counts, subdivide
 
 __version__ = "0.1.0"
 

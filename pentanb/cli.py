@@ -17,7 +17,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from . import shapes
-from .subdivision import SCHEMES
+from .schemes import SCHEMES
 
 __all__ = ["main", "demo_table"]
 

@@ -31,14 +31,14 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 
 from . import shapes, topology
-from .classic import honeycomb, loop_remesh, preserve_hexagons, triangulate
-from .colors import EDGE_COLOR, face_color, face_label
-from .dual import dual
 from .mesh import Mesh
-from .pentagonal import pentagonalize, preserve_pentagons
+from .schemes import SCHEMES, dual
+from .schemes.classic import honeycomb, loop_remesh, preserve_hexagons, triangulate
+from .schemes.pentagonal import pentagonalize, preserve_pentagons
 from .shapes import hard_edged_cube
-from .subdivision import SCHEMES, subdivide
+from .subdivision import subdivide
 from .viz import mpl as vz
+from .viz.colors import EDGE_COLOR, face_color, face_label
 
 __all__ = [
     "Claim",
@@ -386,7 +386,7 @@ def claims1() -> list[Claim]:
     # "the new subdivision does not create any lateral artifact": along a
     # straight edge the surface keeps its distance from the edge's axis;
     # compared with honeycomb (dual of sqrt(3)), a (6, 3) scheme of [5]
-    from .convergence import edge_waviness
+    from .analysis.convergence import edge_waviness
 
     for panel, mesh, k in (("(B)", b, 1), ("(C)", c, 2)):
         w = edge_waviness(mesh)
@@ -1294,12 +1294,12 @@ def convergence_figure(pairs: int = 6, levels: int = 4) -> Figure:
 
     (A) spread of vertex radii and (B) largest angle between neighbouring
     face normals after each pair of duals following one remeshing
-    (:func:`pentanb.convergence.dual_convergence`); (C) the largest angle
+    (:func:`pentanb.analysis.convergence.dual_convergence`); (C) the largest angle
     after every subdivision level (remesh + two duals,
-    :func:`pentanb.convergence.subdivision_convergence`): it falls towards
+    :func:`pentanb.analysis.convergence.subdivision_convergence`): it falls towards
     0, as a G1 limit surface requires.
     """
-    from . import convergence as cv
+    from .analysis import convergence as cv
 
     data = cv.study(pairs=pairs, levels=levels)
     styles = {"pentagonalize": "-", "preserve_pentagons": "--"}
@@ -1359,7 +1359,7 @@ def convergence_figure(pairs: int = 6, levels: int = 4) -> Figure:
 
 
 def claims_convergence() -> list[Claim]:
-    from . import convergence as cv
+    from .analysis import convergence as cv
 
     data = cv.study()
     out = []

@@ -12,8 +12,8 @@ from collections.abc import Callable
 
 import numpy as np
 
-from .dual import dual
 from .mesh import Mesh, MeshError
+from .schemes.smoothing import dual
 
 __all__ = [
     "tetrahedron",

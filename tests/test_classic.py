@@ -1,4 +1,4 @@
-"""Tests of :mod:`pentanb.classic`: the remeshings the paper compares with (Sections 3, 6).
+"""Tests of :mod:`pentanb.schemes.classic`: the remeshings the paper compares with (Sections 3, 6).
 
 Expected counts, face sizes, valences and placements are derived from each
 scheme's construction in the comments; Conway counts are the known

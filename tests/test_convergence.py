@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import pentanb
-from pentanb import convergence as cv
+from pentanb.analysis import convergence as cv
 from pentanb import shapes
 
 

@@ -214,7 +214,7 @@ def test_fig02_second_triangulation_is_null():
 
 
 def test_fig07_tetrahedron_becomes_dodecahedron():
-    d = pentanb.pentagonalize(pentanb.shapes.tetrahedron())
+    d = pentanb.schemes.pentagonalize(pentanb.shapes.tetrahedron())
     assert d.face_size_histogram() == {5: 12} and d.valence_histogram() == {3: 20}
 
 
@@ -348,7 +348,7 @@ def test_big_mesh_draws_every_face():
 
 def test_import_pentanb_does_not_import_matplotlib():
     code = (
-        "import sys, pentanb, pentanb.convergence, pentanb.cli; "
+        "import sys, pentanb, pentanb.analysis.convergence, pentanb.cli; "
         "pentanb.cli.demo_table(['cube']); "
         "assert 'matplotlib' not in sys.modules, 'matplotlib imported'"
     )
@@ -359,7 +359,7 @@ def test_plot_meshes_one_panel_per_mesh_and_one_legend():
     meshes = [
         pentanb.shapes.tetrahedron(),
         pentanb.shapes.cube(),
-        pentanb.pentagonalize(pentanb.shapes.cube()),
+        pentanb.schemes.pentagonalize(pentanb.shapes.cube()),
     ]
     fig = vz.plot_meshes(meshes, ["a", "b", "c"], ncols=2)
     assert [ax.get_title() for ax in fig.axes] == ["a", "b", "c"]

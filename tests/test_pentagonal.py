@@ -1,4 +1,4 @@
-"""Tests of :mod:`pentanb.pentagonal`: the paper's two schemes (Section 5).
+"""Tests of :mod:`pentanb.schemes.pentagonal`: the paper's two schemes (Section 5).
 
 Counts come from the schemes' steps: pentagonalization cuts every edge in
 three and puts a centre in every face (V + 2E + F vertices); every n-gon

@@ -133,7 +133,7 @@ def test_dual_dual_is_the_identity_on_topology(m):
 @given(closed_meshes())
 def test_pentagonalize_valences_and_faces(m):
     V, E = m.n_vertices, m.n_edges
-    p = pentanb.pentagonalize(m)
+    p = pentanb.schemes.pentagonalize(m)
     assert p.face_size_histogram() == {5: 2 * E}
     val = valences(p)
     assert val[:V] == valences(m)

@@ -89,7 +89,10 @@ def test_registry_lists_every_operator_exported_at_top_level():
     drawing = {"view", "explore", "step_through", "export_html", "figures", "topology"}
     for name in set(pentanb.__all__) - drawing:  # (those import matplotlib & co.)
         obj = getattr(pentanb, name)
-        if inspect.isfunction(obj) and obj.__module__ in ("pentanb.classic", "pentanb.pentagonal"):
+        if inspect.isfunction(obj) and obj.__module__ in (
+            "pentanb.schemes.classic",
+            "pentanb.schemes.pentagonal",
+        ):
             assert name in SCHEMES
 
 
@@ -151,7 +154,7 @@ def test_subdivide_equals_manual_composition(name, duals):
 def test_subdivide_defaults_are_one_pentagonalization_and_two_duals():
     m = shapes.cube()
     got = subdivide(m)
-    want = dual(dual(pentanb.pentagonalize(m)))
+    want = dual(dual(pentanb.schemes.pentagonalize(m)))
     assert np.array_equal(got.vertices, want.vertices)
     assert np.array_equal(got.corners, want.corners)
 
@@ -234,7 +237,7 @@ def test_predict_counts_by_hand():
 
 def test_predict_counts_needs_a_registered_scheme():
     with pytest.raises(ValueError, match="registered scheme"):
-        predict_counts((8, 12, 6), pentanb.pentagonalize)
+        predict_counts((8, 12, 6), pentanb.schemes.pentagonalize)
 
 
 def test_memory_guard_refuses_before_building(monkeypatch):

@@ -17,8 +17,8 @@ pytest.importorskip("pythreejs")
 
 import pentanb
 from pentanb import shapes
-from pentanb.colors import EDGE_COLOR, _hex_to_rgb, face_rgb
 from pentanb.viz import html, steps, three
+from pentanb.viz.colors import EDGE_COLOR, _hex_to_rgb, face_rgb
 
 
 def arr(attribute):
@@ -37,7 +37,7 @@ MESHES = {
     "dodecahedron": shapes.dodecahedron,
     "torus": shapes.torus,
     "mixed": mixed_mesh,
-    "pentagonalized cube": lambda: pentanb.pentagonalize(shapes.cube()),
+    "pentagonalized cube": lambda: pentanb.schemes.pentagonalize(shapes.cube()),
 }
 
 
@@ -81,8 +81,8 @@ def test_view_legend_lists_face_sizes_with_their_colours():
     sizes, counts = np.unique(mesh.face_sizes, return_counts=True)
     assert len(sizes) == 2  # triangles and pentagons
     for n, count in zip(sizes, counts):
-        assert pentanb.colors.face_color(n) in v.legend.value
-        assert f"{count:,} {pentanb.colors.face_label(n)}" in v.legend.value
+        assert pentanb.viz.colors.face_color(n) in v.legend.value
+        assert f"{count:,} {pentanb.viz.colors.face_label(n)}" in v.legend.value
     assert f"V = {mesh.n_vertices}" in v.legend.value
 
 

@@ -34,8 +34,8 @@ from matplotlib.patches import Patch
 from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-from ..colors import EDGE_COLOR, face_color, face_label, face_rgb
 from ..mesh import Mesh
+from .colors import EDGE_COLOR, face_color, face_label, face_rgb
 
 __all__ = [
     "draw_mesh",

@@ -15,8 +15,8 @@ from __future__ import annotations
 import ipywidgets as W
 import numpy as np
 
-from ..colors import _hex_to_rgb, face_rgb
 from ..mesh import Mesh
+from .colors import _hex_to_rgb, face_rgb
 from .three import Drawing, MeshView, _histogram, slider_stack
 
 __all__ = ["stages", "StepThrough", "step_through"]
@@ -85,8 +85,7 @@ def stages(
     (Section 5.2) are shown step by step; any other scheme of
     :data:`pentanb.SCHEMES` as input, result and duals.
     """
-    from ..dual import dual
-    from ..subdivision import SCHEMES
+    from ..schemes import SCHEMES, dual
 
     if scheme not in SCHEMES:
         raise ValueError(f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}")
@@ -329,7 +328,7 @@ class StepThrough(W.VBox):
 
     def static_copy(self) -> W.Widget:
         """A kernel-free copy (one view per stage, slider linked in the browser)."""
-        from ..subdivision import SCHEMES
+        from ..schemes import SCHEMES
 
         return slider_stack(
             [d for _, d in self.stages],

@@ -59,8 +59,8 @@ import ipywidgets as W
 import numpy as np
 import pythreejs as P3
 
-from ..colors import EDGE_COLOR, _hex_to_rgb, face_color, face_label, face_rgb
 from ..mesh import Mesh, MeshError
+from .colors import EDGE_COLOR, _hex_to_rgb, face_color, face_label, face_rgb
 
 __all__ = ["Drawing", "MeshView", "Explorer", "view", "explore", "step_through", "drawing"]
 
@@ -641,7 +641,7 @@ class Explorer(W.HBox):
         height: int = 460,
     ):
         from .. import shapes
-        from ..subdivision import SCHEMES
+        from ..schemes import SCHEMES
 
         self._schemes = SCHEMES
         self._meshes: dict = {}

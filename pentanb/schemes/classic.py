@@ -23,8 +23,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..mesh import Mesh
 from ._build import check_mesh, check_scale, concat_faces, edge_points, fixed_size, output
-from .mesh import Mesh
 
 __all__ = [
     "triangulate",

@@ -25,10 +25,10 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from . import shapes
-from .dual import dual
-from .mesh import Mesh
-from .subdivision import get_scheme, subdivide
+from .. import shapes
+from ..mesh import Mesh
+from ..schemes.smoothing import dual
+from ..subdivision import get_scheme, subdivide
 
 __all__ = [
     "Convergence",

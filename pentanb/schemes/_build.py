@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .mesh import Mesh
+from ..mesh import Mesh
 
 
 def edge_points(mesh: Mesh, k: int) -> np.ndarray:

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..mesh import Mesh
 from ._build import check_mesh, output
-from .mesh import Mesh
 
 __all__ = ["dual", "smooth"]
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..mesh import Mesh
 from ._build import (
     check_mesh,
     check_scale,
@@ -18,7 +19,6 @@ from ._build import (
     halfedge_edge_point,
     output,
 )
-from .mesh import Mesh
 
 __all__ = ["pentagonalize", "preserve_pentagons"]
 

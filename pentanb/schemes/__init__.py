@@ -1,0 +1,44 @@
+"""The remeshing operators, the dual that smooths them, and their registry.
+
+* :mod:`~pentanb.schemes.pentagonal`: the paper's two schemes (Section 5),
+  pentagonalization and pentagon preservation;
+* :mod:`~pentanb.schemes.classic`: the schemes the paper compares them with
+  (Sections 3 and 6);
+* :mod:`~pentanb.schemes.smoothing`: the dual and ``smooth`` (the paper's
+  smoothing);
+* :mod:`~pentanb.schemes.registry`: :data:`SCHEMES`, one table naming them all.
+
+Every operator is a pure function ``Mesh -> Mesh``.
+"""
+
+from __future__ import annotations
+
+from .classic import (
+    corner_cutting,
+    honeycomb,
+    loop_remesh,
+    preserve_hexagons,
+    sqrt3_remesh,
+    triangulate,
+    vertex_insertion,
+)
+from .pentagonal import pentagonalize, preserve_pentagons
+from .registry import SCHEMES, Scheme, get_scheme
+from .smoothing import dual, smooth
+
+__all__ = [
+    "pentagonalize",
+    "preserve_pentagons",
+    "triangulate",
+    "loop_remesh",
+    "sqrt3_remesh",
+    "vertex_insertion",
+    "corner_cutting",
+    "preserve_hexagons",
+    "honeycomb",
+    "dual",
+    "smooth",
+    "SCHEMES",
+    "Scheme",
+    "get_scheme",
+]

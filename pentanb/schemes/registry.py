@@ -1,0 +1,197 @@
+"""The registry of remeshing schemes: one table that names every operator once.
+
+:data:`SCHEMES` names every remeshing operator of the package, so a slider,
+the command line and the tests can list them all.  Each entry knows its
+paper reference, its Conway name and how its output's counts follow from its
+input's (which lets :func:`pentanb.subdivide` refuse, before building
+anything, a request that would not fit in memory).  :func:`get_scheme` is
+the one place where a scheme name is checked.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+
+from ..mesh import Mesh
+from . import classic, pentagonal
+
+__all__ = ["Scheme", "SCHEMES", "get_scheme", "Counts"]
+
+Counts = tuple[int, int, int]
+
+
+@dataclass(frozen=True)
+class Scheme:
+    """A named remeshing operator.
+
+    Attributes
+    ----------
+    name : str
+        Registry key (also the function's name).
+    func : callable
+        ``func(mesh, **options) -> Mesh``.
+    label : str
+        Human-readable name for menus and legends.
+    paper : str
+        Where the paper describes or shows it.
+    conway : str or None
+        The Conway operator with the same topology, if any.
+    counts : callable
+        ``counts(V, E, F) -> (V', E', F')`` (an upper bound for ``triangulate``).
+    options : dict
+        Keyword options and their defaults (e.g. ``{"scale": 0.75}``).
+    family : str
+        ``"pentagonal"`` for the paper's schemes, ``"comparison"`` otherwise.
+    exact_counts : bool
+        False when ``counts`` is only an upper bound (``triangulate``, which
+        leaves triangles alone).
+    """
+
+    name: str
+    func: Callable[..., Mesh]
+    label: str
+    paper: str
+    conway: str | None
+    counts: Callable[[int, int, int], Counts]
+    options: Mapping[str, float] = field(default_factory=dict)
+    family: str = "comparison"
+    exact_counts: bool = True
+
+    def __call__(self, mesh: Mesh, **options) -> Mesh:
+        return self.func(mesh, **options)
+
+    @property
+    def formula(self) -> str:
+        """The count formula as text, e.g. ``"(V+2E+F, 5E, 2E)"``.
+
+        ``counts`` is evaluated on symbols (it is linear in V, E and F).
+        """
+        out = self.counts(_Linear((1, 0, 0)), _Linear((0, 1, 0)), _Linear((0, 0, 1)))
+        text = "(" + ", ".join(str(x) for x in out) + ")"
+        return text if self.exact_counts else text + " at most (when no face is a triangle)"
+
+
+class _Linear:
+    """A linear form in V, E, F, to print a scheme's count formula."""
+
+    def __init__(self, c):
+        self.c = tuple(c)
+
+    def __add__(self, o):
+        o = o if isinstance(o, _Linear) else _Linear((0, 0, 0))
+        return _Linear(a + b for a, b in zip(self.c, o.c))
+
+    __radd__ = __add__
+
+    def __mul__(self, k):
+        return _Linear(k * a for a in self.c)
+
+    __rmul__ = __mul__
+
+    def __str__(self):
+        parts = [name if k == 1 else f"{k}{name}" for k, name in zip(self.c, "VEF") if k]
+        return "+".join(parts) or "0"
+
+
+_LIST = [
+    Scheme(
+        "pentagonalize",
+        pentagonal.pentagonalize,
+        "Pentagonalization",
+        "Section 5.1, Figures 1, 6-9, 12",
+        "gyro",
+        lambda V, E, F: (V + 2 * E + F, 5 * E, 2 * E),
+        family="pentagonal",
+    ),
+    Scheme(
+        "preserve_pentagons",
+        pentagonal.preserve_pentagons,
+        "Pentagon preservation",
+        "Section 5.2, Figures 1D, 10, 11",
+        "quinto (scale 0.5)",
+        lambda V, E, F: (V + 3 * E, 6 * E, F + 2 * E),
+        {"scale": 0.75},
+        family="pentagonal",
+    ),
+    Scheme(
+        "triangulate",
+        classic.triangulate,
+        "Simplest triangulation",
+        "Figure 2",
+        None,
+        lambda V, E, F: (V + F, 3 * E, 2 * E),
+        exact_counts=False,
+    ),
+    Scheme(
+        "loop_remesh",
+        classic.loop_remesh,
+        "Loop remeshing",
+        "Section 3, Figure 3",
+        "subdivide",
+        lambda V, E, F: (V + E, 4 * E, F + 2 * E),
+    ),
+    Scheme(
+        "sqrt3_remesh",
+        classic.sqrt3_remesh,
+        "sqrt(3) remeshing",
+        "Section 3",
+        None,
+        lambda V, E, F: (V + F, 3 * E, 2 * E),
+    ),
+    Scheme(
+        "vertex_insertion",
+        classic.vertex_insertion,
+        "Vertex insertion (Catmull-Clark)",
+        "Section 3",
+        "ortho",
+        lambda V, E, F: (V + E + F, 4 * E, 2 * E),
+    ),
+    Scheme(
+        "corner_cutting",
+        classic.corner_cutting,
+        "Corner cutting (Doo-Sabin)",
+        "Section 3",
+        "expand",
+        lambda V, E, F: (2 * E, 4 * E, V + E + F),
+        {"scale": 0.5},
+    ),
+    Scheme(
+        "preserve_hexagons",
+        classic.preserve_hexagons,
+        "Hexagon preservation (dual of Loop)",
+        "Section 4, Figures 4-5",
+        "chamfer",
+        lambda V, E, F: (V + 2 * E, 4 * E, F + E),
+        {"scale": 0.5},
+    ),
+    Scheme(
+        "honeycomb",
+        classic.honeycomb,
+        "Honeycomb (dual of sqrt(3))",
+        "Section 6, Figure 13",
+        "zip",
+        lambda V, E, F: (2 * E, 3 * E, V + F),
+    ),
+]
+
+#: Every remeshing scheme of the package, by name.
+SCHEMES: dict[str, Scheme] = {s.name: s for s in _LIST}
+
+
+def get_scheme(scheme: str | Scheme | Callable) -> Scheme | Callable:
+    """Look a scheme up by name; a :class:`Scheme` or callable passes through.
+
+    Raises
+    ------
+    ValueError
+        For an unknown name; the message lists the known ones.
+    """
+    if isinstance(scheme, Scheme) or (callable(scheme) and not isinstance(scheme, str)):
+        return scheme
+    try:
+        return SCHEMES[scheme]
+    except (KeyError, TypeError):
+        raise ValueError(
+            f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}"
+        ) from None
