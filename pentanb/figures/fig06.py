@@ -32,8 +32,8 @@ def panels() -> dict[str, Mesh]:
 
     (A) has two faces, the hexagon (face 0) and its back; face ``h`` of (B)
     is the pentagon of half-edge ``h``, so faces 0-5 of (B) fill the front
-    hexagon.  (A) is not a mesh the constructor accepts (its vertices are
-    2-valent); it is the figure's teaching mesh.
+    hexagon.  Neither is a mesh the constructor accepts: the hexagon's
+    corners stay 2-valent in both.  They are the figure's teaching meshes.
     """
     a = pillow(6)
     return {"A": a, "B": pentagonalize(a)}

@@ -36,8 +36,9 @@ def panels() -> dict[str, Mesh]:
 
     (A) has two faces, the pentagon (face 0) and its back; in (B), face 0 is
     the front face's scaled copy and face ``F + h`` the pentagon of
-    half-edge ``h``.  (A) is not a mesh the constructor accepts (its
-    vertices are 2-valent); it is the figure's teaching mesh.
+    half-edge ``h``.  Neither is a mesh the constructor accepts: the
+    pentagon's corners stay 2-valent in both.  They are the figure's
+    teaching meshes.
     """
     a = pillow(5)
     return {"A": a, "B": preserve_pentagons(a, scale=SCALE)}

@@ -154,9 +154,11 @@ def panels(name: int | str) -> dict[str, Mesh]:
 
     Built afresh on every call (nothing is cached).  Figures whose panels are
     charts (``"equation1"``, ``"convergence"``) have no meshes: ``{}``.  The
-    flat diagrams (Figures 6 and 10) give a two-faced "pillow" as (A), a
-    closed mesh whose 2-valent vertices the :class:`~pentanb.Mesh`
-    constructor would refuse.
+    flat diagrams (Figures 6 and 10) start from a two-faced "pillow": their
+    meshes are closed, but keep its 2-valent corners, which the
+    :class:`~pentanb.Mesh` constructor refuses: draw and measure them, but
+    do not feed them to other operators (the dual of a 2-valent vertex is a
+    2-sided face).
 
     Parameters
     ----------
