@@ -79,7 +79,7 @@ def _figures(args) -> int:
 
     names = args.only or list(figures.FIGURES)
     try:
-        names = [figures._get(n).name for n in names]
+        names = [figures.get(n).name for n in names]
     except ValueError as exc:
         print(f"pentanb figures: {exc}", file=sys.stderr)
         return 2
@@ -148,8 +148,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     if args.command is None:
         return _demo(args)
-    if getattr(args, "only", None):
-        args.only = [f"fig{int(n):02d}" if str(n).isdigit() else n for n in args.only]
     return args.func(args)
 
 

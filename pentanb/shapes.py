@@ -8,9 +8,10 @@ the command line and the tests; :func:`get` builds one by name.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .mesh import Mesh, MeshError
 from .schemes.smoothing import dual
@@ -29,6 +30,7 @@ __all__ = [
     "voxels",
     "hard_edged_cube",
     "animal",
+    "outward",
     "SHAPES",
     "get",
 ]
@@ -36,27 +38,51 @@ __all__ = [
 PHI = (1.0 + 5.0**0.5) / 2.0
 
 
-def _outward(vertices: np.ndarray, faces: np.ndarray) -> Mesh:
-    """A convex solid around the origin, every face turned to face outwards."""
-    faces = np.asarray(faces, dtype=np.int64)
-    p = vertices[faces]
-    normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-    flip = np.einsum("ij,ij->i", normal, p.mean(axis=1)) < 0
-    faces[flip] = faces[flip, ::-1]
-    return Mesh(vertices, faces)
+def outward(vertices: ArrayLike, faces: Iterable[ArrayLike]) -> Mesh:
+    """A convex solid with every face turned outwards.
+
+    A face whose corners turn clockwise seen from outside (its normal, from
+    its first three corners, pointing towards the vertices' centroid) is
+    reversed; the others are kept as given.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+        Corners of a convex solid.
+    faces : (m,) sequence of int sequences
+        Its faces in either orientation; any mix of sizes.
+
+    Returns
+    -------
+    Mesh
+
+    Raises
+    ------
+    MeshError
+        If the faces do not make a closed manifold once turned outwards.
+    """
+    v = np.asarray(vertices, dtype=np.float64)
+    c = v.mean(axis=0)
+    out = []
+    for face in faces:
+        f = np.asarray(face, dtype=np.int64)
+        p = v[f]
+        normal = np.cross(p[1] - p[0], p[2] - p[0])
+        out.append(f if normal @ (p.mean(axis=0) - c) > 0 else f[::-1])
+    return Mesh(v, out)
 
 
 def tetrahedron() -> Mesh:
     """Regular tetrahedron inscribed in the cube [-1, 1]^3 (4 triangles)."""
     v = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], dtype=float)
-    return _outward(v, [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]])
+    return outward(v, [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]])
 
 
 def cube() -> Mesh:
     """The cube [-1, 1]^3 (6 quads); vertex ``4x + 2y + z`` has coordinates (x, y, z) in {-1, 1}."""
     v = np.array(list(itertools.product([-1.0, 1.0], repeat=3)))
     faces = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]
-    return _outward(v, faces)
+    return outward(v, faces)
 
 
 def octahedron() -> Mesh:
@@ -67,7 +93,7 @@ def octahedron() -> Mesh:
         for sa, sb, sc in itertools.product([0, 1], repeat=3)
         for a, b, c in [(0, 1, 2)]
     ]
-    return _outward(v, faces)
+    return outward(v, faces)
 
 
 def icosahedron() -> Mesh:
@@ -81,7 +107,7 @@ def icosahedron() -> Mesh:
         for t in itertools.combinations(range(12), 3)
         if near[t[0], t[1]] and near[t[1], t[2]] and near[t[0], t[2]]
     ]
-    return _outward(v, faces)
+    return outward(v, faces)
 
 
 def dodecahedron() -> Mesh:
@@ -259,7 +285,7 @@ def voxels(occupied) -> Mesh:
         raise MeshError("voxels need a 3-D array with at least one solid cell")
     pad = np.pad(occ, 1)
     shape = np.array(pad.shape) + 1
-    quads = []
+    parts = []
     # square of the face at +axis, counter-clockwise seen from outside
     unit = {
         0: [(0, 0, 0), (0, 1, 0), (0, 1, 1), (0, 0, 1)],
@@ -276,8 +302,8 @@ def voxels(occupied) -> Mesh:
             else:
                 sq = sq[::-1]
             corners = cells[:, None, :] + sq[None]
-            quads.append(np.ravel_multi_index(corners.reshape(-1, 3).T, shape).reshape(-1, 4))
-    quads = np.concatenate(quads)
+            parts.append(np.ravel_multi_index(corners.reshape(-1, 3).T, shape).reshape(-1, 4))
+    quads = np.concatenate(parts)
     used, inverse = np.unique(quads, return_inverse=True)
     pts = np.stack(np.unravel_index(used, shape), axis=1).astype(float) - 1.0
     return Mesh(pts, inverse.reshape(-1, 4))
@@ -287,9 +313,11 @@ def hard_edged_cube(inset: float = 0.8) -> Mesh:
     """A cube with hard edges: each face a 3x3 grid whose outer rows are thin.
 
     The planes ``+-inset`` cut every face into a big central quad, four
-    strips along the edges and four small corner squares (54 quads): the
-    sharp-edged cube of Figures 1, 8 and 11, whose 4-valent grid vertices
-    make the (4, 4) regions that become 4.3.3.4.3 after pentagonalization.
+    strips along the edges and four small corner squares (54 quads): with
+    the default inset, the sharp-edged cube of Figures 1 and 8, whose
+    4-valent grid vertices make the (4, 4) regions that become 4.3.3.4.3
+    after pentagonalization.  Figure 11 uses ``inset=1/3``: every face an
+    even 3x3 grid.
 
     Parameters
     ----------
@@ -305,7 +333,8 @@ def animal() -> Mesh:
     """A low-poly rabbit of unit cubes standing in for Figure 12's model.
 
     Genus 0 with hard features: a body, four legs, a head with a snout, two
-    long ears and a tail (a few hundred quads), scaled into [-1, 1]^3.
+    long ears and a tail (178 quads; valences 3 to 5), scaled into
+    [-1, 1]^3.
     """
     occ = np.zeros((11, 5, 10), dtype=bool)
     occ[2:7, 1:4, 2:5] = True  # body

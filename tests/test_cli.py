@@ -5,11 +5,13 @@ The ``figures`` subcommand is run end to end in :mod:`test_figures`.
 
 from __future__ import annotations
 
+import inspect
 import subprocess
 import sys
 
 import pytest
 
+import pentanb.cli
 from pentanb import SCHEMES, shapes
 from pentanb.cli import DEMO_SHAPES, demo_table, main
 
@@ -60,6 +62,7 @@ def test_main_without_arguments_runs_the_demo(capsys):
     assert capsys.readouterr().out == out
 
 
+@pytest.mark.slow
 def test_python_dash_m_runs(tmp_path):
     done = subprocess.run(
         [sys.executable, "-m", "pentanb"], capture_output=True, text=True, check=True, cwd=tmp_path
@@ -74,6 +77,7 @@ def test_unknown_figure_is_refused(capsys, tmp_path):
     assert not list(tmp_path.iterdir())
 
 
+@pytest.mark.slow
 def test_only_one_figure(capsys, tmp_path):
     assert main(["figures", "--out", str(tmp_path / "x"), "--only", "7"]) == 0
     assert [p.name for p in (tmp_path / "x").iterdir()] == ["fig07.png"]
@@ -96,3 +100,23 @@ def test_figures_into_a_path_that_is_a_file_is_refused(tmp_path, capsys):
     err = capsys.readouterr().err
     assert f"cannot write into {target}" in err
     assert target.read_text() == "x"
+
+
+@pytest.mark.slow
+def test_only_takes_numbers_and_names(capsys, tmp_path):
+    assert main(["figures", "--out", str(tmp_path), "--only", "6", "fig10"]) == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fig06.png", "fig10.png"]
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].startswith("fig06  ") and any(x.startswith("fig10  ") for x in lines)
+    assert any(x.startswith("schemes  ") for x in lines)
+
+
+def test_unknown_figure_number_is_refused(capsys, tmp_path):
+    assert main(["figures", "--out", str(tmp_path), "--only", "7", "14"]) == 2
+    assert "unknown figure 'fig14'" in capsys.readouterr().err
+    assert not list(tmp_path.iterdir())
+
+
+def test_cli_uses_only_public_names_of_figures():
+    source = inspect.getsource(pentanb.cli)
+    assert "figures._" not in source

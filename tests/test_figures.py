@@ -5,7 +5,10 @@ into a temporary folder; the tests then check its exit status, its report
 and its files.  Each figure function is called once more to inspect the
 returned :class:`~matplotlib.figure.Figure` (panel count and labels), and
 the claims are checked figure by figure, with a few numbers recomputed here
-without the claim code.
+without the claim code.  :func:`pentanb.figures.panels` is checked for every
+figure: the paper's panel labels, valid meshes, and drawing and claims that
+use the meshes they are given.  (Tests that draw every figure or run the
+whole command are marked ``slow``.)
 
 Byte-identity: the committed PNGs in ``figures/`` were written with
 matplotlib :data:`COMMITTED_WITH`; a run with that version must rewrite
@@ -17,6 +20,7 @@ in-run check remains: drawing the same figure twice gives the same bytes.
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import io
 import subprocess
 import sys
@@ -30,8 +34,11 @@ import pytest
 matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")
 
+from helpers import check_valid  # noqa: E402
+
 import pentanb  # noqa: E402
-from pentanb import figures, shapes  # noqa: E402
+from pentanb import MeshError, figures, shapes  # noqa: E402
+from pentanb.analysis import face_configurations, vertex_configurations  # noqa: E402
 from pentanb.cli import main  # noqa: E402
 from pentanb.viz import mpl as vz  # noqa: E402
 
@@ -40,6 +47,28 @@ COMMITTED = ROOT / "figures"
 #: matplotlib version the committed PNGs were rendered with.
 COMMITTED_WITH = "3.11.2"
 EXPECTED_FILES = [f"fig{i:02d}.png" for i in range(1, 14)] + ["equation1.png", "convergence.png"]
+#: The panel labels of every image, as the paper (or our drawing beyond it) letters them.
+PAPER_PANELS = {
+    "fig01": "ABCD",
+    "fig02": "ABC",
+    "fig03": "AB",
+    "fig04": "AB",
+    "fig05": "AB",
+    "fig06": "AB",
+    "fig07": "ABCDEF",
+    "fig08": "AB",
+    "fig09": "AB",
+    "fig10": "AB",
+    "fig11": "AB",
+    "fig12": "ABC",
+    "fig13": "ABCD",
+    "equation1": "ABCD",
+    "convergence": "ABC",
+}
+#: Images whose panels are charts, not meshes.
+CHARTS = ("equation1", "convergence")
+#: The flat diagrams, whose meshes keep the pillow's 2-valent corners.
+FLAT = ("fig06", "fig10")
 
 
 # ---------------------------------------------------------------------- the command
@@ -59,6 +88,7 @@ def drawn():
     return {name: spec.draw() for name, spec in figures.FIGURES.items()}
 
 
+@pytest.mark.slow
 def test_command_succeeds_and_writes_every_png(figures_run):
     status, report, _progress, out = figures_run
     assert status == 0, report
@@ -67,12 +97,14 @@ def test_command_succeeds_and_writes_every_png(figures_run):
         assert (out / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+@pytest.mark.slow
 def test_command_shows_progress(figures_run):
     _, _, progress, _ = figures_run
     assert "[ 1/15]" in progress and "[15/15]" in progress
     assert "fig07.png" in progress
 
 
+@pytest.mark.slow
 def test_report_lists_every_figure_and_marks_each_claim(figures_run):
     _, report, _, _ = figures_run
     lines = report.splitlines()
@@ -88,12 +120,14 @@ def test_report_lists_every_figure_and_marks_each_claim(figures_run):
     assert "Conway's chamfer" in report and "Conway's zip" in report
 
 
+@pytest.mark.slow
 def test_report_shows_configurations(figures_run):
     _, report, _, _ = figures_run
     assert "3.3.4.3.4: 192" in report  # Figure 8: 4.3.3.4.3 regions
     assert "3.3.3.3.6: 432" in report  # Figure 9: 6.3.3.3.3 everywhere
 
 
+@pytest.mark.slow
 def test_pngs_are_byte_identical_to_the_committed_ones(figures_run):
     _, _, _, out = figures_run
     if matplotlib.__version__ != COMMITTED_WITH:
@@ -107,6 +141,7 @@ def test_pngs_are_byte_identical_to_the_committed_ones(figures_run):
     assert not differ, f"rewritten differently: {differ}"
 
 
+@pytest.mark.slow
 def test_drawing_twice_gives_the_same_bytes(figures_run, tmp_path):
     _, _, _, out = figures_run
     for name in ("fig07", "fig06"):
@@ -114,6 +149,7 @@ def test_drawing_twice_gives_the_same_bytes(figures_run, tmp_path):
         assert path.read_bytes() == (out / f"{name}.png").read_bytes(), name
 
 
+@pytest.mark.slow
 def test_png_carries_no_version_or_time(figures_run):
     _, _, _, out = figures_run
     data = (out / "fig01.png").read_bytes()
@@ -125,11 +161,7 @@ def test_failing_claim_gives_nonzero_exit(monkeypatch, tmp_path):
     spec = figures.FIGURES["fig02"]
     bad = figures.Claim("a claim that does not hold", 1, 2, False)
     monkeypatch.setitem(
-        figures.FIGURES,
-        "fig02",
-        figures.FigureSpec(
-            spec.name, spec.title, spec.caption, spec.draw, lambda: [bad], spec.panels
-        ),
+        figures.FIGURES, "fig02", dataclasses.replace(spec, claims=lambda meshes=None: [bad])
     )
     buf = io.StringIO()
     with contextlib.redirect_stdout(buf), contextlib.redirect_stderr(io.StringIO()):
@@ -153,6 +185,122 @@ def test_registry_has_every_figure_of_the_paper():
         assert figures.FIGURES[f"fig{i:02d}"].draw is getattr(figures, f"figure{i}")
 
 
+def test_old_public_names_still_work():
+    assert list(figures.FIGURES) == list(PAPER_PANELS)
+    assert figures.FIGURES["equation1"].draw is figures.equation1
+    assert figures.FIGURES["convergence"].draw is figures.convergence_figure
+    assert figures.face_configurations is face_configurations
+    assert figures.vertex_configurations is vertex_configurations
+    assert callable(figures.scheme_claims)
+
+
+def test_no_private_cache_or_degenerate_constructor_is_public():
+    # the flat pillow is built by Figures 6 and 10 only; meshes are not cached
+    for name in ("pillow", "_m", "_get", "hard_edged_cube"):
+        assert not hasattr(figures, name), name
+    assert not any(name.startswith("_") for name in figures.__all__)
+
+
+def test_get_accepts_numbers_and_names():
+    spec = figures.get(7)
+    assert spec is figures.get("7") is figures.get("fig07") is figures.FIGURES["fig07"]
+    assert spec.filename == "fig07.png"
+    assert figures.get("equation1").name == "equation1"
+
+
+@pytest.mark.parametrize("bad", [99, "fig99", "figure7", ""])
+def test_get_refuses_an_unknown_figure(bad):
+    with pytest.raises(ValueError, match=r"unknown figure .*known: fig01, fig02"):
+        figures.get(bad)
+
+
+@pytest.mark.parametrize("bad", [7.0, None, True, ["fig07"]])
+def test_get_refuses_a_name_of_the_wrong_type(bad):
+    with pytest.raises(TypeError, match="a figure is named by its number"):
+        figures.get(bad)
+
+
+# ---------------------------------------------------------------------- panels
+@pytest.mark.parametrize("name", list(figures.FIGURES))
+def test_panels_are_the_figures_labelled_meshes(name):
+    meshes = figures.panels(name)
+    assert isinstance(meshes, dict)
+    if name in CHARTS:
+        assert meshes == {}
+        return
+    assert "".join(meshes) == PAPER_PANELS[name] == "".join(figures.FIGURES[name].labels)
+    for label, mesh in meshes.items():
+        assert isinstance(mesh, pentanb.Mesh), label
+        if name in FLAT:
+            continue
+        check_valid(mesh)  # rebuilt by the constructor, derived arrays compared
+        assert mesh.n_components == 1, label
+
+
+@pytest.mark.parametrize("name", FLAT)
+def test_flat_panels_are_closed_but_refused_by_the_constructor(name):
+    meshes = figures.panels(name)
+    for label, mesh in meshes.items():
+        twin = mesh.twin
+        h = np.arange(mesh.n_halfedges)
+        assert np.array_equal(twin[twin], h), label  # closed: every half-edge has a twin
+        assert np.array_equal(mesh.corners[twin], mesh.head), label
+        assert mesh.genus == 0, label
+        assert mesh.valences.min() == 2, label  # the polygon's corners
+        with pytest.raises(MeshError, match="only 2 edges"):
+            pentanb.Mesh(mesh.vertices, mesh.faces)
+    n = 6 if name == "fig06" else 5
+    assert meshes["A"].face_size_histogram() == {n: 2}
+    assert np.allclose(meshes["A"].vertices[:, 2], 0.0)
+
+
+def test_panels_by_hand():
+    # counts worked out from the paper's constructions, not by the code
+    assert figures.panels(2)["B"].face_size_histogram() == {3: 24}
+    assert figures.panels(3)["A"].face_size_histogram() == {3: 5, 4: 5, 5: 1}
+    f7 = figures.panels(7)
+    assert [f7[k].n_faces for k in "ABCDEF"] == [4, 12, 20, 12, 20, 12]
+    # Figure 11 (A): 3x3-grid cube (54 quads, 108 edges): 54 centre quads, 216 pentagons
+    assert figures.panels(11)["A"].face_size_histogram() == {4: 54, 5: 216}
+    f12 = figures.panels(12)
+    assert f12["B"] is f12["C"]  # (C) is (B) shaded
+    assert figures.panels(13)["A"].face_size_histogram() == {5: 12, 6: 20}
+
+
+def test_panels_are_built_afresh_on_every_call():
+    # no process-wide cache: each call builds new meshes (equal ones)
+    a, b = figures.panels(7), figures.panels(7)
+    assert a["F"] is not b["F"]
+    assert np.array_equal(a["F"].vertices, b["F"].vertices)
+
+
+def test_drawing_uses_the_meshes_it_is_given():
+    meshes = dict(figures.panels(7), A=shapes.cube())
+    fig = figures.figure7(meshes)
+    assert len(fig.axes[0].collections[0].get_facecolor()) == 6  # the cube's faces
+    assert fig.axes[0].get_title().endswith("V 8  E 12  F 6")
+
+
+def test_claims_use_the_meshes_they_are_given():
+    good = figures.claims(7, figures.panels(7))
+    assert good and all(c.holds for c in good)
+    # a wrong mesh in (B): the dodecahedron claim fails, and only the claims about (B)
+    bad = figures.claims(7, dict(figures.panels(7), B=shapes.icosahedron()))
+    failed = [c.text for c in bad if not c.holds]
+    assert failed and all("(B)" in t or "(B), (D), (F)" in t for t in failed), failed
+
+
+@pytest.mark.slow
+def test_panels_and_claims_need_no_matplotlib():
+    code = (
+        "import sys, pentanb.figures as f; "
+        "f.panels(11)['A']; f.panels(6); "
+        "assert all(c.holds for n in ('fig07', 'fig06', 'equation1') for c in f.claims(n)); "
+        "assert 'matplotlib' not in sys.modules, 'matplotlib imported'"
+    )
+    subprocess.run([sys.executable, "-c", code], check=True)
+
+
 @pytest.mark.parametrize("name", list(figures.FIGURES))
 def test_claims_hold(name):
     claims = figures.claims(name)
@@ -162,6 +310,7 @@ def test_claims_hold(name):
         assert c.holds, str(c)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list(figures.FIGURES))
 def test_figure_has_its_labelled_panels(drawn, name):
     fig = drawn[name]
@@ -169,10 +318,11 @@ def test_figure_has_its_labelled_panels(drawn, name):
     assert isinstance(fig, matplotlib.figure.Figure)
     titles = [ax.get_title() for ax in fig.axes]
     labels = [t for t in titles if t.startswith("(")]
-    assert [t[1] for t in labels] == list(spec.panels), titles
+    assert [t[1] for t in labels] == list(spec.labels) == list(PAPER_PANELS[name]), titles
     assert fig._suptitle is not None and fig._suptitle.get_text()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", [f"fig{i:02d}" for i in range(1, 14) if i not in (6, 10)])
 def test_mesh_figures_are_3d_with_a_face_legend(drawn, name):
     fig = drawn[name]
@@ -185,11 +335,13 @@ def test_mesh_figures_are_3d_with_a_face_legend(drawn, name):
     assert texts and all(t.endswith(")") and t.split("(")[-1][:-1].isdigit() for t in texts)
 
 
+@pytest.mark.slow
 def test_flat_figures_are_2d(drawn):
     for name in ("fig06", "fig10"):
         assert all(ax.name == "rectilinear" for ax in drawn[name].axes)
 
 
+@pytest.mark.slow
 def test_panel_polygons_are_the_faces(drawn):
     """Figure 7 draws one polygon per face of each mesh, coloured by its size."""
     fig = drawn["fig07"]
@@ -226,16 +378,16 @@ def test_fig07_tetrahedron_becomes_dodecahedron():
     ],
 )
 def test_semiregular_configurations(name, expected):
-    a = figures._m(f"{name[:3]}{int(name[3:])}A")
+    a = figures.panels(name)["A"]
     b = pentanb.dual(a)
-    assert dict(Counter(_slow_face_configs(a))) == expected
-    assert dict(Counter(_slow_vertex_configs(b))) == expected
+    assert dict(Counter(face_configurations(a))) == expected
+    assert dict(Counter(vertex_configurations(b))) == expected
 
 
 def test_equation1_matches_meshes():
     for mesh in (
         pentanb.shapes.dodecahedron(),
-        figures._m("fig12B"),
+        figures.panels(12)["B"],
         pentanb.shapes.hexagonal_surface(2),
     ):
         n = int(mesh.face_sizes[0])
@@ -249,64 +401,9 @@ def test_fig13_soccer_ball():
     assert ball.valence_histogram() == {3: 60}
 
 
-# ---------------------------------------------------------------------- configurations
-def _canon(seq):
-    seq = list(seq)
-    n = len(seq)
-    cands = [seq[i:] + seq[:i] for i in range(n)]
-    cands += [list(reversed(c)) for c in cands]
-    return ".".join(map(str, min(cands)))
-
-
-def _slow_vertex_configs(mesh):
-    """Walk every vertex's faces in Python (reference for the vectorized version)."""
-    twin, face = mesh.twin, mesh.halfedge_face
-    prev = mesh.prev
-    out = {}
-    for h in range(mesh.n_halfedges):
-        v = int(mesh.corners[h])
-        if v in out:
-            continue
-        sizes, g = [], h
-        while True:
-            sizes.append(int(mesh.face_sizes[face[g]]))
-            g = int(twin[prev[g]])
-            if g == h:
-                break
-        out[v] = _canon(sizes)
-    return [out[v] for v in range(mesh.n_vertices)]
-
-
-def _slow_face_configs(mesh):
-    return [_canon(mesh.valences[f].tolist()) for f in mesh.faces]
-
-
-@pytest.mark.parametrize("shape", ["cube", "icosahedron", "torus", "hexagonal_genus2", "animal"])
-def test_configurations_match_slow_reference(shape):
-    mesh = pentanb.preserve_pentagons(pentanb.shapes.get(shape))
-    assert figures.vertex_configurations(mesh) == _slow_vertex_configs(mesh)
-    assert figures.face_configurations(mesh) == _slow_face_configs(mesh)
-
-
-def test_canonical_configuration():
-    assert figures.canonical_configuration("4.3.3.4.3") == "3.3.4.3.4"
-    assert figures.canonical_configuration("3.4.3.4.3") == "3.3.4.3.4"
-    assert figures.canonical_configuration("6.3.3.3.3") == "3.3.3.3.6"
-    assert figures.canonical_configuration([4, 6, 8]) == "4.6.8"
-    assert figures.canonical_configuration([4, 8, 6]) == "4.6.8"  # a reflection
-    assert figures.configuration_counts(["5.5.5", "3.3.3", "5.5.5"]) == {"5.5.5": 2, "3.3.3": 1}
-
-
-def test_dual_swaps_vertex_and_face_configurations():
-    mesh = figures._m("fig11A")
-    assert sorted(figures.face_configurations(mesh)) == sorted(
-        figures.vertex_configurations(pentanb.dual(mesh))
-    )
-
-
 # ---------------------------------------------------------------------- drawing module
 def test_face_polygons_vectorized_equals_per_face():
-    mesh = figures._m("fig3B")  # triangles, quads, pentagon
+    mesh = figures.panels(3)["B"]  # triangles, quads, pentagon
     polys = vz.face_polygons(mesh)
     assert len(polys) == mesh.n_faces
     for f, p in zip(mesh.faces, polys):
@@ -336,6 +433,7 @@ def test_plot_mesh_and_legend():
     assert labels == ["quads (4)", "pentagons (5)"]
 
 
+@pytest.mark.slow
 def test_big_mesh_draws_every_face():
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
@@ -346,6 +444,7 @@ def test_big_mesh_draws_every_face():
     assert sum(len(c.get_paths()) for c in polys) >= mesh.n_faces
 
 
+@pytest.mark.slow
 def test_import_pentanb_does_not_import_matplotlib():
     code = (
         "import sys, pentanb, pentanb.analysis.convergence, pentanb.cli; "

@@ -313,7 +313,43 @@ def test_animal():
     m = shapes.animal()
     check_valid(m)
     assert m.genus == 0 and m.n_components == 1
-    assert m.face_size_histogram() == {4: m.n_faces}
-    assert 100 <= m.n_faces <= 1000
+    assert m.face_size_histogram() == {4: 178}  # as its docstring says
+    assert set(m.valence_histogram()) == {3, 4, 5}
     assert np.abs(m.vertices).max() == pytest.approx(1.0)
     assert m.volume > 0
+
+
+def test_outward_turns_every_face_outwards():
+    # a square pyramid given with its faces in both orientations, mixed sizes
+    v = [[1, 1, 0], [-1, 1, 0], [-1, -1, 0], [1, -1, 0], [0, 0, 1.5]]
+    faces = [[0, 1, 2, 3], [0, 4, 1], [1, 2, 4], [2, 4, 3], [3, 0, 4]]
+    m = shapes.outward(v, faces)
+    assert m.volume == pytest.approx(4 * 1.5 / 3)  # base 4, height 1.5
+    centre = m.vertices.mean(axis=0)
+    assert np.all(np.einsum("ij,ij->i", m.face_normals, m.face_centroids - centre) > 0)
+    # faces already outward are kept as given ([1, 2, 4] on the x = -1 side,
+    # [3, 0, 4] on the x = +1 side); the others are reversed (the base seen
+    # from below, [0, 4, 1] and [2, 4, 3] whose normals point in y towards the apex)
+    assert face_lists(m) == [[3, 2, 1, 0], [1, 4, 0], [1, 2, 4], [3, 4, 2], [3, 0, 4]]
+
+
+def test_outward_of_a_solid_off_the_origin():
+    # the centroid, not the origin, is the inside: the same cube moved far away
+    cube = shapes.cube()
+    moved = shapes.outward(cube.vertices + 10.0, [f[::-1] for f in cube.faces])
+    assert moved.volume == pytest.approx(8.0)
+    assert face_lists(moved) == face_lists(cube)
+
+
+def test_outward_refuses_faces_that_are_not_a_closed_surface():
+    v = [[1, 1, 0], [-1, 1, 0], [-1, -1, 0], [1, -1, 0], [0, 0, 1.5]]
+    with pytest.raises(MeshError):
+        shapes.outward(v, [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]])  # no base
+
+
+def test_hard_edged_cube_inset():
+    # the default keeps the edges sharp (thin outer rows); inset 1/3 is an even grid
+    coords = np.unique(shapes.hard_edged_cube().vertices)
+    assert coords.tolist() == [-1.0, -0.8, 0.8, 1.0]
+    even = np.unique(shapes.hard_edged_cube(1 / 3).vertices)
+    assert np.allclose(np.diff(even), 2 / 3)

@@ -1,20 +1,24 @@
 """Measuring what the paper "visually confirmed": convergence under the dual.
 
 Section 7: "we have visually confirmed that the algorithms converge with G1
-continuity".  Two measurements turn that into numbers:
+continuity".  Two studies turn that into numbers, with the measures of
+:mod:`pentanb.analysis.measures`:
 
 * :func:`dual_convergence`: one remeshing, then pairs of duals; after each
-  pair, how round the mesh is (spread of the vertex radii) and how sharp
-  its sharpest crease is (largest angle between the normals of two faces
-  sharing an edge).
+  pair, how round the mesh is (:func:`~pentanb.analysis.measures.radius_spread`)
+  and how sharp its sharpest crease is (the largest of
+  :func:`~pentanb.analysis.measures.normal_angles`).
 * :func:`subdivision_convergence`: the same after every subdivision level
   (one remeshing and two duals).  On a G1 (tangent-continuous) limit
-  surface the largest crease angle must fall towards 0 as the mesh refines.
-* :func:`edge_waviness`: Section 1's "lateral artifact": how much the
-  surface's distance from a straight edge's axis varies along the edge (a
-  wave pattern makes it oscillate).
+  surface the largest crease angle must fall towards 0 as the mesh refines;
+  a falling angle is necessary for G1, not a proof of it.
 
-Both need only numpy.
+:func:`study` runs both on :data:`STUDY_MESHES` for the paper's two schemes
+(the convergence figure).  numpy only.
+
+``radius_spread``, ``normal_angles``, ``ray_distances`` and ``edge_waviness``
+are defined in :mod:`pentanb.analysis.measures`; they are still importable
+from here.
 """
 
 from __future__ import annotations
@@ -29,13 +33,12 @@ from .. import shapes
 from ..mesh import Mesh
 from ..schemes.smoothing import dual
 from ..subdivision import get_scheme, subdivide
+from .measures import edge_waviness as edge_waviness  # the old import path
+from .measures import normal_angles, radius_spread
+from .measures import ray_distances as ray_distances  # the old import path
 
 __all__ = [
     "Convergence",
-    "radius_spread",
-    "normal_angles",
-    "ray_distances",
-    "edge_waviness",
     "dual_convergence",
     "subdivision_convergence",
     "study",
@@ -58,7 +61,7 @@ class Convergence:
     faces : (k,) int
         Number of faces after each step.
     radius_spread : (k,) float
-        :func:`radius_spread` after each step.
+        :func:`~pentanb.analysis.measures.radius_spread` after each step.
     max_normal_angle : (k,) float
         Largest angle between neighbouring face normals, in degrees.
     mean_normal_angle : (k,) float
@@ -71,93 +74,6 @@ class Convergence:
     radius_spread: NDArray[np.float64]
     max_normal_angle: NDArray[np.float64]
     mean_normal_angle: NDArray[np.float64]
-
-
-def radius_spread(mesh: Mesh) -> float:
-    """std / mean of the vertices' distances to their centroid (0 on a sphere)."""
-    r = np.linalg.norm(mesh.vertices - mesh.vertices.mean(axis=0), axis=1)
-    return float(r.std() / r.mean())
-
-
-def normal_angles(mesh: Mesh) -> NDArray[np.float64]:
-    """(E,) float: angle in degrees between the normals of the two faces of every edge.
-
-    Uses one half-edge per edge (``edge_halfedge``), its face
-    (``halfedge_face``) and its twin's face.
-    """
-    h = mesh.edge_halfedge
-    f, g = mesh.halfedge_face[h], mesh.halfedge_face[mesh.twin[h]]
-    n = mesh.face_normals
-    cos = np.einsum("ij,ij->i", n[f], n[g])
-    return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
-
-
-def ray_distances(
-    mesh: Mesh, origins: NDArray[np.float64], direction: NDArray[np.float64]
-) -> NDArray[np.float64]:
-    """Distance from every origin to the farthest crossing of the mesh along ``direction``.
-
-    Every face is fanned from its centroid (one triangle per half-edge) and
-    all rays are intersected with all triangles at once (Moller-Trumbore).
-
-    Parameters
-    ----------
-    mesh : Mesh
-    origins : (k, 3) float
-        Points inside the mesh.
-    direction : (3,) float
-        Unit direction of the rays.
-
-    Returns
-    -------
-    (k,) float
-        NaN where a ray misses.
-    """
-    d = np.asarray(direction, dtype=np.float64)
-    o = np.atleast_2d(np.asarray(origins, dtype=np.float64))
-    a = mesh.face_centroids[mesh.halfedge_face]
-    e1 = mesh.vertices[mesh.corners] - a
-    e2 = mesh.vertices[mesh.head] - a
-    pvec = np.cross(d, e2)
-    det = np.einsum("ij,ij->i", e1, pvec)
-    good = np.abs(det) > 1e-14
-    a, e1, e2, pvec, det = a[good], e1[good], e2[good], pvec[good], det[good]
-    tvec = o[:, None, :] - a[None]  # (k, T, 3)
-    u = np.einsum("ktj,tj->kt", tvec, pvec) / det
-    q = np.cross(tvec, e1[None])
-    v = (q @ d) / det
-    t = np.einsum("tj,ktj->kt", e2, q) / det
-    eps = 1e-9
-    hit = (u >= -eps) & (v >= -eps) & (u + v <= 1 + eps) & (t > 0)
-    return np.where(hit.any(axis=1), np.where(hit, t, -np.inf).max(axis=1), np.nan)
-
-
-def edge_waviness(
-    mesh: Mesh,
-    start=(-0.5, 0.0, 0.0),
-    end=(0.5, 0.0, 0.0),
-    direction=(0.0, 1.0, 1.0),
-    samples: int = 41,
-) -> float:
-    """How much a surface wobbles along a straight edge: the range of its distance
-    from the edge's axis, measured along rays perpendicular to the edge.
-
-    The defaults probe the middle half of the edge ``y = z = 1`` of a cube
-    ``[-1, 1]^3`` along its bisecting direction: rays from
-    ``samples`` points between ``start`` and ``end`` towards ``direction``.
-    A surface without "lateral artifacts" (Section 1: a smooth wave
-    pattern along a straight edge) keeps that distance constant.
-
-    Returns
-    -------
-    float
-        ``max - min`` of the distances (in the mesh's units).
-    """
-    s, e = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
-    d = np.asarray(direction, dtype=float)
-    t = np.linspace(0.0, 1.0, samples)[:, None]
-    dist = ray_distances(mesh, s + t * (e - s), d / np.linalg.norm(d))
-    return float(np.nanmax(dist) - np.nanmin(dist))
 
 
 def _measure(meshes, scheme_name):
@@ -246,8 +162,15 @@ def study(pairs: int = 6, levels: int = 4) -> dict:
     dict
         ``"meshes"``: the mesh names; ``"pairs"`` and ``"levels"``: dicts
         ``{(mesh name, scheme): Convergence}`` from :func:`dual_convergence`
-        and :func:`subdivision_convergence`.  (The rabbit is refined at most
-        three levels, to keep the study to a few seconds.)
+        and :func:`subdivision_convergence`.  (Meshes of more than 50 faces,
+        here the rabbit, are refined at most three levels, to keep the study
+        to a few seconds.)
+
+    Notes
+    -----
+    The results of the last four ``(pairs, levels)`` asked for are kept
+    (``functools.lru_cache(maxsize=4)``): the convergence figure and its
+    claims share one study.  Treat the returned dict as read-only.
     """
     res_pairs, res_levels = {}, {}
     for name, build in STUDY_MESHES.items():
