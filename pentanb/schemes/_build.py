@@ -129,9 +129,9 @@ def check_vertex_faces(mesh: Mesh, op: str) -> None:
     few = np.flatnonzero(valence < 3)
     if few.size:
         v, k = int(few[0]), int(valence[few[0]])
+        more = f" (and {few.size - 1} more such vertices)" if few.size > 1 else ""
         raise MeshError(
-            f"{op}: vertex {v} has only {k} edge{'s' if k != 1 else ''} "
-            f"({few.size} such vertices); its face in the result would have {k} "
-            "sides, and a face needs at least 3 (a mesh built with "
-            "Mesh.from_csr(..., validate=False) is not checked for this)"
+            f"{op}: vertex {v} has only {k} edge{'s' if k != 1 else ''}{more}; its face "
+            f"in the result would have {k} sides, and a face needs at least 3 (a mesh "
+            "built with Mesh.from_csr(..., validate=False) is not checked for this)"
         )
