@@ -104,6 +104,13 @@ def check_scale(scale: float, name: str = "scale") -> float:
     return s
 
 
+def check_count(value: object, name: str) -> int:
+    """``value`` as a non-negative int (numpy integers too; not bool), or a ValueError naming it."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
+        raise ValueError(f"{name} must be a non-negative integer, got {value!r}")
+    return int(value)
+
+
 def check_mesh(mesh: object, op: str) -> Mesh:
     """``mesh`` itself, or a TypeError naming the operator when it is not a Mesh."""
     if not isinstance(mesh, Mesh):

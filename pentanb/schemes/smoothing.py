@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..mesh import Mesh
-from ._build import check_mesh, check_vertex_faces, output
+from ._build import check_count, check_mesh, check_vertex_faces, output
 
 __all__ = ["dual", "smooth"]
 
@@ -83,13 +83,8 @@ def smooth(mesh: Mesh, duals: int = 2) -> Mesh:
     mesh : Mesh
     duals : int, >= 0
     """
-    duals = _check_count(duals, "duals")
+    check_mesh(mesh, "smooth")
+    duals = check_count(duals, "duals")
     for _ in range(duals):
         mesh = dual(mesh)
     return mesh
-
-
-def _check_count(value, name: str) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
-        raise ValueError(f"{name} must be a non-negative integer, got {value!r}")
-    return int(value)
