@@ -1,8 +1,10 @@
 """Reading and writing OBJ and OFF files, polygon faces kept as they are.
 
 ``read(path)`` and ``write(mesh, path)`` choose the format by the file's
-ending.  A round trip is exact: coordinates are written with ``repr``
-precision (17 significant digits).
+ending (``.obj`` or ``.off``, any case) or by ``format=``; ``write`` writes
+exactly the path it is given, or refuses before writing anything.  A round
+trip is exact: coordinates are written with ``repr`` precision (17
+significant digits).
 """
 
 from __future__ import annotations
@@ -14,11 +16,50 @@ import numpy as np
 
 from .mesh import Mesh, MeshError
 
-__all__ = ["read", "write", "read_obj", "read_off", "write_obj", "write_off"]
+__all__ = ["read", "write", "read_obj", "read_off", "write_obj", "write_off", "FORMATS"]
+
+#: The file formats, by the suffix that names them.
+FORMATS = {".obj": "obj", ".off": "off"}
 
 
-def read(path: str | os.PathLike) -> Mesh:
-    """Read a mesh from an ``.obj`` or ``.off`` file.
+def _format(path: Path, format: str | None) -> str:
+    """The format to use for ``path``: ``format`` if given, else the suffix's.
+
+    Raises
+    ------
+    ValueError
+        An unknown ``format``; no ``format`` and a suffix that names none (the
+        message names the suffix and the known ones); or a ``format`` that
+        contradicts a known suffix.
+    """
+    known = ", ".join(FORMATS)
+    suffix = path.suffix.lower()
+    from_suffix = FORMATS.get(suffix)
+    if format is None:
+        if from_suffix is None:
+            shown = repr(suffix) if suffix else "no suffix"
+            raise ValueError(
+                f"{path}: unknown mesh format ({shown}); use a file ending in {known} "
+                "(any case) or pass format='obj' or format='off'"
+            )
+        return from_suffix
+    if not isinstance(format, str) or format.lower().lstrip(".") not in FORMATS.values():
+        raise ValueError(f"unknown mesh format {format!r}; known formats: obj, off")
+    chosen = format.lower().lstrip(".")
+    if from_suffix is not None and from_suffix != chosen:
+        raise ValueError(f"{path}: the name ends in {suffix!r} but format={format!r} was asked for")
+    return chosen
+
+
+def read(path: str | os.PathLike, format: str | None = None) -> Mesh:
+    """Read a mesh from an OBJ or OFF file.
+
+    Parameters
+    ----------
+    path : str or path-like
+    format : {"obj", "off"}, optional
+        The file's format; default: from the suffix of ``path`` (``.obj`` or
+        ``.off``, any case).
 
     Raises
     ------
@@ -28,31 +69,40 @@ def read(path: str | os.PathLike) -> Mesh:
         whose mesh is not a closed manifold raises the mesh's own error,
         prefixed with the file name.
     ValueError
-        An unknown file ending.
+        An unknown suffix (without ``format``) or format.
     """
     path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix == ".obj":
-        return read_obj(path)
-    if suffix == ".off":
-        return read_off(path)
-    raise ValueError(f"{path}: unknown mesh format {suffix!r}; use .obj or .off")
+    return read_obj(path) if _format(path, format) == "obj" else read_off(path)
 
 
-def write(mesh: Mesh, path: str | os.PathLike) -> None:
-    """Write ``mesh`` to an ``.obj`` or ``.off`` file (chosen by the ending).
+def write(mesh: Mesh, path: str | os.PathLike, format: str | None = None) -> None:
+    """Write ``mesh`` to exactly ``path``, as OBJ or OFF.
 
+    Parameters
+    ----------
+    mesh : Mesh
+    path : str or path-like
+        The file to write; its name is used as given.
+    format : {"obj", "off"}, optional
+        The format; default: from the suffix of ``path`` (``.obj`` or
+        ``.off``, any case).  Needed for any other name (``model.v2``).
+
+    Raises
+    ------
+    ValueError
+        Before anything is written: a suffix that names no format and no
+        ``format`` (the message names the suffix and the known ones), an
+        unknown ``format``, or a ``format`` that contradicts the suffix.
+    TypeError
+        ``mesh`` is not a :class:`~pentanb.Mesh`.
+
+    Notes
+    -----
     The file is written to a temporary name first and renamed, so a failure
     leaves nothing half-written.
     """
     path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix == ".obj":
-        text = _obj_text(mesh)
-    elif suffix == ".off":
-        text = _off_text(mesh)
-    else:
-        raise ValueError(f"{path}: unknown mesh format {suffix!r}; use .obj or .off")
+    text = _text(mesh, _format(path, format))
     tmp = path.with_name(path.name + ".part")
     try:
         tmp.write_text(text)
@@ -62,14 +112,26 @@ def write(mesh: Mesh, path: str | os.PathLike) -> None:
             tmp.unlink()
 
 
-def write_obj(mesh: Mesh, path) -> None:
-    """Write an OBJ file (``v`` and ``f`` lines, 1-based indices)."""
-    write(mesh, Path(path).with_suffix(".obj") if Path(path).suffix.lower() != ".obj" else path)
+def write_obj(mesh: Mesh, path: str | os.PathLike) -> None:
+    """Write an OBJ file (``v`` and ``f`` lines, 1-based indices) to exactly ``path``.
+
+    A name ending in ``.off`` is refused (ValueError).
+    """
+    write(mesh, path, format="obj")
 
 
-def write_off(mesh: Mesh, path) -> None:
-    """Write an OFF file."""
-    write(mesh, Path(path).with_suffix(".off") if Path(path).suffix.lower() != ".off" else path)
+def write_off(mesh: Mesh, path: str | os.PathLike) -> None:
+    """Write an OFF file to exactly ``path``.
+
+    A name ending in ``.obj`` is refused (ValueError).
+    """
+    write(mesh, path, format="off")
+
+
+def _text(mesh: Mesh, format: str) -> str:
+    if not isinstance(mesh, Mesh):
+        raise TypeError(f"write expects a pentanb.Mesh, got {type(mesh).__name__}")
+    return _obj_text(mesh) if format == "obj" else _off_text(mesh)
 
 
 def _fmt_vertices(v: np.ndarray, prefix: str) -> list[str]:
@@ -106,7 +168,7 @@ def _mesh_or_error(path, vertices, faces) -> Mesh:
         raise MeshError(f"{path}: {exc}") from None
 
 
-def read_obj(path) -> Mesh:
+def read_obj(path: str | os.PathLike) -> Mesh:
     """Read an OBJ file: ``v`` and ``f`` lines; ``f 1/2/3`` and negative
     (relative) indices are understood; all other lines are skipped."""
     vertices: list[list[float]] = []
@@ -160,7 +222,7 @@ def read_obj(path) -> Mesh:
     return _mesh_or_error(path, vertices, faces)
 
 
-def read_off(path) -> Mesh:
+def read_off(path: str | os.PathLike) -> Mesh:
     """Read an OFF file (header ``OFF``, counts, vertices, then ``k i1 .. ik`` faces)."""
     with open(path) as fh:
         lines = [(n, l.split("#", 1)[0].split()) for n, l in enumerate(fh, 1)]

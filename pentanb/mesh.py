@@ -8,22 +8,36 @@ share this one structure.
 A *half-edge* is a corner: half-edge ``h`` runs from ``corners[h]`` to the
 next corner of its face.  Everything else (``next``, ``prev``, ``twin``, edge
 ids, the rotation around a vertex) is derived from ``corners`` and
-``offsets`` with whole-array numpy expressions and cached; the mesh is
-immutable, so nothing needs invalidating.
+``offsets`` with whole-array numpy expressions, on first use, and cached.
+
+A :class:`Mesh` is sealed: no attribute can be set, replaced or deleted, and
+every array it hands out is read-only, so nothing it has cached can go
+stale.  What depends on the faces alone is kept in one connectivity record
+shared by the meshes with the same faces (:meth:`Mesh.with_vertices`, the
+dual of a dual), so it is derived once for all of them.
+
+Operators build their outputs, valid by construction, through one internal
+constructor, ``Mesh._new(vertices, corners, offsets, *, twin=None,
+rings=None, dual_of=None)``: the arrays they know about their output (the
+twins, the vertex rings) are handed over as arrays or as zero-argument
+producers run on first use, and the dual names the mesh it is the dual of.
+This module is the only code that touches a mesh's caches.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from functools import cached_property
+from collections.abc import Callable, Sequence
+from typing import Any, Generic, TypeVar, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["Mesh", "MeshError"]
+__all__ = ["Mesh", "MeshError", "fan_triangle_corners"]
 
 IntArray = NDArray[np.int64]
 FloatArray = NDArray[np.float64]
+Rings = tuple[IntArray, IntArray]
+_T = TypeVar("_T")
 
 
 class MeshError(ValueError):
@@ -37,6 +51,88 @@ class MeshError(ValueError):
 def _readonly(a: np.ndarray) -> np.ndarray:
     a.setflags(write=False)
     return a
+
+
+def _frozen(value: Any) -> Any:
+    """``value`` with every array in it made read-only (arrays, tuples of arrays)."""
+    if isinstance(value, np.ndarray):
+        return _readonly(value)
+    if isinstance(value, tuple):
+        return tuple(_frozen(x) for x in value)
+    return value
+
+
+class _Connectivity:
+    """The faces of a mesh and everything derived from them alone.
+
+    Shared by every mesh with these faces (:meth:`Mesh.with_vertices`, the
+    dual of a dual), so each array is derived once for all of them.
+
+    Attributes
+    ----------
+    corners, offsets : read-only int arrays
+        The faces in CSR form.
+    values : dict
+        Derived arrays (read-only) and numbers, by property name.
+    producers : dict
+        Zero-argument callables an operator handed over to write a derived
+        array on first use (see :meth:`Mesh._new`); each runs at most once
+        and is then dropped.
+    """
+
+    __slots__ = ("corners", "offsets", "values", "producers")
+
+    def __init__(self, corners: IntArray, offsets: IntArray) -> None:
+        self.corners = corners
+        self.offsets = offsets
+        self.values: dict[str, Any] = {}
+        self.producers: dict[str, Callable[[], Any]] = {}
+
+
+class _Derived(Generic[_T]):
+    """A read-only property of a mesh computed on first use and cached.
+
+    With ``connectivity=True`` the value depends on the faces alone and is
+    kept in the mesh's shared :class:`_Connectivity`; an operator may have
+    handed over a producer for it, which then replaces the computation.
+    Otherwise (positions are involved) it is kept by the mesh itself.
+    """
+
+    def __init__(self, func: Callable[[Mesh], _T], connectivity: bool) -> None:
+        self.func = func
+        self.name = func.__name__
+        self.connectivity = connectivity
+        self.__doc__ = func.__doc__
+
+    @overload
+    def __get__(self, mesh: None, owner: type | None = None) -> _Derived[_T]: ...
+
+    @overload
+    def __get__(self, mesh: Mesh, owner: type | None = None) -> _T: ...
+
+    def __get__(self, mesh: Mesh | None, owner: type | None = None) -> _T | _Derived[_T]:
+        if mesh is None:
+            return self
+        shared = mesh._shared
+        store = shared.values if self.connectivity else mesh._own
+        try:
+            return store[self.name]
+        except KeyError:
+            pass
+        producer = shared.producers.pop(self.name, None) if self.connectivity else None
+        value = self.func(mesh) if producer is None else _frozen(producer())
+        store[self.name] = value
+        return value
+
+
+def _connectivity(func: Callable[[Mesh], _T]) -> _Derived[_T]:
+    """Decorator: a cached property that depends on the faces alone."""
+    return _Derived(func, connectivity=True)
+
+
+def _geometry(func: Callable[[Mesh], _T]) -> _Derived[_T]:
+    """Decorator: a cached property that depends on the vertex positions."""
+    return _Derived(func, connectivity=False)
 
 
 class Mesh:
@@ -64,9 +160,17 @@ class Mesh:
 
     Notes
     -----
-    Operators (:func:`pentanb.dual`, :func:`pentanb.pentagonalize`, ...)
-    build their outputs valid by construction through :meth:`from_csr` with
-    ``validate=False`` and often hand over the twin array they already know.
+    A mesh is sealed: setting, replacing or deleting any attribute raises
+    AttributeError, and every array it hands out is read-only.  The
+    constructor and :meth:`from_csr` copy their inputs, so changing the
+    caller's arrays afterwards cannot change the mesh.  New positions:
+    :meth:`with_vertices`; new faces: an operator (:func:`pentanb.dual`,
+    :func:`pentanb.pentagonalize`, ...), which builds its output valid by
+    construction, without re-validation.
+
+    Meshes pickle and copy (:mod:`pickle`, :func:`copy.deepcopy`): the
+    positions, the faces and the twins and vertex rings an operator handed
+    over are kept; everything else is derived again on first use.
 
     Examples
     --------
@@ -75,9 +179,28 @@ class Mesh:
     ...                  [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]])
     >>> m.n_vertices, m.n_edges, m.n_faces, m.genus
     (4, 6, 4, 0)
+    >>> m.vertices[0, 0] = 5.0
+    Traceback (most recent call last):
+    ...
+    ValueError: assignment destination is read-only
     """
 
-    __slots__ = ("_vertices", "_corners", "_offsets", "__dict__")
+    __slots__ = (
+        "_vertices",
+        "_corners",
+        "_offsets",
+        "_shared",
+        "_own",
+        "_dual_source",
+        "__weakref__",
+    )
+
+    _vertices: FloatArray
+    _corners: IntArray
+    _offsets: IntArray
+    _shared: _Connectivity
+    _own: dict[str, Any]
+    _dual_source: _Connectivity | None
 
     def __init__(self, vertices: ArrayLike, faces: ArrayLike | Sequence[Sequence[int]]):
         v = _as_vertices(vertices)
@@ -85,13 +208,116 @@ class Mesh:
         self._init(v, corners, offsets)
         self._validate()
 
+    # ------------------------------------------------------------------ sealing
+    def __setattr__(self, name: str, value: object) -> None:
+        raise AttributeError(
+            f"cannot set {name!r}: a Mesh is immutable (use mesh.with_vertices(...) "
+            "for new positions; operators build new meshes)"
+        )
+
+    def __delattr__(self, name: str) -> None:
+        raise AttributeError(f"cannot delete {name!r}: a Mesh is immutable")
+
     # ------------------------------------------------------------------ construction
-    def _init(self, vertices, corners, offsets, twin=None):
-        self._vertices = _readonly(vertices)
-        self._corners = _readonly(corners)
-        self._offsets = _readonly(offsets)
-        if twin is not None:
-            self.__dict__["twin"] = _readonly(twin)
+    def _init(
+        self,
+        vertices: np.ndarray,
+        corners: np.ndarray,
+        offsets: np.ndarray,
+        *,
+        twin: IntArray | Callable[[], IntArray] | None = None,
+        rings: Rings | Callable[[], Rings] | None = None,
+        dual_of: Mesh | None = None,
+        shared: _Connectivity | None = None,
+    ) -> None:
+        """Initialise a new mesh: every mesh with vertices is set up here, once.
+
+        The arrays are taken as they are (no copy) and made read-only: the
+        caller hands over arrays nobody else holds (or read-only arrays of
+        another mesh).  Nothing is checked; :meth:`__init__` and
+        :meth:`from_csr` validate afterwards.
+
+        Parameters
+        ----------
+        vertices : (n, 3) float
+        corners : (H,) int
+        offsets : (m + 1,) int
+        twin : (H,) int, or a zero-argument callable returning it, optional
+            The output's twins, when the caller knows them; a callable runs
+            when the twins are first asked for.
+        rings : ((H,) int, (n + 1,) int), or a callable returning them, optional
+            The vertex rings (see :attr:`vertex_ring`), likewise.
+        dual_of : Mesh, optional
+            The mesh this one is the dual of: the dual of this mesh then
+            reuses that mesh's connectivity (see :meth:`_dual_again`).
+        shared : _Connectivity, optional
+            The connectivity record of another mesh with these very faces
+            (``corners`` and ``offsets`` must be its arrays): what it has
+            derived is shared.
+        """
+        if hasattr(self, "_vertices"):
+            raise AttributeError("a Mesh is initialised once: meshes are immutable")
+        if shared is None:
+            shared = _Connectivity(_readonly(corners), _readonly(offsets))
+            if twin is not None:
+                if callable(twin):
+                    shared.producers["twin"] = twin
+                else:
+                    shared.values["twin"] = _readonly(twin)
+            if rings is not None:
+                if callable(rings):
+                    shared.producers["vertex_ring"] = rings
+                else:
+                    shared.values["vertex_ring"] = _frozen(tuple(rings))
+        elif corners is not shared.corners or offsets is not shared.offsets:
+            raise ValueError("shared connectivity needs the very corners and offsets it holds")
+        elif twin is not None or rings is not None:
+            raise ValueError("twin and rings come with the shared connectivity")
+        init = object.__setattr__
+        init(self, "_vertices", _readonly(vertices))
+        init(self, "_corners", shared.corners)
+        init(self, "_offsets", shared.offsets)
+        init(self, "_shared", shared)
+        init(self, "_own", {})
+        init(self, "_dual_source", None if dual_of is None else dual_of._shared)
+
+    @classmethod
+    def _new(
+        cls,
+        vertices: np.ndarray,
+        corners: np.ndarray,
+        offsets: np.ndarray,
+        *,
+        twin: IntArray | Callable[[], IntArray] | None = None,
+        rings: Rings | Callable[[], Rings] | None = None,
+        dual_of: Mesh | None = None,
+        shared: _Connectivity | None = None,
+    ) -> Mesh:
+        """The internal constructor: a mesh from arrays the package itself made.
+
+        No validation and no copy (the arrays become the mesh's, read-only);
+        operators use it for outputs that are valid by construction.  The
+        arguments are those of :meth:`_init`.
+        """
+        self = object.__new__(cls)
+        self._init(
+            vertices, corners, offsets, twin=twin, rings=rings, dual_of=dual_of, shared=shared
+        )
+        return self
+
+    def _dual_again(self) -> Mesh | None:
+        """The dual of this mesh when it was built as the dual of a mesh M, else None.
+
+        Its faces are M's faces, in M's order (the dual of a dual gives back
+        the connectivity), so M's connectivity record is shared, with all M
+        has derived; its vertices are this mesh's face centroids.
+        """
+        source = self._dual_source
+        if source is None:
+            return None
+        return Mesh._new(
+            self.face_centroids, source.corners, source.offsets, shared=source, dual_of=self
+        )
 
     @classmethod
     def from_csr(
@@ -113,59 +339,66 @@ class Mesh:
         offsets : (m + 1,) int
             Face ``f`` is ``corners[offsets[f]:offsets[f + 1]]``; ``offsets[0] == 0``.
         twin : (H,) int, optional
-            The opposite half-edge of each half-edge, when the caller knows it.
+            The opposite half-edge of each half-edge, when the caller knows
+            it (used only without validation, which derives the twins itself).
         validate : bool
-            Check the mesh (as the constructor does), on copies of the
-            arrays.  Operators pass False: their outputs are valid by
-            construction.  Without validation the arrays are used as they are
-            (read-only views, no copy): changing them afterwards changes the
-            mesh.
+            Check the mesh, as the constructor does.  With False the arrays
+            are trusted as they are: nothing but the shape of ``vertices``
+            is checked, and a mesh that is not a closed oriented manifold
+            gives wrong results or errors later (the operators refuse what
+            they cannot handle, e.g. :func:`pentanb.dual` a vertex with
+            fewer than 3 edges).  For speed only, on arrays known to be good.
+
+        Notes
+        -----
+        The arrays are always copied (a copy costs little next to deriving
+        the half-edges): the mesh never aliases, nor freezes, the caller's
+        arrays, so changing them afterwards cannot change the mesh.
         """
-        self = object.__new__(cls)
         if validate:
             v = _as_vertices(vertices)
             c = np.array(corners, dtype=np.int64).ravel()  # copies: the caller's
             o = np.array(offsets, dtype=np.int64).ravel()  # arrays stay theirs
             if o.size == 0 or o[0] != 0 or o[-1] != c.size or np.any(np.diff(o) < 0):
                 raise MeshError("offsets must start at 0, rise, and end at len(corners)")
-            self._init(v, c, o)
+            self = cls._new(v, c, o)
             self._validate()
-        else:
-            # read-only views: no copy, and the caller's own arrays keep their flags
-            self._init(
-                np.asarray(vertices, dtype=np.float64).view(),
-                np.asarray(corners, dtype=np.int64).view(),
-                np.asarray(offsets, dtype=np.int64).view(),
-                None if twin is None else np.asarray(twin, dtype=np.int64).view(),
-            )
-        return self
+            return self
+        v = np.array(vertices, dtype=np.float64)
+        if v.ndim != 2 or v.shape[1] != 3:
+            raise MeshError(f"vertices must be an (n, 3) array, got shape {v.shape}")
+        return cls._new(
+            v,
+            np.array(corners, dtype=np.int64).ravel(),
+            np.array(offsets, dtype=np.int64).ravel(),
+            twin=None if twin is None else np.array(twin, dtype=np.int64).ravel(),
+        )
 
     def with_vertices(self, vertices: ArrayLike) -> Mesh:
-        """The same connectivity with other vertex positions (``(n, 3)`` float)."""
+        """The same connectivity with other vertex positions (``(n, 3)`` float).
+
+        The faces and everything derived from them alone are shared with
+        this mesh (nothing is derived twice); ``vertices`` is copied.
+        """
         v = _as_vertices(vertices)
         if v.shape != self._vertices.shape:
             raise MeshError(f"expected {self._vertices.shape} vertices, got {v.shape}")
-        return self._connectivity()._placed(v)
+        return type(self)._new(v, self._corners, self._offsets, shared=self._shared)
 
-    def _connectivity(self) -> Mesh:
-        """A vertex-less shell sharing this mesh's faces and cached connectivity."""
-        shell = object.__new__(Mesh)
-        shell._vertices = None
-        shell._corners = self._corners
-        shell._offsets = self._offsets
-        for key in _CONNECTIVITY_CACHE[:-1]:  # not _dual_source: no chains
-            if key in self.__dict__:
-                shell.__dict__[key] = self.__dict__[key]
-        return shell
+    # ------------------------------------------------------------------ pickling
+    def __reduce__(self) -> tuple[Callable[..., Mesh], tuple[Any, ...]]:
+        """Pickle (and copy) as the arrays plus the twins and rings already known.
 
-    def _placed(self, vertices: np.ndarray) -> Mesh:
-        """This mesh's connectivity (and its caches) with the given positions."""
-        out = object.__new__(Mesh)
-        out._init(vertices, self._corners, self._offsets)
-        for key in _CONNECTIVITY_CACHE:
-            if key in self.__dict__:
-                out.__dict__[key] = self.__dict__[key]
-        return out
+        A producer an operator handed over is run now (no callable is
+        pickled); other derived arrays are derived again after loading.
+        """
+        shared = self._shared
+        known = {
+            name: getattr(self, name)
+            for name in ("twin", "vertex_ring")
+            if name in shared.values or name in shared.producers
+        }
+        return (_rebuild, (self._vertices, self._corners, self._offsets, known))
 
     # ------------------------------------------------------------------ raw arrays
     @property
@@ -183,10 +416,10 @@ class Mesh:
         """(m + 1,) int: face ``f`` is ``corners[offsets[f]:offsets[f+1]]``."""
         return self._offsets
 
-    @cached_property
-    def faces(self) -> list[IntArray]:
-        """(m,) list of int arrays: the vertex indices of every face."""
-        return np.split(self._corners, self._offsets[1:-1])
+    @_connectivity
+    def faces(self) -> tuple[IntArray, ...]:
+        """(m,) tuple of int arrays: the vertex indices of every face (read-only views)."""
+        return tuple(np.split(self._corners, self._offsets[1:-1]))
 
     # ------------------------------------------------------------------ counts
     @property
@@ -209,12 +442,12 @@ class Mesh:
         """Number of edges E (= H / 2 on a closed mesh)."""
         return int(self._corners.size // 2)
 
-    @cached_property
+    @_connectivity
     def face_sizes(self) -> IntArray:
         """(m,) int: number of sides of every face."""
         return _readonly(np.diff(self._offsets))
 
-    @cached_property
+    @_connectivity
     def valences(self) -> IntArray:
         """(n,) int: number of edges at every vertex."""
         return _readonly(np.bincount(self._corners, minlength=self.n_vertices))
@@ -224,7 +457,7 @@ class Mesh:
         """V - E + F."""
         return self.n_vertices - self.n_edges + self.n_faces
 
-    @cached_property
+    @_connectivity
     def n_components(self) -> int:
         """Number of connected components."""
         return int(np.unique(self.component_labels).size)
@@ -264,19 +497,28 @@ class Mesh:
         return f"Mesh(V={self.n_vertices}, E={self.n_edges}, F={self.n_faces}, faces={{{hist}}})"
 
     # ------------------------------------------------------------------ half-edges
-    @cached_property
+    @_connectivity
     def halfedge_face(self) -> IntArray:
         """(H,) int: the face of every half-edge."""
         return _readonly(np.repeat(np.arange(self.n_faces, dtype=np.int64), self.face_sizes))
 
-    @cached_property
+    @_connectivity
+    def halfedge_slot(self) -> IntArray:
+        """(H,) int: the position of every half-edge in its face (0 at the face's first corner).
+
+        Half-edge ``h`` is ``offsets[halfedge_face[h]] + halfedge_slot[h]``.
+        """
+        h = np.arange(self.n_halfedges, dtype=np.int64)
+        return _readonly(h - self._offsets[:-1][self.halfedge_face])
+
+    @_connectivity
     def next(self) -> IntArray:
         """(H,) int: the next half-edge around the same face."""
         nxt = np.arange(1, self.n_halfedges + 1, dtype=np.int64)
         nxt[self._offsets[1:] - 1] = self._offsets[:-1]
         return _readonly(nxt)
 
-    @cached_property
+    @_connectivity
     def prev(self) -> IntArray:
         """(H,) int: the previous half-edge around the same face."""
         prv = np.arange(-1, self.n_halfedges - 1, dtype=np.int64)
@@ -288,21 +530,18 @@ class Mesh:
         """(H,) int: the vertex a half-edge leaves (= ``corners``)."""
         return self._corners
 
-    @cached_property
+    @_connectivity
     def head(self) -> IntArray:
-        """(H,) int: the vertex a half-edge reaches."""
+        """(H,) int: the vertex a half-edge reaches (``corners[next]``)."""
         return _readonly(self._corners[self.next])
 
-    @cached_property
+    @_connectivity
     def twin(self) -> IntArray:
         """(H,) int: the opposite half-edge (same edge, other face)."""
-        maker = self.__dict__.pop("_twin_maker", None)
-        if maker is not None:  # an operator that knows the twins, computed on demand
-            return _readonly(maker())
         twin, _ = _match_twins(self._corners, self.head, self.n_vertices)
         return _readonly(twin)
 
-    @cached_property
+    @_connectivity
     def halfedge_edge(self) -> IntArray:
         """(H,) int: the edge id of every half-edge.
 
@@ -313,18 +552,18 @@ class Mesh:
         ids = np.cumsum(primary) - 1
         return _readonly(np.where(primary, ids, ids[self.twin]))
 
-    @cached_property
+    @_connectivity
     def edge_halfedge(self) -> IntArray:
-        """(E,) int: for every edge, its half-edge with ``tail < head``."""
+        """(E,) int: for every edge, its half-edge with ``tail < head`` (each edge once)."""
         return _readonly(np.flatnonzero(self._corners < self.head))
 
-    @cached_property
+    @_connectivity
     def edges(self) -> IntArray:
         """(E, 2) int: the edges as (smaller, larger) vertex pairs."""
         h = self.edge_halfedge
         return _readonly(np.stack([self._corners[h], self.head[h]], axis=1))
 
-    @cached_property
+    @_connectivity
     def rotation(self) -> IntArray:
         """(H,) int: the next outgoing half-edge counter-clockwise around its tail.
 
@@ -332,21 +571,8 @@ class Mesh:
         """
         return _readonly(self.twin[self.prev])
 
-    @cached_property
-    def _rings(self) -> tuple[IntArray, IntArray]:
-        maker = self.__dict__.pop("_rings_maker", None)
-        if maker is not None:  # an operator that knows the rings, computed on demand
-            ring, off = maker()
-        else:
-            ring, off = _vertex_rings(self.rotation, self._corners, self.valences)
-        return _readonly(ring), _readonly(off)
-
-    def _set_rings(self, ring: np.ndarray, ring_offsets: np.ndarray) -> None:
-        """Cache vertex rings an operator wrote directly (see :attr:`vertex_ring`)."""
-        self.__dict__["_rings"] = (_readonly(ring), _readonly(ring_offsets))
-
-    @property
-    def vertex_ring(self) -> tuple[IntArray, IntArray]:
+    @_connectivity
+    def vertex_ring(self) -> Rings:
         """The outgoing half-edges of every vertex, counter-clockwise, in CSR form.
 
         Returns
@@ -356,10 +582,11 @@ class Mesh:
         ring_offsets : (n + 1,) int
             Vertex ``v``'s half-edges are ``ring[ring_offsets[v]:ring_offsets[v+1]]``.
         """
-        return self._rings
+        ring, off = _vertex_rings(self.rotation, self._corners, self.valences)
+        return _readonly(ring), _readonly(off)
 
     # ------------------------------------------------------------------ geometry
-    @cached_property
+    @_geometry
     def face_centroids(self) -> FloatArray:
         """(m, 3) float: the plain mean of each face's vertices."""
         return _readonly(self.face_means(self._vertices))
@@ -374,6 +601,7 @@ class Mesh:
         Returns
         -------
         (m,) or (m, d) float
+            A new array (the caller's to keep).
         """
         values = np.asarray(values, dtype=np.float64)
         cols = values.reshape(values.shape[0], -1).T
@@ -394,7 +622,7 @@ class Mesh:
         out /= k if uniform else self.face_sizes[:, None]
         return out.reshape((m,) + values.shape[1:])
 
-    @cached_property
+    @_geometry
     def face_normals(self) -> FloatArray:
         """(m, 3) float: unit normals (Newell's method; zero for degenerate faces)."""
         p = self._vertices[self._corners]
@@ -418,8 +646,8 @@ class Mesh:
 
     @property
     def bounds(self) -> FloatArray:
-        """(2, 3) float: the lower and upper corners of the bounding box."""
-        return np.stack([self._vertices.min(axis=0), self._vertices.max(axis=0)])
+        """(2, 3) float: the lower and upper corners of the bounding box (read-only)."""
+        return _readonly(np.stack([self._vertices.min(axis=0), self._vertices.max(axis=0)]))
 
     def fan_triangles(self) -> tuple[IntArray, IntArray]:
         """Fan triangulation of every face from its first corner (for drawing).
@@ -427,27 +655,27 @@ class Mesh:
         Returns
         -------
         triangles : (H - 2m, 3) int
-            Vertex indices, counter-clockwise like their faces.
+            Vertex indices, counter-clockwise like their faces: triangle
+            ``k`` of face ``f`` is its corners ``0, k + 1, k + 2``.
         triangle_face : (H - 2m,) int
             The face each triangle comes from.
+
+        See Also
+        --------
+        fan_triangle_corners : the same triangles as corner indices.
         """
-        sizes = self.face_sizes
-        tri_face = np.repeat(np.arange(self.n_faces, dtype=np.int64), sizes - 2)
-        start = self._offsets[:-1][tri_face]
-        # k-th triangle of a face: corners 0, k+1, k+2
-        first = np.cumsum(sizes - 2) - (sizes - 2)
-        k = np.arange(tri_face.size, dtype=np.int64) - first[tri_face]
-        tris = np.stack(
-            [self._corners[start], self._corners[start + k + 1], self._corners[start + k + 2]],
-            axis=1,
-        )
-        return tris, tri_face
+        return self._fan
+
+    @_connectivity
+    def _fan(self) -> tuple[IntArray, IntArray]:
+        tri_corners, tri_face = fan_triangle_corners(self._offsets)
+        return _readonly(self._corners[tri_corners]), tri_face
 
     def component_labels_of_faces(self) -> IntArray:
-        """(m,) int: the component label of every face."""
-        return self.component_labels[self._corners[self._offsets[:-1]]]
+        """(m,) int: the component label of every face (read-only)."""
+        return _readonly(self.component_labels[self._corners[self._offsets[:-1]]])
 
-    @cached_property
+    @_connectivity
     def component_labels(self) -> IntArray:
         """(n,) int: a component label (its smallest vertex index) per vertex.
 
@@ -520,7 +748,7 @@ class Mesh:
                 f"edge ({u}, {w}) of face {int(fid[h])} has only one side "
                 "(a boundary): the mesh must be closed"
             )
-        self.__dict__["twin"] = _readonly(twin)
+        self._shared.values["twin"] = _readonly(twin)
         unused = np.flatnonzero(self.valences == 0)
         if unused.size:
             raise MeshError(
@@ -550,33 +778,11 @@ class Mesh:
                 f"share more than one edge ({e1} and {e2}); the dual would "
                 "have a double edge"
             )
-        ring, _ = self._rings
+        ring, _ = self.vertex_ring
         if not np.array_equal(np.sort(ring), np.arange(c.size)):
             # a vertex whose rotation orbit is shorter than its valence
             bad_v = _multi_fan_vertex(self.rotation, c, self.valences)
             raise MeshError(f"vertex {bad_v} is non-manifold: its faces form more than one fan")
-
-
-_CONNECTIVITY_CACHE = (
-    "faces",
-    "face_sizes",
-    "valences",
-    "n_components",
-    "halfedge_face",
-    "next",
-    "prev",
-    "head",
-    "twin",
-    "halfedge_edge",
-    "edge_halfedge",
-    "edges",
-    "rotation",
-    "_rings",
-    "component_labels",
-    "_twin_maker",
-    "_rings_maker",
-    "_dual_source",
-)
 
 
 # ---------------------------------------------------------------------- helpers
@@ -593,7 +799,7 @@ def _as_vertices(vertices: ArrayLike) -> FloatArray:
     return v
 
 
-def _as_csr(faces) -> tuple[IntArray, IntArray]:
+def _as_csr(faces: Any) -> tuple[IntArray, IntArray]:
     if isinstance(faces, np.ndarray) and faces.ndim == 2:
         if faces.dtype.kind not in "iu":
             whole = (
@@ -619,11 +825,12 @@ def _as_csr(faces) -> tuple[IntArray, IntArray]:
     if not isinstance(faces, np.ndarray) and len(faces) and len({len(f) for f in faces}) == 1:
         # a list of faces of one size: one array conversion instead of one per face
         try:
-            arr = np.array(faces)
+            same = np.array(faces)
         except (TypeError, ValueError):
-            arr = None
-        if arr is not None and arr.ndim == 2 and arr.dtype.kind in "iuf":
-            return _as_csr(arr)
+            pass
+        else:
+            if same.ndim == 2 and same.dtype.kind in "iuf":
+                return _as_csr(same)
     sizes = []
     flat = []
     for f, face in enumerate(faces):
@@ -723,3 +930,42 @@ def _multi_fan_vertex(rotation, tail, valences) -> int:
         closed_at[newly] = k
     bad = np.flatnonzero((closed_at < valences) & (valences > 0))
     return int(bad[0]) if bad.size else -1
+
+
+def _rebuild(
+    vertices: np.ndarray, corners: np.ndarray, offsets: np.ndarray, known: dict[str, Any]
+) -> Mesh:
+    """Unpickle (or copy) a mesh: see :meth:`Mesh.__reduce__`."""
+    return Mesh._new(
+        vertices, corners, offsets, twin=known.get("twin"), rings=known.get("vertex_ring")
+    )
+
+
+def fan_triangle_corners(offsets: ArrayLike) -> tuple[IntArray, IntArray]:
+    """Fan triangulation of CSR polygons, as corner indices (for drawing).
+
+    Parameters
+    ----------
+    offsets : (m + 1,) int
+        Polygon ``f`` has corners ``offsets[f]`` to ``offsets[f + 1] - 1``.
+
+    Returns
+    -------
+    triangles : (T, 3) int
+        Triangle ``k`` of polygon ``f`` is corners ``(o, o + k + 1, o + k + 2)``
+        with ``o = offsets[f]``, counter-clockwise like the polygon;
+        ``T = offsets[-1] - 2m``.
+    triangle_face : (T,) int
+        The polygon each triangle comes from.
+
+    See Also
+    --------
+    Mesh.fan_triangles : the same triangles as vertex indices.
+    """
+    offsets = np.asarray(offsets, dtype=np.int64)
+    per = np.maximum(np.diff(offsets) - 2, 0)
+    tri_face = np.repeat(np.arange(per.size, dtype=np.int64), per)
+    start = offsets[:-1][tri_face]
+    k = np.arange(tri_face.size, dtype=np.int64) - (np.cumsum(per) - per)[tri_face]
+    tris = np.stack([start, start + k + 1, start + k + 2], axis=1)
+    return _readonly(tris), _readonly(tri_face)

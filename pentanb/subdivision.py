@@ -13,8 +13,9 @@ import sys
 from collections.abc import Callable
 
 from .mesh import Mesh, MeshError
+from .schemes._build import check_count, check_mesh
 from .schemes.registry import SCHEMES, Counts, Scheme, get_scheme
-from .schemes.smoothing import _check_count, dual
+from .schemes.smoothing import dual
 
 __all__ = [
     "subdivide",
@@ -57,7 +58,11 @@ def predict_counts(
 
 
 def max_iterations(
-    mesh_or_counts, scheme: str | Scheme, duals: int = 2, max_faces: int = 100_000, cap: int = 8
+    mesh_or_counts: Mesh | Counts,
+    scheme: str | Scheme,
+    duals: int = 2,
+    max_faces: int = 100_000,
+    cap: int = 8,
 ) -> int:
     """The most iterations of ``scheme`` whose meshes all stay within ``max_faces``.
 
@@ -83,7 +88,7 @@ def max_iterations(
     counts = (
         mesh_or_counts
         if isinstance(mesh_or_counts, tuple)
-        else (mesh_or_counts.n_vertices, mesh_or_counts.n_edges, mesh_or_counts.n_faces)
+        else _vef(check_mesh(mesh_or_counts, "max_iterations"))
     )
     steps = predict_counts(counts, scheme, cap, duals)
     per_iteration = 1 + duals
@@ -91,6 +96,10 @@ def max_iterations(
         if max(F for _, _, F in steps[k * per_iteration : (k + 1) * per_iteration]) > max_faces:
             return k
     return cap
+
+
+def _vef(mesh: Mesh) -> Counts:
+    return mesh.n_vertices, mesh.n_edges, mesh.n_faces
 
 
 def estimate_bytes(V: int, E: int, F: int) -> int:
@@ -155,16 +164,17 @@ def subdivide(
         When the result would not fit in ``max_bytes``; the message gives
         the number of faces and bytes it would need.
     """
+    check_mesh(mesh, "subdivide")
     s = get_scheme(scheme)
-    iterations = _check_count(iterations, "iterations")
-    duals = _check_count(duals, "duals")
+    iterations = check_count(iterations, "iterations")
+    duals = check_count(duals, "duals")
     if isinstance(s, Scheme):
         unknown = set(options) - set(s.options)
         if unknown:
             takes = ", ".join(s.options) or "no options"
             raise ValueError(f"scheme {s.name!r} takes {takes}; got {sorted(unknown)}")
         limit = default_max_bytes() if max_bytes is None else int(max_bytes)
-        steps = predict_counts((mesh.n_vertices, mesh.n_edges, mesh.n_faces), s, iterations, duals)
+        steps = predict_counts(_vef(mesh), s, iterations, duals)
         if steps:
             V, E, F = max(steps, key=lambda c: estimate_bytes(*c))
             need = estimate_bytes(V, E, F)

@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import operator
 from fractions import Fraction
 from typing import NamedTuple
 
@@ -90,8 +91,8 @@ def _as_int(name: str, value: object, minimum: int) -> int:
         raise ValueError(f"{name} must be an integer, got {value!r}")
     if isinstance(value, numbers.Integral):
         out = int(value)
-    elif isinstance(value, numbers.Real) and math.isfinite(value) and value == int(value):
-        out = int(value)
+    elif isinstance(value, numbers.Real) and math.isfinite(value) and value == math.floor(value):
+        out = operator.index(math.floor(value))
     else:
         raise ValueError(f"{name} must be an integer, got {value!r}")
     if out < minimum:

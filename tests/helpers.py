@@ -8,6 +8,7 @@ have their own tests in ``tests/test_helpers.py``.
 from __future__ import annotations
 
 import functools
+import inspect
 from collections import Counter
 from collections.abc import Callable
 
@@ -238,6 +239,7 @@ def check_valid(out: Mesh) -> None:
     assert out.vertices.shape == (out.n_vertices, 3)
     assert np.isfinite(out.vertices).all()
     assert out.offsets[0] == 0 and out.offsets[-1] == out.corners.size
+    check_sealed(out)
     rebuilt = Mesh(out.vertices, face_lists(out))  # raises MeshError when invalid
     _, _, _, twin = darts(face_lists(out))
     assert out.twin.tolist() == twin
@@ -264,6 +266,76 @@ def check_valid(out: Mesh) -> None:
         assert same_faces_up_to_rotation(
             [ring[off[v] : off[v + 1]].tolist()], [ring2[off[v] : off[v + 1]].tolist()]
         ), v
+
+
+def handed_out_arrays(m: Mesh) -> dict[str, np.ndarray]:
+    """Every array a mesh hands out, by where it came from.
+
+    Found by introspection, so that a property or method added later is
+    covered too: every public attribute, and the result of every public
+    method that needs no argument, searched through tuples, lists and dicts.
+    """
+    found: dict[str, np.ndarray] = {}
+
+    def collect(label, value):
+        if isinstance(value, np.ndarray):
+            found[label] = value
+        elif isinstance(value, (tuple, list)):
+            for i, x in enumerate(value):
+                collect(f"{label}[{i}]", x)
+        elif isinstance(value, dict):
+            for k, x in value.items():
+                collect(f"{label}[{k!r}]", x)
+
+    for name in dir(m):
+        if name.startswith("_"):
+            continue
+        value = getattr(m, name)
+        if inspect.ismethod(value):
+            params = inspect.signature(value).parameters.values()
+            if any(
+                p.default is p.empty and p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)
+                for p in params
+            ):
+                continue  # needs an argument (from_csr, with_vertices, face_means)
+            value = value()
+            name += "()"
+        collect(name, value)
+    return found
+
+
+def check_sealed(m: Mesh) -> None:
+    """Assert that nothing about ``m`` can be changed from outside.
+
+    Setting or deleting any attribute (its own, or a new one) raises
+    AttributeError saying that meshes are immutable, and leaves the mesh
+    as it was; every array it hands out is read-only.
+    """
+    before = {k: a.copy() for k, a in handed_out_arrays(m).items()}
+    names = [n for n in dir(m) if not (n.startswith("__") and n.endswith("__"))] + ["foo"]
+    for name in names:
+        for attempt, args in ((setattr, (m, name, None)), (delattr, (m, name))):
+            try:
+                attempt(*args)
+            except AttributeError as exc:
+                assert "immutable" in str(exc), (name, str(exc))
+            else:
+                raise AssertionError(f"attribute {name!r} of a Mesh could be set or deleted")
+    after = handed_out_arrays(m)
+    assert sorted(after) == sorted(before)
+    writable = [k for k, a in after.items() if a.flags.writeable]
+    assert not writable, f"writable arrays handed out: {writable}"
+    for k, a in after.items():
+        assert np.array_equal(a, before[k]), k
+
+
+def same_mesh(a: Mesh, b: Mesh) -> None:
+    """Assert that two meshes are equal: positions bitwise, faces, twins and vertex rings."""
+    assert a.vertices.tobytes() == b.vertices.tobytes() and a.vertices.shape == b.vertices.shape
+    assert np.array_equal(a.corners, b.corners) and np.array_equal(a.offsets, b.offsets)
+    assert np.array_equal(a.twin, b.twin)
+    for x, y in zip(a.vertex_ring, b.vertex_ring):
+        assert np.array_equal(x, y)
 
 
 def same_faces_up_to_rotation(a: list[list[int]], b: list[list[int]]) -> bool:

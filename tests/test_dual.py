@@ -21,7 +21,16 @@ from helpers import (
     vertex_configurations,
 )
 
-from pentanb import Mesh, dual, pentagonalize, preserve_pentagons, shapes, smooth
+from pentanb import (
+    Mesh,
+    MeshError,
+    corner_cutting,
+    dual,
+    pentagonalize,
+    preserve_pentagons,
+    shapes,
+    smooth,
+)
 
 
 def test_dual_is_valid_with_right_twins(corpus_mesh):
@@ -154,6 +163,64 @@ def test_dual_leaves_input_unchanged(corpus_mesh):
 def test_dual_refuses_non_mesh():
     with pytest.raises(TypeError, match=r"dual expects a pentanb\.Mesh"):
         dual([[0, 0, 0]])
+
+
+def flat_pillow(n: int) -> Mesh:
+    """Two n-gons glued along their boundary: every vertex has 2 edges.
+
+    The constructor refuses it; only ``from_csr(validate=False)`` builds it.
+    """
+    t = 2 * np.pi * np.arange(n) / n
+    v = np.stack([np.cos(t), np.sin(t), np.zeros(n)], axis=1)
+    poly = np.arange(n)
+    return Mesh.from_csr(v, np.concatenate([poly, poly[::-1]]), [0, n, 2 * n], validate=False)
+
+
+def cube_with_a_vertex_on_an_edge() -> Mesh:
+    """The cube with vertex 8 inserted on edge (4, 6): vertex 8 has 2 edges."""
+    c = shapes.cube()
+    faces = []
+    for f in face_lists(c):
+        out = []
+        for x, y in zip(f, f[1:] + f[:1]):
+            out += [x, 8] if {x, y} == {4, 6} else [x]
+        faces.append(out)
+    v = np.concatenate([c.vertices, [(c.vertices[4] + c.vertices[6]) / 2]])
+    corners = np.concatenate(faces)
+    offsets = np.cumsum([0] + [len(f) for f in faces])
+    return Mesh.from_csr(v, corners, offsets, validate=False)
+
+
+@pytest.mark.parametrize("n", [3, 5, 6])
+def test_dual_refuses_the_flat_pillow(n):
+    # its dual would have n faces of 2 sides: refused, with the vertex named
+    with pytest.raises(
+        MeshError, match=rf"^dual: vertex 0 has only 2 edges \(and {n - 1} more such vertices\)"
+    ):
+        dual(flat_pillow(n))
+    with pytest.raises(MeshError, match=r"^corner_cutting: vertex 0 has only 2 edges"):
+        corner_cutting(flat_pillow(n))
+
+
+def test_dual_names_the_one_2_valent_vertex():
+    m = cube_with_a_vertex_on_an_edge()
+    with pytest.raises(MeshError, match="vertex 8 has only 2 edges"):
+        Mesh(m.vertices, face_lists(m))  # the constructor refuses it too
+    with pytest.raises(
+        MeshError,
+        match=r"^dual: vertex 8 has only 2 edges; its face in the result would have 2 sides",
+    ):
+        dual(m)
+    with pytest.raises(MeshError, match=r"^dual: vertex 8 has only 2 edges"):
+        smooth(m, 2)
+
+
+def test_dual_takes_what_the_check_lets_through():
+    # the same construction without the 2-valent vertex is dualised as usual
+    c = shapes.cube()
+    m = Mesh.from_csr(c.vertices, c.corners, c.offsets, validate=False)
+    check_valid(dual(m))
+    assert dual(m).face_size_histogram() == {3: 8}
 
 
 # ====================================================================== smooth

@@ -10,12 +10,14 @@ import numpy as np
 import pytest
 from helpers import (
     CORPUS_NAMES,
+    check_sealed,
     check_valid,
     corpus,
     cyclic_equal,
     darts,
     expected_counts,
     face_lists,
+    handed_out_arrays,
     is_isomorphic,
     kis,
     merge_faces,
@@ -24,6 +26,7 @@ from helpers import (
     prism,
     reflect,
     same_faces_up_to_rotation,
+    same_mesh,
     two_cubes,
     vertex_configurations,
 )
@@ -79,6 +82,46 @@ def test_check_valid_catches_an_invalid_mesh():
     m = Mesh.from_csr(c.vertices, c.corners, offsets, validate=False)
     with pytest.raises((MeshError, AssertionError)):
         check_valid(m)
+
+
+class _Leaky(Mesh):
+    """A mesh that lets attributes be set (what check_sealed must catch)."""
+
+    __slots__ = ("__dict__",)
+
+    def __setattr__(self, name, value):
+        object.__setattr__(self, name, value)
+
+
+def test_check_sealed_passes_a_mesh_and_catches_a_leaky_one():
+    c = shapes.cube()
+    check_sealed(c)
+    leaky = _Leaky.from_csr(c.vertices, c.corners, c.offsets)
+    with pytest.raises(AssertionError, match="could be set or deleted"):
+        check_sealed(leaky)
+
+
+def test_check_sealed_catches_a_writable_array():
+    m = shapes.cube().with_vertices(shapes.cube().vertices)
+    object.__setattr__(m, "_vertices", np.array(m.vertices))  # a bug: a writable array
+    with pytest.raises(AssertionError, match=r"writable arrays handed out: \['vertices'\]"):
+        check_sealed(m)
+
+
+def test_handed_out_arrays_finds_properties_and_argument_free_methods():
+    found = handed_out_arrays(shapes.cube())
+    for name in ("vertices", "twin", "faces[5]", "vertex_ring[1]", "fan_triangles()[0]", "bounds"):
+        assert name in found, name
+    assert not any(k.startswith(("face_means", "with_vertices", "from_csr")) for k in found)
+
+
+def test_same_mesh_sees_every_difference():
+    c = shapes.cube()
+    same_mesh(c, Mesh(c.vertices, face_lists(c)))
+    with pytest.raises(AssertionError):
+        same_mesh(c, c.with_vertices(np.nextafter(c.vertices, 2)))  # one ulp
+    with pytest.raises(AssertionError):  # the faces started at another corner
+        same_mesh(c, Mesh(c.vertices, [f[1:] + f[:1] for f in face_lists(c)]))
 
 
 def test_darts_by_hand():

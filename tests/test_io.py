@@ -80,12 +80,69 @@ def test_written_obj_is_one_based_and_off_has_counts(tmp_path):
     assert lines[2 + 8].split()[0] == "4"
 
 
-def test_write_obj_and_write_off_fix_the_suffix(tmp_path):
-    write_obj(shapes.cube(), tmp_path / "a.txt")
+def test_write_obj_and_write_off_write_exactly_the_path_given(tmp_path):
+    # the old write_obj(m, "model.v2") silently wrote model.obj
+    write_obj(shapes.cube(), tmp_path / "model.v2")
     write_off(shapes.cube(), tmp_path / "b.txt")
-    assert (tmp_path / "a.obj").exists() and (tmp_path / "b.off").exists()
-    assert face_lists(read_obj(tmp_path / "a.obj")) == face_lists(shapes.cube())
-    assert face_lists(read_off(tmp_path / "b.off")) == face_lists(shapes.cube())
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["b.txt", "model.v2"]
+    assert face_lists(read_obj(tmp_path / "model.v2")) == face_lists(shapes.cube())
+    assert face_lists(read_off(tmp_path / "b.txt")) == face_lists(shapes.cube())
+    assert (tmp_path / "model.v2").read_text().startswith("# pentanb")
+    assert (tmp_path / "b.txt").read_text().startswith("OFF\n")
+
+
+@pytest.mark.parametrize("fmt", ["obj", "off", "OBJ", ".off"])
+def test_write_and_read_with_an_explicit_format(tmp_path, fmt):
+    path = tmp_path / "model.v2"
+    write(shapes.dodecahedron(), path, format=fmt)
+    assert [p.name for p in tmp_path.iterdir()] == ["model.v2"]
+    back = read(path, format=fmt)
+    assert face_lists(back) == face_lists(shapes.dodecahedron())
+    assert back.vertices.tobytes() == shapes.dodecahedron().vertices.tobytes()
+    # the other format's reader refuses the file
+    other = "off" if fmt.lower().lstrip(".") == "obj" else "obj"
+    with pytest.raises(MeshError):
+        read(path, format=other)
+
+
+@pytest.mark.parametrize("name", ["model.v2", "model", "model.obj.bak", "model.stl"])
+def test_write_refuses_an_unknown_suffix_before_writing(tmp_path, name):
+    suffix = pathlib.Path(name).suffix
+    shown = repr(suffix) if suffix else "no suffix"
+    with pytest.raises(ValueError, match=re.escape(shown) + r".*\.obj, \.off"):
+        write(shapes.cube(), tmp_path / name)
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda p: write(shapes.cube(), p / "x.off", format="obj"),
+        lambda p: write(shapes.cube(), p / "x.OBJ", format="off"),
+        lambda p: write_obj(shapes.cube(), p / "x.off"),
+        lambda p: write_off(shapes.cube(), p / "x.obj"),
+    ],
+)
+def test_write_refuses_a_format_that_contradicts_the_suffix(tmp_path, call):
+    with pytest.raises(ValueError, match=r"the name ends in '\.(obj|off|OBJ)' but format="):
+        call(tmp_path)
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("fmt", ["stl", "", "objx", 3])
+def test_write_and_read_refuse_an_unknown_format(tmp_path, fmt):
+    with pytest.raises(ValueError, match=r"unknown mesh format .*known formats: obj, off"):
+        write(shapes.cube(), tmp_path / "x.obj", format=fmt)
+    assert list(tmp_path.iterdir()) == []
+    write(shapes.cube(), tmp_path / "x.obj")
+    with pytest.raises(ValueError, match=r"unknown mesh format .*known formats: obj, off"):
+        read(tmp_path / "x.obj", format=fmt)
+
+
+def test_write_refuses_a_non_mesh_before_writing(tmp_path):
+    with pytest.raises(TypeError, match=r"write expects a pentanb\.Mesh, got list"):
+        write([[0, 0, 0]], tmp_path / "x.obj")
+    assert list(tmp_path.iterdir()) == []
 
 
 # ====================================================================== OBJ reading

@@ -7,15 +7,18 @@ with x, y, z in {-1, 1} written as bits) or Euler's formula.
 
 from __future__ import annotations
 
+import copy
 import functools
 import operator
+import pickle
 import re
 
 import numpy as np
 import pytest
-from helpers import check_valid, corpus, face_lists, two_cubes
+from helpers import OPERATORS, check_sealed, check_valid, corpus, face_lists, same_mesh, two_cubes
 
-from pentanb import Mesh, MeshError, dual, pentagonalize, shapes
+from pentanb import Mesh, MeshError, dual, pentagonalize, shapes, subdivide
+from pentanb.mesh import fan_triangle_corners
 
 CUBE_FACES = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]
 
@@ -666,3 +669,233 @@ def test_from_csr_without_validation_leaves_the_callers_arrays_writable():
     assert v.flags.writeable and corners.flags.writeable and offsets.flags.writeable
     assert not m.vertices.flags.writeable and not m.corners.flags.writeable
     assert m.counts() == c.counts()
+
+
+def test_fan_triangle_corners_by_hand():
+    # a triangle, a pentagon, a quad: corners 0-2, 3-7, 8-11
+    tris, tf = fan_triangle_corners([0, 3, 8, 12])
+    assert tris.tolist() == [[0, 1, 2], [3, 4, 5], [3, 5, 6], [3, 6, 7], [8, 9, 10], [8, 10, 11]]
+    assert tf.tolist() == [0, 1, 1, 1, 2, 2]
+
+
+def test_fan_triangles_are_the_corner_fan_of_the_corners(corpus_mesh):
+    m = corpus_mesh
+    tris, tf = fan_triangle_corners(m.offsets)
+    assert np.array_equal(m.corners[tris], m.fan_triangles()[0])
+    assert np.array_equal(tf, m.fan_triangles()[1])
+
+
+def test_halfedge_slot_by_hand():
+    m = corpus("cube_split")  # sizes 5, 4, 5, 5, 4, 3 and 4 in some order
+    sizes = m.face_sizes.tolist()
+    assert m.halfedge_slot.tolist() == [j for k in sizes for j in range(k)]
+    h = np.arange(m.n_halfedges)
+    assert np.array_equal(m.offsets[m.halfedge_face] + m.halfedge_slot, h)
+
+
+# ====================================================================== sealed
+def meshes_of_every_origin() -> dict[str, Mesh]:
+    """A mesh made by every path that makes one (each built fresh: nothing derived yet)."""
+    c = shapes.cube()
+    m = Mesh(c.vertices, face_lists(c))
+    return {
+        "constructor": m,
+        "from_csr": Mesh.from_csr(c.vertices, c.corners, c.offsets),
+        "from_csr unvalidated": Mesh.from_csr(c.vertices, c.corners, c.offsets, validate=False),
+        "with_vertices": m.with_vertices(2 * c.vertices),
+        **{name: op(m) for name, op in OPERATORS.items()},
+        "dual of dual": dual(dual(m)),
+        "dual of dual of pentagonalize": dual(dual(pentagonalize(m))),
+        "subdivide": subdivide(m, "preserve_pentagons", 2, 1),
+        "unpickled": pickle.loads(pickle.dumps(pentagonalize(m))),
+        "deepcopy": copy.deepcopy(dual(m)),
+        "copy": copy.copy(dual(m)),
+    }
+
+
+ORIGINS = list(meshes_of_every_origin())
+
+
+@pytest.mark.parametrize("origin", ORIGINS)
+def test_a_mesh_of_every_origin_is_sealed(origin):
+    m = meshes_of_every_origin()[origin]
+    check_sealed(m)  # nothing settable or deletable, every array read-only
+    check_valid(m)
+
+
+@pytest.mark.parametrize("name", ["_vertices", "_corners", "twin", "vertices", "foo", "__dict__"])
+def test_setting_or_deleting_says_meshes_are_immutable(name):
+    m = shapes.cube()
+    before = m.vertices.copy()
+    with pytest.raises(
+        AttributeError,
+        match=rf"cannot set '{name}': a Mesh is immutable \(use mesh\.with_vertices",
+    ):
+        setattr(m, name, np.zeros((8, 3)))
+    with pytest.raises(AttributeError, match=rf"cannot delete '{name}': a Mesh is immutable"):
+        delattr(m, name)
+    assert np.array_equal(m.vertices, before)
+
+
+def test_a_mesh_has_no_instance_dict_to_write_into():
+    for m in meshes_of_every_origin().values():
+        with pytest.raises(AttributeError):
+            m.__dict__  # noqa: B018
+        with pytest.raises(TypeError):
+            vars(m)
+
+
+def test_a_mesh_is_initialised_once():
+    m = shapes.cube()
+    with pytest.raises(AttributeError, match="initialised once"):
+        m._init(np.zeros((8, 3)), m.corners, m.offsets)
+    with pytest.raises(AttributeError, match="initialised once"):
+        m.__init__(np.zeros((8, 3)), face_lists(m))
+    assert np.array_equal(m.vertices, cube_vertices())
+
+
+@pytest.mark.parametrize("validate", [True, False])
+def test_from_csr_never_aliases_the_callers_arrays(validate):
+    c = shapes.cube()
+    v, corners, offsets, twin = (np.array(a) for a in (c.vertices, c.corners, c.offsets, c.twin))
+    m = Mesh.from_csr(v, corners, offsets, twin=twin, validate=validate)
+    for mine, theirs in ((m.vertices, v), (m.corners, corners), (m.offsets, offsets)):
+        assert not np.shares_memory(mine, theirs)
+    assert not np.shares_memory(m.twin, twin)
+    assert all(a.flags.writeable for a in (v, corners, offsets, twin))
+    v[:] = 0
+    corners[:] = 0
+    offsets[:] = 0
+    twin[:] = 0
+    same_mesh(m, c)
+
+
+def test_with_vertices_copies_the_positions_and_shares_what_faces_give():
+    m = shapes.cube()
+    twin, ring = m.twin, m.vertex_ring
+    v = 2 * m.vertices
+    m2 = m.with_vertices(v)
+    assert not np.shares_memory(m2.vertices, v)
+    v[:] = 0
+    assert np.array_equal(m2.vertices, 2 * m.vertices)
+    # derived from the faces alone: derived once, the very same arrays
+    assert m2.twin is twin and m2.vertex_ring is ring
+    # derived from the positions: the mesh's own
+    assert np.allclose(m2.face_centroids, 2 * m.face_centroids)
+
+
+# ====================================================================== pickling and copying
+@pytest.mark.parametrize("origin", ORIGINS)
+@pytest.mark.parametrize("how", ["pickle 2", "pickle highest", "deepcopy", "copy"])
+def test_pickle_and_copies_give_an_equal_sealed_mesh(origin, how):
+    m = meshes_of_every_origin()[origin]  # fresh: its derived arrays may still be lazy
+    if how.startswith("pickle"):
+        protocol = 2 if how == "pickle 2" else pickle.HIGHEST_PROTOCOL
+        back = pickle.loads(pickle.dumps(m, protocol=protocol))
+    else:
+        back = (copy.deepcopy if how == "deepcopy" else copy.copy)(m)
+    assert type(back) is Mesh and back is not m
+    same_mesh(back, m)
+    check_sealed(back)
+    check_valid(back)
+    if how != "copy":
+        assert not np.shares_memory(back.vertices, m.vertices)
+
+
+def test_pickling_a_lazy_output_keeps_its_twins_and_rings_and_drops_its_input():
+    big = shapes.torus(24, 16)
+    p = pentagonalize(big)  # twins and rings not written yet: producers holding `big`
+    data = pickle.dumps(p, protocol=pickle.HIGHEST_PROTOCOL)
+    H, V, F = p.n_halfedges, p.n_vertices, p.n_faces
+    # positions, faces, twins, rings, and nothing of the input mesh
+    assert len(data) < 24 * V + 8 * (H + F + 1) + 8 * H + 8 * (H + V + 1) + 2000
+    back = pickle.loads(data)
+    same_mesh(back, p)
+    assert np.array_equal(back.twin, Mesh(p.vertices, face_lists(p)).twin)
+
+
+def test_an_unpickled_mesh_operates_like_the_original(corpus_mesh):
+    m = corpus_mesh
+    for op in (pentagonalize, dual):
+        out = op(m)
+        back = pickle.loads(pickle.dumps(out))
+        same_mesh(dual(back), dual(out))
+        same_mesh(pentagonalize(back), pentagonalize(out))
+
+
+def test_dual_chains_survive_pickling(corpus_mesh):
+    chain = [corpus_mesh]
+    for _ in range(4):
+        chain.append(dual(chain[-1]))
+    for k, x in enumerate(chain):
+        back = pickle.loads(pickle.dumps(x))
+        same_mesh(back, x)
+        # the dual of a dual built after loading is the one built before
+        same_mesh(dual(back), chain[k + 1] if k + 1 < len(chain) else dual(x))
+        same_mesh(dual(dual(back)), dual(dual(x)))
+        check_valid(dual(back))
+
+
+# ====================================================================== the one initialiser
+def test_every_new_mesh_goes_through_Mesh_init(monkeypatch):
+    calls = []
+    original = Mesh._init
+
+    def counting(self, vertices, corners, offsets, **kwargs):
+        calls.append(len(offsets) - 1)
+        return original(self, vertices, corners, offsets, **kwargs)
+
+    monkeypatch.setattr(Mesh, "_init", counting)
+    c = shapes.cube()
+    made = {
+        "constructor": lambda: Mesh(c.vertices, face_lists(c)),
+        "from_csr": lambda: Mesh.from_csr(c.vertices, c.corners, c.offsets),
+        "from_csr unvalidated": lambda: Mesh.from_csr(
+            c.vertices, c.corners, c.offsets, validate=False
+        ),
+        "with_vertices": lambda: c.with_vertices(c.vertices),
+        "pickle": lambda: pickle.loads(pickle.dumps(c)),
+        "deepcopy": lambda: copy.deepcopy(c),
+        **{name: (lambda op=op: op(c)) for name, op in OPERATORS.items()},
+    }
+    for name, make in made.items():
+        calls.clear()
+        out = make()
+        assert calls == [out.n_faces], name
+    d = dual(c)
+    calls.clear()
+    assert dual(d).n_faces == 6 and calls == [6]  # the dual of a dual too
+    calls.clear()
+    subdivide(c, "pentagonalize", 2, 2)
+    assert calls == [24, 38, 24, 120, 182, 120]
+
+
+def test_a_wrapper_on_Mesh_init_can_refuse_large_meshes(monkeypatch):
+    # how the notebook tests cap every mesh, whatever builds it
+    original = Mesh._init
+
+    def capped(self, vertices, corners, offsets, **kwargs):
+        if len(offsets) - 1 > 100:
+            raise MeshError(f"{len(offsets) - 1} faces: over the cap")
+        return original(self, vertices, corners, offsets, **kwargs)
+
+    big = shapes.torus(12, 10)  # 120 faces, built before the cap
+    small = pentagonalize(shapes.cube())  # 24 faces
+    data = pickle.dumps(big)
+    monkeypatch.setattr(Mesh, "_init", capped)
+    for attempt in (
+        lambda: subdivide(shapes.cube(), "pentagonalize", 2),
+        lambda: dual(dual(small)),  # 38, then 24 faces: allowed
+        lambda: pickle.loads(data),
+        lambda: big.with_vertices(big.vertices),
+        lambda: copy.deepcopy(big),
+        lambda: Mesh(big.vertices, face_lists(big)),
+    ):
+        try:
+            out = attempt()
+        except MeshError as exc:
+            assert "over the cap" in str(exc)
+        else:
+            assert out.n_faces <= 100
+    with pytest.raises(MeshError, match="120 faces: over the cap"):
+        big.with_vertices(big.vertices)

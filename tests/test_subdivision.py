@@ -4,19 +4,23 @@ and every operator of the registry (plus the dual) run over the whole corpus.
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import inspect
+import pickle
 import re
 
 import numpy as np
 import pytest
 from helpers import (
     OPERATORS,
+    check_sealed,
     check_valid,
     corpus,
     expected_counts,
     expected_face_histogram,
     face_lists,
+    same_mesh,
     two_cubes,
 )
 
@@ -65,6 +69,17 @@ def test_operator_keeps_orientation(corpus_mesh, operator_name):
     assert op(m).volume > 0
     flipped = pentanb.Mesh(m.vertices, [f[::-1] for f in face_lists(m)])
     assert op(flipped).volume < 0
+
+
+def test_operator_output_pickles_and_copies_while_lazy(corpus_mesh, operator_name):
+    # a fresh output: the twins and rings an operator knows are still producers
+    out = OPERATORS[operator_name](corpus_mesh)
+    back = pickle.loads(pickle.dumps(out))
+    again = copy.deepcopy(OPERATORS[operator_name](corpus_mesh))
+    same_mesh(back, out)
+    same_mesh(again, out)
+    check_sealed(back)
+    check_sealed(again)
 
 
 @pytest.mark.parametrize("name", list(OPERATORS))
@@ -309,6 +324,22 @@ def test_subdivide_refuses_non_scheme_values(bad):
 
 
 # ---------------------------------------------------------------- max_iterations
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda: subdivide([[0, 0, 0]]),
+        lambda: subdivide("cube", "pentagonalize"),
+        lambda: smooth(np.zeros((4, 3)), 0),
+        lambda: pentanb.max_iterations([8, 12, 6], "pentagonalize"),
+    ],
+)
+def test_subdivide_smooth_and_max_iterations_refuse_a_non_mesh(call):
+    with pytest.raises(
+        TypeError, match=r"(subdivide|smooth|max_iterations) expects a pentanb\.Mesh"
+    ):
+        call()
+
+
 def test_max_iterations_bounds_a_slider():
     # cube: pentagonalize gives 2E faces; E grows 12 -> 60 -> 300 -> 1500 -> 7500,
     # so the faces after k iterations are 24, 120, 600, 3000, 15000 (duals swap V and F

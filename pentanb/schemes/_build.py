@@ -7,9 +7,11 @@ helpers compute those blocks from the input's half-edge arrays.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
-from ..mesh import Mesh
+from ..mesh import Mesh, MeshError, Rings
 
 
 def edge_points(mesh: Mesh, k: int) -> np.ndarray:
@@ -63,9 +65,32 @@ def concat_faces(*parts: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.
     return corners, np.concatenate(offs)
 
 
-def output(vertices, corners, offsets, twin=None) -> Mesh:
-    """Wrap an operator's output (valid by construction: no re-validation)."""
-    return Mesh.from_csr(vertices, corners, offsets, twin=twin, validate=False)
+def output(
+    vertices: np.ndarray,
+    corners: np.ndarray,
+    offsets: np.ndarray,
+    *,
+    twin: np.ndarray | Callable[[], np.ndarray] | None = None,
+    rings: Rings | Callable[[], Rings] | None = None,
+    dual_of: Mesh | None = None,
+) -> Mesh:
+    """Wrap an operator's output, valid by construction (no re-validation, no copy).
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    corners : (H,) int
+    offsets : (m + 1,) int
+        New arrays the operator made (they become the mesh's, read-only).
+    twin : (H,) int, or a zero-argument callable returning it, optional
+        The output's twins when the operator knows them (a callable runs
+        only if the twins are asked for).
+    rings : ((H,) int, (n + 1,) int), or a callable returning them, optional
+        The output's vertex rings (:attr:`pentanb.Mesh.vertex_ring`), likewise.
+    dual_of : Mesh, optional
+        The mesh the output is the dual of (:func:`pentanb.dual` only).
+    """
+    return Mesh._new(vertices, corners, offsets, twin=twin, rings=rings, dual_of=dual_of)
 
 
 def check_scale(scale: float, name: str = "scale") -> float:
@@ -79,7 +104,41 @@ def check_scale(scale: float, name: str = "scale") -> float:
     return s
 
 
-def check_mesh(mesh, op: str) -> Mesh:
+def check_count(value: object, name: str) -> int:
+    """``value`` as a non-negative int (numpy integers too; not bool), or a ValueError naming it."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
+        raise ValueError(f"{name} must be a non-negative integer, got {value!r}")
+    return int(value)
+
+
+def check_mesh(mesh: object, op: str) -> Mesh:
+    """``mesh`` itself, or a TypeError naming the operator when it is not a Mesh."""
     if not isinstance(mesh, Mesh):
         raise TypeError(f"{op} expects a pentanb.Mesh, got {type(mesh).__name__}")
     return mesh
+
+
+def check_vertex_faces(mesh: Mesh, op: str) -> None:
+    """Refuse a mesh with a vertex of fewer than 3 edges (its vertex face would not be a polygon).
+
+    The dual (and corner cutting) make a k-gon of every k-valent vertex.
+    The constructor refuses such vertices; a mesh built with
+    ``Mesh.from_csr(..., validate=False)`` is not checked and may have one
+    (e.g. the flat "pillow", two n-gons glued along their boundary).
+
+    Raises
+    ------
+    MeshError
+        Naming the first such vertex and its number of edges.
+    """
+    _, ring_offsets = mesh.vertex_ring
+    valence = np.diff(ring_offsets)
+    few = np.flatnonzero(valence < 3)
+    if few.size:
+        v, k = int(few[0]), int(valence[few[0]])
+        more = f" (and {few.size - 1} more such vertices)" if few.size > 1 else ""
+        raise MeshError(
+            f"{op}: vertex {v} has only {k} edge{'s' if k != 1 else ''}{more}; its face "
+            f"in the result would have {k} sides, and a face needs at least 3 (a mesh "
+            "built with Mesh.from_csr(..., validate=False) is not checked for this)"
+        )

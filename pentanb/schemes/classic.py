@@ -24,7 +24,15 @@ from __future__ import annotations
 import numpy as np
 
 from ..mesh import Mesh
-from ._build import check_mesh, check_scale, concat_faces, edge_points, fixed_size, output
+from ._build import (
+    check_mesh,
+    check_scale,
+    check_vertex_faces,
+    concat_faces,
+    edge_points,
+    fixed_size,
+    output,
+)
 
 __all__ = [
     "triangulate",
@@ -155,9 +163,16 @@ def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     Mesh
         2E vertices (one per half-edge, at its tail), 4E edges, F + E + V
         faces: face copies, edge quads, then vertex faces.
+
+    Raises
+    ------
+    MeshError
+        A vertex with fewer than 3 edges (only ``Mesh.from_csr(...,
+        validate=False)`` builds one): its vertex face would not be a polygon.
     """
     check_mesh(mesh, "corner_cutting")
     s = check_scale(scale)
+    check_vertex_faces(mesh, "corner_cutting")
     k = np.arange(mesh.n_halfedges, dtype=np.int64)
     nxt, twin = mesh.next, mesh.twin
     eh = mesh.edge_halfedge

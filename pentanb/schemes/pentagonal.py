@@ -59,17 +59,20 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     faces = np.stack([t1, t2, mesh.head, t1[nxt], centre], axis=1)
     vertices = np.concatenate([mesh.vertices, edge_points(mesh, 2), mesh.face_centroids])
     corners, offsets = fixed_size(faces)
-    out = output(vertices, corners, offsets)
     # the output's twins and vertex rings follow from the input's; written when
     # first asked for (by the dual, say), never found by sorting
-    out.__dict__["_twin_maker"] = lambda: np.stack(
-        [5 * twin, 5 * prv[twin] + 2, 5 * twin[nxt] + 1, 5 * nxt + 4, 5 * prv + 3], axis=1
-    ).reshape(-1)
-    out.__dict__["_rings_maker"] = lambda: _pentagonalized_rings(mesh, t1 - n)
-    return out
+    return output(
+        vertices,
+        corners,
+        offsets,
+        twin=lambda: np.stack(
+            [5 * twin, 5 * prv[twin] + 2, 5 * twin[nxt] + 1, 5 * nxt + 4, 5 * prv + 3], axis=1
+        ).reshape(-1),
+        rings=lambda: _pentagonalized_rings(mesh, t1 - n),
+    )
 
 
-def _pentagonalized_rings(mesh: Mesh, t1: np.ndarray):
+def _pentagonalized_rings(mesh: Mesh, t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The vertex rings of ``pentagonalize(mesh)``, written from ``mesh``'s.
 
     Half-edge ``5h + s`` is slot ``s`` of the pentagon of ``h``.  Around an

@@ -10,8 +10,9 @@ the one place where a scheme name is checked.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 from ..mesh import Mesh
 from . import classic, pentagonal
@@ -67,7 +68,8 @@ class Scheme:
 
         ``counts`` is evaluated on symbols (it is linear in V, E and F).
         """
-        out = self.counts(_Linear((1, 0, 0)), _Linear((0, 1, 0)), _Linear((0, 0, 1)))
+        symbols: list[Any] = [_Linear((1, 0, 0)), _Linear((0, 1, 0)), _Linear((0, 0, 1))]
+        out = self.counts(*symbols)
         text = "(" + ", ".join(str(x) for x in out) + ")"
         return text if self.exact_counts else text + " at most (when no face is a triangle)"
 
@@ -75,21 +77,24 @@ class Scheme:
 class _Linear:
     """A linear form in V, E, F, to print a scheme's count formula."""
 
-    def __init__(self, c):
+    def __init__(self, c: Iterable[int]) -> None:
         self.c = tuple(c)
 
-    def __add__(self, o):
-        o = o if isinstance(o, _Linear) else _Linear((0, 0, 0))
-        return _Linear(a + b for a, b in zip(self.c, o.c))
+    def __add__(self, o: object) -> _Linear:
+        if isinstance(o, _Linear):
+            return _Linear(a + b for a, b in zip(self.c, o.c))
+        if o == 0:  # sum() starts from 0
+            return self
+        return NotImplemented
 
     __radd__ = __add__
 
-    def __mul__(self, k):
+    def __mul__(self, k: int) -> _Linear:
         return _Linear(k * a for a in self.c)
 
     __rmul__ = __mul__
 
-    def __str__(self):
+    def __str__(self) -> str:
         parts = [name if k == 1 else f"{k}{name}" for k, name in zip(self.c, "VEF") if k]
         return "+".join(parts) or "0"
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..mesh import Mesh
-from ._build import check_mesh, output
+from ._build import check_count, check_mesh, check_vertex_faces, output
 
 __all__ = ["dual", "smooth"]
 
@@ -41,31 +41,36 @@ def dual(mesh: Mesh) -> Mesh:
     ``next[twin[prev[h]]]``, and the dual half-edges of a face's half-edges,
     in face order, go round the dual vertex of that face.  The dual of a
     dual reuses the connectivity of the mesh it came from.
+
+    Raises
+    ------
+    MeshError
+        A vertex with fewer than 3 edges (its dual face would have fewer
+        than 3 sides), named in the message.  The constructor refuses such
+        meshes; only ``Mesh.from_csr(..., validate=False)`` can build one.
     """
     check_mesh(mesh, "dual")
-    source = mesh.__dict__.get("_dual_source")
-    if source is not None:
+    check_vertex_faces(mesh, "dual")
+    again = mesh._dual_again()
+    if again is not None:
         # mesh is itself a dual: its dual has the connectivity of the mesh it
         # came from (dual(dual(m)) has m's faces in m's order), only new positions
-        out = source._placed(mesh.face_centroids)
-    else:
-        out = _dual_connectivity(mesh)
-    out.__dict__["_dual_source"] = mesh._connectivity()
-    return out
-
-
-def _dual_connectivity(mesh: Mesh) -> Mesh:
+        return again
     ring, ring_off = mesh.vertex_ring
     corners = mesh.halfedge_face[ring]
     pos = np.empty_like(ring)
     pos[ring] = np.arange(ring.size, dtype=np.int64)
-    out = output(mesh.face_centroids, corners, ring_off)
     nxt, rot = mesh.next, mesh.rotation
-    out.__dict__["_twin_maker"] = lambda: pos[nxt[rot[ring]]]
     # the dual's vertex f is surrounded by the dual half-edges of face f's
     # half-edges, in face order: its rotation order (rotation[pos[h]] == pos[next[h]])
-    out._set_rings(pos, mesh.offsets)
-    return out
+    return output(
+        mesh.face_centroids,
+        corners,
+        ring_off,
+        twin=lambda: pos[nxt[rot[ring]]],
+        rings=(pos, mesh.offsets),
+        dual_of=mesh,
+    )
 
 
 def smooth(mesh: Mesh, duals: int = 2) -> Mesh:
@@ -78,13 +83,8 @@ def smooth(mesh: Mesh, duals: int = 2) -> Mesh:
     mesh : Mesh
     duals : int, >= 0
     """
-    duals = _check_count(duals, "duals")
+    check_mesh(mesh, "smooth")
+    duals = check_count(duals, "duals")
     for _ in range(duals):
         mesh = dual(mesh)
     return mesh
-
-
-def _check_count(value, name: str) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
-        raise ValueError(f"{name} must be a non-negative integer, got {value!r}")
-    return int(value)
