@@ -62,6 +62,7 @@ is missing the statement is left *undecided*.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections import deque
 from collections.abc import Callable
@@ -242,7 +243,6 @@ class _Topo:
         self.nxt = mesh.next.tolist()
         self.tail = mesh.corners.tolist()
         self.size = mesh.face_sizes[mesh.halfedge_face].tolist()
-        self.pos = {}
 
     def rotated(self, u: int, g: int) -> list[int]:
         hs = self.ring[self.off[u] : self.off[u + 1]]
@@ -521,6 +521,8 @@ def local_spectrum(
     size: int = 3,
     duals: int = 2,
     *,
+    mesh: Mesh | None = None,
+    element: int | None = None,
     max_faces: int = MAX_FACES,
     **options,
 ) -> LocalSpectrum:
@@ -535,6 +537,13 @@ def local_spectrum(
     size : int, >= 3
     duals : int
         Duals after each remeshing (2: the paper's smoothing).
+    mesh : Mesh, optional
+        Plant the element here instead of in :func:`pyramid` ``(size)``
+        (e.g. a vertex of the cube); ``element`` names it (a vertex index
+        for ``"vertex"``, a face index for ``"face"``).  The stationary
+        matrix does not depend on where the element was planted, once the
+        levels around it have become regular.
+    element : int, optional
     max_faces : int
         Largest mesh the search may build.
     **options
@@ -564,10 +573,15 @@ def local_spectrum(
         raise ValueError(f"duals must be a non-negative integer, got {duals!r}")
     duals = int(duals)
     name = _name(s)
-    base = pyramid(size)
-    element = ("vertex", 0) if kind == "vertex" else ("face", size)
-    steps = [_Step(base, None, element)]
-    common = dict(scheme=name, kind=kind, size=size, duals=duals, options=dict(options))
+    if mesh is None:
+        base = pyramid(size)
+        el = ("vertex", 0) if kind == "vertex" else ("face", size)
+    else:
+        base, el = _planted(mesh, kind, size, element)
+    steps = [_Step(base, None, el)]
+    common: dict[str, Any] = dict(
+        scheme=name, kind=kind, size=size, duals=duals, options=dict(options)
+    )
 
     def extend() -> bool:
         last = steps[-1]
@@ -582,7 +596,7 @@ def local_spectrum(
         return LocalSpectrum(
             **common, stationary=False, note=f"the {kind} does not survive the scheme: {fate}"
         )
-    depth = int(math.ceil(THRESHOLDS[-1])) + 1
+    depth = math.ceil(THRESHOLDS[-1]) + 1
     walks: dict[tuple[int, int], _Walk] = {}
     topos: dict[int, _Topo] = {}
 
@@ -642,7 +656,9 @@ def local_spectrum(
                 continue
             rot = _rotations(steps, L + p, els[1], start1, walk)
             spec = _spectrum(A, img, [_candidate(wk, t_ana) for wk in rot], size)
-            ctx = _Context(steps, L, p * spec.period, dom, img, spec.vectors, s, dict(options), duals)
+            ctx = _Context(
+                steps, L, p * spec.period, dom, img, spec.vectors, s, dict(options), duals
+            )
             return LocalSpectrum(
                 **common,
                 stationary=True,
@@ -655,17 +671,35 @@ def local_spectrum(
                 matrix=A,
                 modes=spec.modes,
                 note=f"half-rings {t_min:g} (closed) and {t_ana:g} (analysed)"
-                + ("; two steps make one period (the neighbourhood turns by half a sector)"
-                   if spec.period == 2 else ""),
+                + (
+                    "; two steps make one period (the neighbourhood turns by half a sector)"
+                    if spec.period == 2
+                    else ""
+                ),
                 _context=ctx,
             )
-    contraction = _measured_contraction(steps, element)
+    contraction = _measured_contraction(steps, el)
     return LocalSpectrum(
         **common,
         stationary=False,
         note=f"no stationary neighbourhood found within {max_faces:,} faces ({reason})",
         contraction=contraction,
     )
+
+
+def _planted(mesh, kind: str, size: int, element) -> tuple[Mesh, tuple[str, int]]:
+    if not isinstance(mesh, Mesh):
+        raise TypeError(f"mesh must be a pentanb.Mesh, got {type(mesh).__name__}")
+    count = mesh.n_vertices if kind == "vertex" else mesh.n_faces
+    if isinstance(element, bool) or not isinstance(element, (int, np.integer)):
+        raise ValueError(f"give the {kind} to analyse as element=<index>, got {element!r}")
+    if not 0 <= element < count:
+        raise ValueError(f"{kind} {element} does not exist (the mesh has {count})")
+    have = int(mesh.valences[element]) if kind == "vertex" else int(mesh.face_sizes[element])
+    if have != size:
+        what = "valence" if kind == "vertex" else "sides"
+        raise ValueError(f"{kind} {element} has {what} {have}, not {size}")
+    return mesh, (kind, int(element))
 
 
 def _rotations(steps, level, element, start, walk) -> list[_Walk]:
@@ -761,7 +795,9 @@ def _spectrum(A, img, rotated_orders, k: int) -> _Spec:
         a2, vals2 = best_turn(w**2)
         if not any(_is_complex(vals2[i]) for i in top):
             a, vals, period = a2, vals2, 2
-    key = np.lexsort((np.angle(vals), np.round(np.abs(np.angle(vals)), 9), -np.round(np.abs(vals), 12)))
+    key = np.lexsort(
+        (np.angle(vals), np.round(np.abs(np.angle(vals)), 9), -np.round(np.abs(vals), 12))
+    )
     return _Spec(vals[key], V[:, key], modes[key], a, period)
 
 
@@ -844,7 +880,7 @@ def _ring_ratios(meshes, elements) -> list[float]:
         for m, e in zip(meshes, elements)
         if e is not None and e[0] == elements[0][0]
     ]
-    return [b / a for a, b in zip(radii, radii[1:])]
+    return [b / a for a, b in itertools.pairwise(radii)]
 
 
 def extrapolate_ratio(ratios) -> float:
@@ -876,17 +912,23 @@ def ring_contraction(
 ) -> tuple[NDArray[np.float64], float]:
     """The measured contraction of an element's 1-ring, level after level.
 
-    Computed with :func:`pentanb.subdivide` alone (no matrices): the root
-    mean square distance from a surviving vertex to its neighbours (or from
-    a surviving face's centroid to its corners) after each level, and the
-    ratio of consecutive levels.  For a scheme with a stationary
-    neighbourhood the ratio tends to ``|lambda1|``.
+    Computed with :func:`pentanb.subdivide` alone (no matrices, so it checks
+    them): the root mean square distance from a surviving vertex to its
+    neighbours (or from a surviving face's centroid to its corners) after
+    each level, and the ratio of consecutive levels.  For a scheme with a
+    stationary neighbourhood the ratio tends to ``|lambda1|`` (the root
+    mean square is unchanged by a rotation of the ring, so a complex
+    ``lambda1`` gives a steady ratio too).
+
+    The element keeps its index: every remeshing of the package numbers the
+    kept vertices and the face copies first, in the input's order, and two
+    duals give back the numbering (checked: the valence or size must stay).
 
     Parameters
     ----------
     scheme, kind, size, duals, **options
         As for :func:`local_spectrum`.
-    levels : int, >= 3
+    levels : int, >= 1
         Subdivision levels.
     mesh : Mesh, optional
         Start here instead of :func:`pyramid` ``(size)``; ``element`` then
@@ -894,9 +936,14 @@ def ring_contraction(
 
     Returns
     -------
-    ratios : (levels - 1,) float
+    ratios : (levels,) float
     limit : float
         Aitken's extrapolation of the ratios (:func:`extrapolate_ratio`).
+
+    Raises
+    ------
+    ValueError
+        When the element does not keep its index and valence (or size).
     """
     kind = _check_kind(kind)
     if mesh is None:
@@ -905,13 +952,25 @@ def ring_contraction(
         element = 0 if kind == "vertex" else size
     if element is None:
         raise ValueError("give the element to follow when you give a mesh")
+    from ..subdivision import subdivide
+
     s = get_scheme(scheme)
-    steps = [_Step(mesh, None, (kind, int(element)))]
+    el = (kind, int(element))
+
+    def measure(m: Mesh) -> int:
+        return int(m.valences[el[1]]) if kind == "vertex" else int(m.face_sizes[el[1]])
+
+    n0 = measure(mesh)
+    meshes = [mesh]
     for _ in range(levels):
-        steps.append(_build_step(steps[-1], s, duals, options))
-        if steps[-1].element is None:
-            raise ValueError(f"the {kind} does not survive {_name(s)}")
-    ratios = np.array(_ring_ratios([st.mesh for st in steps], [st.element for st in steps]))
+        mesh = subdivide(mesh, s, 1, duals, **options)
+        count = mesh.n_vertices if kind == "vertex" else mesh.n_faces
+        if el[1] >= count or measure(mesh) != n0:
+            raise ValueError(
+                f"the {kind} {el[1]} does not keep its place under {_name(s)} + {duals} duals"
+            )
+        meshes.append(mesh)
+    ratios = np.array(_ring_ratios(meshes, [el] * len(meshes)))
     return ratios, extrapolate_ratio(ratios)
 
 
@@ -1025,9 +1084,7 @@ def characteristic_map(
     if not isinstance(spectrum, LocalSpectrum):
         spectrum = local_spectrum(spectrum, kind, size, duals, **options)
     if not spectrum.stationary or spectrum._context is None:
-        raise ValueError(
-            f"no characteristic map: {spectrum.note or 'no stationary neighbourhood'}"
-        )
+        raise ValueError(f"no characteristic map: {spectrum.note or 'no stationary neighbourhood'}")
     if isinstance(levels, bool) or not isinstance(levels, (int, np.integer)) or levels < 0:
         raise ValueError(f"levels must be a non-negative integer, got {levels!r}")
     ctx: _Context = spectrum._context
@@ -1061,9 +1118,11 @@ def characteristic_map(
     faces = _component(mesh, faces, element)
     sizes = mesh.face_sizes[faces]
     offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
-    corner_ids = np.concatenate(
-        [mesh.corners[mesh.offsets[f] : mesh.offsets[f + 1]] for f in faces]
-    ) if faces.size else np.zeros(0, dtype=np.int64)
+    corner_ids = (
+        np.concatenate([mesh.corners[mesh.offsets[f] : mesh.offsets[f + 1]] for f in faces])
+        if faces.size
+        else np.zeros(0, dtype=np.int64)
+    )
     used, local = np.unique(corner_ids, return_inverse=True)
     pts = x[used]
     if element is not None and element[0] == "vertex":
@@ -1170,7 +1229,7 @@ def _winding(pts, corners, offsets, centre) -> int:
         p = pts[u] - centre
         q = pts[v] - centre
         total += math.atan2(p[0] * q[1] - p[1] * q[0], p[0] * q[0] + p[1] * q[1])
-    return int(round(total / (2 * math.pi)))
+    return round(total / (2 * math.pi))
 
 
 # ---------------------------------------------------------------------------

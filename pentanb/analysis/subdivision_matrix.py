@@ -589,4 +589,3 @@ def matrix_checks(S, mesh: Mesh, result: Mesh) -> MatrixChecks:
         min_weight=float(S.data.min()) if S.nnz else 0.0,
         reproduces=_relative_error(S @ np.asarray(mesh.vertices), result.vertices),
     )
-
