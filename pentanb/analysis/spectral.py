@@ -853,7 +853,7 @@ def _fourier(A, perm, k):
 
 def _measured_contraction(steps, element) -> float | None:
     ratios = _ring_ratios([st.mesh for st in steps], [st.element for st in steps])
-    return extrapolate_ratio(ratios) if len(ratios) >= 3 else None
+    return extrapolate_ratio(ratios) if ratios else None
 
 
 # ---------------------------------------------------------------------------
@@ -890,6 +890,8 @@ def extrapolate_ratio(ratios) -> float:
     erratically.
     """
     r = [float(x) for x in ratios]
+    if not r:
+        raise ValueError("no ratios to extrapolate")
     if len(r) < 3:
         return r[-1]
     a, b, c = r[-3:]

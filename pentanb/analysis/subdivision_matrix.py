@@ -485,7 +485,7 @@ def subdivision_matrix(
     >>> from pentanb.analysis.subdivision_matrix import subdivision_matrix
     >>> S, out = subdivision_matrix(pentanb.shapes.cube(), "pentagonalize")
     >>> S.shape
-    (50, 8)
+    (38, 8)
     """
     if not isinstance(mesh, Mesh):
         raise TypeError(f"subdivision_matrix expects a pentanb.Mesh, got {type(mesh).__name__}")
