@@ -22,13 +22,12 @@ import math
 import numpy as np
 import pytest
 
-import pentanb
 from pentanb import shapes
 
 pytest.importorskip("scipy")
 
-from pentanb.analysis import spectral  # noqa: E402
-from pentanb.analysis.spectral import (  # noqa: E402
+from pentanb.analysis import spectral
+from pentanb.analysis.spectral import (
     LocalSpectrum,
     characteristic_map,
     continuity_table,
@@ -217,7 +216,7 @@ def test_extrapolation():
         extrapolate_ratio([])
 
 
-# ---------------------------------------------------------------------- elements that do not survive
+# ------------------------------------------------- elements that do not survive
 
 
 def test_fates():

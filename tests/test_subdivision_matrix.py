@@ -81,7 +81,7 @@ def test_rows_sum_to_one_and_weights_are_convex(scheme):
 @pytest.mark.parametrize("scheme", ["pentagonalize", "corner_cutting", "sqrt3_remesh"])
 def test_any_number_of_duals_and_iterations(scheme, duals):
     mesh = shapes.cube()
-    S, result = subdivision_matrix(mesh, scheme, 2, duals)
+    S, _ = subdivision_matrix(mesh, scheme, 2, duals)
     ref = pentanb.subdivide(mesh, scheme, 2, duals)
     assert np.allclose(S @ mesh.vertices, ref.vertices, rtol=0, atol=1e-12)
 
