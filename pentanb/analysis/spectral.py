@@ -596,7 +596,9 @@ def local_spectrum(
         return LocalSpectrum(
             **common, stationary=False, note=f"the {kind} does not survive the scheme: {fate}"
         )
-    depth = math.ceil(THRESHOLDS[-1]) + 1
+    # processing every vertex closer than the largest threshold discovers (and
+    # orders) every vertex of every candidate
+    depth = math.ceil(THRESHOLDS[-1])
     walks: dict[tuple[int, int], _Walk] = {}
     topos: dict[int, _Topo] = {}
 
@@ -703,11 +705,10 @@ def _planted(mesh, kind: str, size: int, element) -> tuple[Mesh, tuple[str, int]
 
 
 def _rotations(steps, level, element, start, walk) -> list[_Walk]:
-    """The walks from each rotated start (the first is ``start``)."""
+    """The walks from ``start`` and from the start turned by one sector."""
     hs = _starts(steps[level].mesh, element)
     j = hs.index(start)
-    hs = hs[j:] + hs[:j]
-    return [walk(level, h) for h in hs]
+    return [walk(level, hs[j]), walk(level, hs[(j + 1) % len(hs)])]
 
 
 def _smallest_closed(w0, w1, w2, S01, S12):
@@ -748,8 +749,8 @@ def _spectrum(A, img, rotated_orders, k: int) -> _Spec:
     """Eigenvalues of the local matrix by Fourier modes, rotation taken out.
 
     ``A`` maps the domain (ordered like ``img``) to the image ``img``;
-    ``rotated_orders[a]`` is the image ordered from the start turned by
-    ``a`` sectors.  Turning the identification by ``a`` sectors multiplies
+    ``rotated_orders[1]`` is the image ordered from the start turned by one
+    sector (the rotation that block-diagonalizes ``A``).  Turning the identification by ``a`` sectors multiplies
     the eigenvalues of mode w by ``exp(2 pi i a w / k)``; the turn chosen
     makes the subdominant eigenvalue's argument smallest.  When that still
     leaves a complex pair that two steps make real (a turn by half a
