@@ -751,8 +751,9 @@ def _spectrum(A, img, rotated_orders, k: int) -> _Spec:
     ``A`` maps the domain (ordered like ``img``) to the image ``img``;
     ``rotated_orders[1]`` is the image ordered from the start turned by one
     sector (the rotation that block-diagonalizes ``A``).  Turning the
-    identification by ``a`` sectors multiplies the eigenvalues of mode w by ``exp(2 pi i a w / k)``; the turn chosen
-    makes the subdominant eigenvalue's argument smallest.  When that still
+    identification by ``a`` sectors multiplies the eigenvalues of mode w by
+    ``exp(2 pi i a w / k)``; the turn chosen makes the subdominant
+    eigenvalue's argument smallest.  When that still
     leaves a complex pair that two steps make real (a turn by half a
     sector), the period is 2 and the eigenvalues are squared.
     """
