@@ -6,6 +6,11 @@
   here, so ``from pentanb.analysis import vertex_configurations`` works.
 * :mod:`~pentanb.analysis.convergence`: how fast dual smoothing converges
   (Section 7's "visually confirmed" G1 continuity, measured).
+* :mod:`~pentanb.analysis.subdivision_matrix`: one step of "remesh, then k
+  duals" as a sparse linear map of positions, ``S @ V``.
+* :mod:`~pentanb.analysis.spectral`: Section 7's open question answered with
+  subdivision theory: local subdivision matrices around extraordinary
+  vertices and faces, their spectra, characteristic maps, the results table.
 
 Everything here needs only numpy.  (Analyses that need scipy import it
 inside the functions that use it, so that ``import pentanb.analysis``
@@ -24,8 +29,28 @@ from .measures import (
     ray_distances,
     vertex_configurations,
 )
+from .spectral import (
+    CharacteristicMap,
+    ContinuityRow,
+    LocalSpectrum,
+    characteristic_map,
+    continuity_table,
+    local_spectrum,
+    ring_contraction,
+    table_markdown,
+)
+from .subdivision_matrix import subdivision_matrix
 
 __all__ = [
+    "subdivision_matrix",
+    "local_spectrum",
+    "LocalSpectrum",
+    "characteristic_map",
+    "CharacteristicMap",
+    "continuity_table",
+    "ContinuityRow",
+    "table_markdown",
+    "ring_contraction",
     "vertex_configurations",
     "face_configurations",
     "canonical_configuration",
