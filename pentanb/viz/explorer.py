@@ -83,7 +83,7 @@ class Explorer(W.HBox):
         duals: int = 2,
         scale: float | None = None,
         max_iterations: int = 5,
-        max_faces: int = 250_000,
+        max_faces: int = 100_000,
         max_bytes: int | None = None,
         width: int = 560,
         height: int = 460,
@@ -383,7 +383,7 @@ def explore(
     duals: int = 2,
     scale: float | None = None,
     max_iterations: int = 5,
-    max_faces: int = 250_000,
+    max_faces: int = 100_000,
     max_bytes: int | None = None,
     width: int = 560,
     height: int = 460,
@@ -413,7 +413,8 @@ def explore(
     max_iterations : int >= 0
         Largest value of the iterations slider.
     max_faces : int >= 1
-        Largest mesh (faces) that the view builds.
+        Largest mesh (faces, at every step) that the view builds; the
+        default, 100,000, is the limit of the notebooks' sliders too.
     max_bytes : int, optional
         Passed to :func:`pentanb.subdivide`.
     width, height : int
