@@ -116,13 +116,18 @@ for _w in _skipped:  # disabled at its turn: an earlier drop-down may enable it
     if not _move(_w):
         _sweep["unswept"].append(f"{type(_w).__name__} {_w.description!r}")
 _sweep["controls"] = len(_controls)
+_sweep["renderers"] = sum(type(w).__name__ == "Renderer" for w in _all_widgets.values())
 _sweep.update(_pentanb_largest)
 print("SWEEP", _json.dumps(_sweep))
 """
 
 
 def instrumented(nb):
-    """A copy of a notebook (nbformat node) with :data:`GUARD` first and :data:`SWEEP` last."""
+    """A copy of a notebook with :data:`GUARD` first and :data:`SWEEP` last.
+
+    ``nb`` is an nbformat node or the plain dict of a notebook's JSON; the
+    copy is of the same kind.
+    """
     import copy
 
     import nbformat
@@ -130,7 +135,10 @@ def instrumented(nb):
     out = copy.deepcopy(nb)
     guard = nbformat.v4.new_code_cell(GUARD, metadata={ADDED: "guard"})
     sweep = nbformat.v4.new_code_cell(SWEEP, metadata={ADDED: "sweep"})
-    out.cells = [guard, *out.cells, sweep]
+    if not isinstance(out, nbformat.NotebookNode):
+        guard, sweep = dict(guard), dict(sweep)
+        guard["metadata"], sweep["metadata"] = dict(guard["metadata"]), dict(sweep["metadata"])
+    out["cells"] = [guard, *out["cells"], sweep]
     return out
 
 

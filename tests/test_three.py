@@ -65,8 +65,9 @@ def fan(mesh):
 
 def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
     pos = arr(v.face_geometry.attributes["position"])
-    col = arr(v.face_geometry.attributes["color"])
-    assert pos.dtype == np.float32 and col.dtype == np.float32
+    col = arr(v.face_geometry.attributes["color"]) / 255
+    assert pos.dtype == np.float32 and arr(v.face_geometry.attributes["color"]).dtype == np.uint8
+    assert v.face_geometry.attributes["color"].normalized  # bytes read as [0, 1]
     assert v.face_geometry.index is None  # three rows per triangle, no index
     tris, owner = fan(mesh)
     # every polygon is the fan of triangles from its first corner
@@ -74,7 +75,7 @@ def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
     np.testing.assert_allclose(pos, mesh.vertices[tris].reshape(-1, 3), atol=1e-6)
     # each triangle has the colour of its face's size, on its three corners
     sizes = np.array([len(f) for f in face_lists(mesh)])
-    np.testing.assert_allclose(col, np.repeat(face_rgb(sizes[owner]), 3, axis=0), atol=1e-6)
+    np.testing.assert_array_equal(col, np.repeat(face_rgb(sizes[owner]), 3, axis=0))  # exact
     # edges: both ends of every edge, in the edge colour
     seg = arr(v.edge_geometry.attributes["position"]).reshape(-1, 2, 3)
     expected = {
@@ -86,8 +87,8 @@ def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
         np.sort(mesh.vertices[np.array(sorted(expected))].reshape(len(seg), -1), axis=0),
         atol=1e-6,
     )
-    ecol = arr(v.edge_geometry.attributes["color"])
-    np.testing.assert_allclose(ecol, np.tile(hex_to_rgb(EDGE_COLOR), (len(ecol), 1)), atol=1e-6)
+    ecol = arr(v.edge_geometry.attributes["color"]) / 255
+    np.testing.assert_array_equal(ecol, np.tile(hex_to_rgb(EDGE_COLOR), (len(ecol), 1)))
 
 
 # -- the view -------------------------------------------------------------------------

@@ -178,23 +178,35 @@ def as_drawing(obj: Mesh | Drawing) -> Drawing:
     raise TypeError(f"expected a pentanb.Mesh or a Drawing, got {type(obj).__name__}")
 
 
-def _rows(colors: ArrayLike | None, default: str, n: int, repeat: int) -> NDArray[np.float32]:
+def _bytes(rgb: ArrayLike) -> NDArray[np.uint8]:
+    """RGB in [0, 1] as bytes 0 .. 255 (exact for the hex colours of the palette)."""
+    return np.rint(np.clip(np.asarray(rgb, dtype=np.float64), 0.0, 1.0) * 255).astype(np.uint8)
+
+
+def _rows(colors: ArrayLike | None, default: str, n: int, repeat: int) -> NDArray[np.uint8]:
     if colors is None:
-        return np.tile(hex_to_rgb(default).astype(np.float32), (n * repeat, 1))
-    return np.repeat(np.asarray(colors, dtype=np.float32).reshape(-1, 3), repeat, axis=0)
+        return np.tile(_bytes(hex_to_rgb(default)), (n * repeat, 1))
+    return np.repeat(_bytes(colors).reshape(-1, 3), repeat, axis=0)
 
 
 @dataclass(frozen=True)
 class Buffers:
-    """The float32 arrays WebGL draws a :class:`Drawing` from.
+    """The arrays WebGL draws a :class:`Drawing` from.
+
+    Positions are float32; colours are bytes (uint8, 0 .. 255), drawn as
+    normalized attributes, a quarter of the bytes of float colours.
 
     Attributes
     ----------
-    position, color : (3T, 3) float32
-        Three rows per triangle: its corners, and its face's colour.
-    edge_position, edge_color : (2S, 3) float32
-        Two rows per segment.
-    point_position, point_color : (k, 3) float32
+    position : (3T, 3) float32
+        Three rows per triangle: its corners.
+    color : (3T, 3) uint8
+        The colour of the triangle's face, on its three rows.
+    edge_position : (2S, 3) float32
+        Two rows per segment: its ends.
+    edge_color : (2S, 3) uint8
+    point_position : (k, 3) float32
+    point_color : (k, 3) uint8
     edge_count, point_count : int
         S and k.  WebGL buffers are never empty: no triangle, segment or
         point becomes one hidden point, and these counts say how many there
@@ -202,11 +214,11 @@ class Buffers:
     """
 
     position: NDArray[np.float32]
-    color: NDArray[np.float32]
+    color: NDArray[np.uint8]
     edge_position: NDArray[np.float32]
-    edge_color: NDArray[np.float32]
+    edge_color: NDArray[np.uint8]
     point_position: NDArray[np.float32]
-    point_color: NDArray[np.float32]
+    point_color: NDArray[np.uint8]
     edge_count: int
     point_count: int
 
@@ -225,12 +237,12 @@ def buffers(d: Drawing) -> Buffers:
     pt_color = _rows(d.point_colors, POINT_COLOR, len(pts), 1)
     vertices = np.asarray(d.vertices, dtype=np.float32).reshape(-1, 3)
     centre = vertices[:1] if len(vertices) else np.zeros((1, 3), np.float32)
-    hidden = np.zeros((1, 3), np.float32)
+    hidden = np.zeros((1, 3), np.uint8)
     return Buffers(
         position=np.ascontiguousarray(position) if len(position) else centre.copy(),
         color=np.ascontiguousarray(color) if len(position) else hidden.copy(),
         edge_position=seg if len(seg) else np.repeat(centre, 2, axis=0),
-        edge_color=seg_color if len(seg) else np.zeros((2, 3), np.float32),
+        edge_color=seg_color if len(seg) else np.zeros((2, 3), np.uint8),
         point_position=pts if len(pts) else centre.copy(),
         point_color=pt_color if len(pts) else hidden.copy(),
         edge_count=len(seg) // 2,

@@ -139,7 +139,8 @@ class MeshView(W.VBox):
         self._point_size = point_size
 
         def attr(a):
-            return P3.BufferAttribute(array=a, normalized=False)
+            # colours are bytes, read by WebGL as normalized values in [0, 1]
+            return P3.BufferAttribute(array=a, normalized=a.dtype == np.uint8)
 
         self.face_geometry = P3.BufferGeometry(
             attributes={"position": attr(b.position), "color": attr(b.color)},
