@@ -431,6 +431,13 @@ def test_step_through_stages(scheme, name):
         assert last_group.legend == {5: expected.n_faces}
     else:
         assert inserted == 2 * H  # copy edges and spokes
+    # every inserted segment is an edge of the result (before its duals)
+
+    def keys(segments):
+        return {tuple(sorted(map(tuple, np.round(seg, 9)))) for seg in segments}
+
+    assert keys(last_group.segments[E:]) <= keys(expected.vertices[expected.edges])
+    assert not keys(last_group.segments[:E]) & keys(expected.vertices[expected.edges])
     # after the last group, every piece around a corner is a pentagon
     np.testing.assert_allclose(last_group.face_colors[-H:], face_rgb(np.full(H, 5)))
     # at first, the pieces of a non-pentagon are not pentagon-coloured
