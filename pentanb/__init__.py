@@ -68,8 +68,8 @@ __all__ = [
 # drawing functions: imported on first use, so that `import pentanb` needs numpy only
 _LAZY = {
     "view": ("pentanb.viz.three", "view"),
-    "explore": ("pentanb.viz.three", "explore"),
-    "step_through": ("pentanb.viz.three", "step_through"),
+    "explore": ("pentanb.viz.explorer", "explore"),
+    "step_through": ("pentanb.viz.steps", "step_through"),
     "export_html": ("pentanb.viz.html", "export_html"),
 }
 
