@@ -63,6 +63,7 @@ __all__ = [
     "step_through",
     "export_html",
     "figures",
+    "analysis",
 ]
 
 # drawing functions: imported on first use, so that `import pentanb` needs numpy only
@@ -80,8 +81,8 @@ def __getattr__(name):
 
         module, attr = _LAZY[name]
         return getattr(importlib.import_module(module), attr)
-    if name == "figures":
+    if name in ("figures", "analysis"):
         import importlib
 
-        return importlib.import_module("pentanb.figures")
+        return importlib.import_module(f"pentanb.{name}")
     raise AttributeError(f"module 'pentanb' has no attribute {name!r}")
