@@ -359,7 +359,7 @@ def rabbit() -> Mesh:
     """An irregular low-polygon rabbit: the initial mesh of Figure 12.
 
     172 vertices and 231 faces (136 triangles, 81 quadrilaterals, 14
-    pentagons), vertex valences 3 to 8, closed, genus 0, about 2.7 units
+    pentagons), vertex valences 3 to 7, closed, genus 0, about 2.7 units
     long.  The paper's model (by Esan Mandal) is not available; this one is
     built by :mod:`pentanb.data.make_rabbit` (a star-shaped union of
     ellipsoids, triangulated and partly merged into larger faces) and

@@ -18,7 +18,7 @@ stand-in of the same kind, made for this package (no third-party data):
    pentagons, never taking a vertex below valence 3.
 
 The result: 172 vertices, 231 faces (136 triangles, 81 quadrilaterals, 14
-pentagons), vertex valences 3 to 8.  ``pentanb.shapes.rabbit()`` reads the
+pentagons), vertex valences 3 to 7.  ``pentanb.shapes.rabbit()`` reads the
 OBJ (numpy only); run ``python -m pentanb.data.make_rabbit`` (needs scipy)
 to rebuild it, and the test suite checks that the shipped file is what this
 script writes.
@@ -43,8 +43,8 @@ BLOBS: tuple[tuple[str, tuple, tuple, tuple, int], ...] = (
     ("rump", (-0.45, 0.0, -0.05), (0.62, 0.66, 0.62), (0.0, 0.0), 0),
     ("head", (0.92, 0.0, 0.62), (0.42, 0.36, 0.38), (0.3, 0.0), 24),
     ("snout", (1.25, 0.0, 0.5), (0.18, 0.2, 0.17), (0.0, 0.0), 10),
-    ("left ear", (0.66, 0.24, 1.32), (0.12, 0.07, 0.5), (-0.3, -0.35), 30),
-    ("right ear", (0.66, -0.24, 1.32), (0.12, 0.07, 0.5), (-0.3, 0.35), 30),
+    ("left ear", (0.66, 0.24, 1.32), (0.13, 0.1, 0.5), (-0.3, -0.35), 30),
+    ("right ear", (0.66, -0.24, 1.32), (0.13, 0.1, 0.5), (-0.3, 0.35), 30),
     ("tail", (-1.1, 0.0, 0.25), (0.18, 0.18, 0.18), (0.0, 0.0), 10),
     ("left fore foot", (0.62, 0.26, -0.62), (0.26, 0.11, 0.12), (0.0, 0.0), 8),
     ("right fore foot", (0.62, -0.26, -0.62), (0.26, 0.11, 0.12), (0.0, 0.0), 8),
@@ -52,7 +52,7 @@ BLOBS: tuple[tuple[str, tuple, tuple, tuple, int], ...] = (
     ("right hind foot", (-0.35, -0.42, -0.62), (0.42, 0.15, 0.13), (0.0, 0.0), 10),
 )
 #: The point the rabbit is star-shaped around.
-CENTRE = np.array([0.35, 0.0, 0.25])
+CENTRE = np.array([0.6, 0.0, 0.35])
 
 
 def _rotation(turn: tuple[float, float]) -> np.ndarray:
