@@ -526,15 +526,16 @@ def region_geometry(mesh: Mesh, faces: ArrayLike) -> dict[str, object]:
 
 # ====================================================================== creases
 def crease_angles(mesh: Mesh, marked: ArrayLike) -> dict[str, float]:
-    """The largest crease angle around some vertices, and elsewhere.
+    """The largest crease angle at some vertices, and elsewhere.
 
     Parameters
     ----------
     mesh : Mesh
     marked : (V,) bool or (k,) int
         The vertices to look at (Section 7's G1 question is decided at the
-        extraordinary vertices): an edge is "at" them when it belongs to a
-        face that has one of them as a corner.
+        extraordinary vertices): an edge is "at" them when one of its ends
+        is marked, so its crease angle is one between two faces around a
+        marked vertex.
 
     Returns
     -------
@@ -544,21 +545,21 @@ def crease_angles(mesh: Mesh, marked: ArrayLike) -> dict[str, float]:
         there is no such edge); degrees.
     """
     m = np.asarray(marked)
-    if m.dtype != bool:
-        mask = np.zeros(mesh.n_vertices, dtype=bool)
-        mask[m.astype(np.int64)] = True
-        m = mask
-    elif m.shape != (mesh.n_vertices,):
-        raise ValueError(f"marked must have one entry per vertex ({mesh.n_vertices})")
-    face_marked = np.zeros(mesh.n_faces, dtype=bool)
-    face_marked[mesh.halfedge_face[m[mesh.corners]]] = True
-    he_marked = face_marked[mesh.halfedge_face]
-    edge_marked = np.zeros(mesh.n_edges, dtype=bool)
-    edge_marked[mesh.halfedge_edge[he_marked]] = True
+    if m.dtype == bool:
+        if m.shape != (mesh.n_vertices,):
+            raise ValueError(f"marked must have one entry per vertex ({mesh.n_vertices})")
+    else:
+        idx = m.astype(np.int64).reshape(-1)
+        if idx.size and (idx.min() < 0 or idx.max() >= mesh.n_vertices):
+            raise ValueError(f"marked vertex out of range 0..{mesh.n_vertices - 1}")
+        m = np.zeros(mesh.n_vertices, dtype=bool)
+        m[idx] = True
+    ends = mesh.edges
+    at = m[ends[:, 0]] | m[ends[:, 1]]
     a = normal_angles(mesh)
     return {
-        "at": float(a[edge_marked].max()) if edge_marked.any() else float("nan"),
-        "elsewhere": float(a[~edge_marked].max()) if (~edge_marked).any() else float("nan"),
+        "at": float(a[at].max()) if at.any() else float("nan"),
+        "elsewhere": float(a[~at].max()) if (~at).any() else float("nan"),
     }
 
 
@@ -586,7 +587,7 @@ def _near_segments(mesh: Mesh, half: float) -> list[tuple[np.ndarray, ...]]:
     cents = [np.ascontiguousarray(mesh.face_centroids[:, k]) for k in range(3)]
     hf, tail, head = mesh.halfedge_face, mesh.corners, mesh.head
     starts = mesh.offsets[:-1]
-    lim = 0.25 * half
+    lim = 0.6 * half
     # how far every face reaches along +-x, +-y, +-z
     reach = {}
     for k in range(3):
@@ -650,7 +651,8 @@ def edge_profile(
     edge : (axis, s1, s2)
         One of :data:`BOX_EDGES`.
     angle : float
-        Degrees, strictly between 0 and 90.
+        Degrees, from 35 to 55 (the plane must cut the surface within
+        0.6 ``half`` of the edge on both sides).
     half : float
         Half the box's size.
 
@@ -659,8 +661,8 @@ def edge_profile(
     x, r : (k,) float
         Sorted by ``x``; the curve is straight between its points.
     """
-    if not 0.0 < angle < 90.0:
-        raise ValueError(f"angle must be strictly between 0 and 90 degrees, got {angle}")
+    if not 35.0 <= angle <= 55.0:
+        raise ValueError(f"angle must be from 35 to 55 degrees, got {angle}")
     if tuple(edge) not in BOX_EDGES:
         raise ValueError(f"edge must be one of BOX_EDGES, got {edge!r}")
     return _profile(_near_segments(mesh, half)[BOX_EDGES.index(tuple(edge))], angle)
@@ -669,7 +671,7 @@ def edge_profile(
 def lateral_amplitude(
     mesh: Mesh,
     window: float,
-    angles: Sequence[float] = (30.0, 45.0, 60.0),
+    angles: Sequence[float] = (40.0, 45.0, 50.0),
     half: float = 1.0,
 ) -> NDArray[np.float64]:
     """The wave along every straight edge of a smoothed box (Section 1's "lateral artifact").
@@ -677,7 +679,9 @@ def lateral_amplitude(
     For each of the box's 12 edges and each angle, the peak-to-peak
     variation of :func:`edge_profile` over ``|x| <= window`` (away from the
     box's corners, whose rounding is not a wave); the largest over the
-    angles.  A box whose edges stay straight gives 0; a wave pattern along
+    angles.  The default angles cut the rounded edge through its middle
+    (45 degrees) and on either side of it, where a wave that sways sideways
+    shows too.  A box whose edges stay straight gives 0; a wave pattern along
     the edge gives its peak-to-peak height, in the mesh's units.
 
     Parameters
@@ -699,8 +703,8 @@ def lateral_amplitude(
     if not 0.0 < window < half:
         raise ValueError(f"window must be in (0, {half}), got {window}")
     for angle in angles:
-        if not 0.0 < angle < 90.0:
-            raise ValueError(f"angles must be strictly between 0 and 90 degrees, got {angle}")
+        if not 35.0 <= angle <= 55.0:
+            raise ValueError(f"angles must be from 35 to 55 degrees, got {angle}")
     out = np.zeros(len(BOX_EDGES))
     for k, (edge, near) in enumerate(zip(BOX_EDGES, _near_segments(mesh, half))):
         for angle in angles:

@@ -17,7 +17,7 @@ import numpy as np
 from ..mesh import Mesh
 from ..schemes.pentagonal import pentagonalize
 from ._flat import pillow
-from .claim import Claim, check, eq
+from .claim import Claim, bounded, exact
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -105,17 +105,30 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
         float(np.abs(pts[faces[:, 0]] - (2 * u + w) / 3).max()),
         float(np.abs(pts[faces[:, 1]] - (u + 2 * w) / 3).max()),
     )
+    centre_err = float(np.linalg.norm(pts[faces[0, 4]] - old.mean(axis=0)))
     return [
-        eq(
-            f"a {n}-gon is split into as many pentagons as it has edges",
+        exact(
+            "fig06.pentagons",
+            "Section 5.1, Figure 6",
+            "Each face in the original mesh would now have been split into as many pentagons "
+            "as the number of edges (or vertices) in the original face.",
+            f"faces by size that fill the {n}-gon of (A)",
             {5: n},
             {int(k): int(v) for k, v in zip(*np.unique(out.face_sizes[front], return_counts=True))},
         ),
-        check(
-            "every edge is cut into 3 equal parts (largest position error)", "0", err, err < 1e-12
+        bounded(
+            "fig06.thirds",
+            "Section 5.1, Figure 6",
+            "Subdivide all edges in the mesh into 3 equal parts.",
+            "largest distance of a new edge point from 1/3 or 2/3 of its edge",
+            err,
         ),
-        eq(
-            "every pentagon has one old vertex, three edge points and the point sphere",
+        exact(
+            "fig06.corners",
+            "Section 5.1, Figure 6",
+            "Insert an edge between the point sphere and every other newly created point in "
+            "that face",
+            "per pentagon: old vertices (most), edge points (fewest), distinct point spheres",
             (1, 3, 1),
             (
                 int(np.isin(faces, np.arange(n)).sum(axis=1).max()),
@@ -123,10 +136,11 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
                 int(np.unique(faces[:, 4]).size),
             ),
         ),
-        check(
-            "the point sphere sits at the face's centroid (distance)",
-            "0",
-            float(np.linalg.norm(pts[faces[0, 4]] - old.mean(axis=0))),
-            np.allclose(pts[faces[0, 4]], old.mean(axis=0)),
+        bounded(
+            "fig06.centroid",
+            "Section 5.1, Figure 6",
+            "Create a point sphere at the centroid of the face.",
+            "distance of the point sphere from the face's centroid",
+            centre_err,
         ),
     ]
