@@ -583,27 +583,33 @@ def _near_segments(mesh: Mesh, half: float) -> list[tuple[np.ndarray, ...]]:
         segment in coordinates turned to (along the edge, towards its first
         face, towards its second face).
     """
-    coords = [np.ascontiguousarray(mesh.vertices[:, k]) for k in range(3)]
-    cents = [np.ascontiguousarray(mesh.face_centroids[:, k]) for k in range(3)]
-    hf, tail, head = mesh.halfedge_face, mesh.corners, mesh.head
-    starts = mesh.offsets[:-1]
+    v = mesh.vertices
+    tail, head, hf = mesh.corners, mesh.head, mesh.halfedge_face
+    offsets = mesh.offsets
+    starts = offsets[:-1]
+    # per half-edge: its tail, its head, its face's centroid; one column each
+    cols = [np.ascontiguousarray(v[tail, k]) for k in range(3)]
+    cols += [np.ascontiguousarray(v[head, k]) for k in range(3)]
+    cols += [np.ascontiguousarray(mesh.face_centroids[hf, k]) for k in range(3)]
     lim = 0.6 * half
-    # how far every face reaches along +-x, +-y, +-z
+    # which faces reach past +-lim along x, y, z
     reach = {}
     for k in range(3):
-        pk = coords[k][tail]
-        reach[k, 1] = np.maximum.reduceat(pk, starts) > lim
-        reach[k, -1] = np.minimum.reduceat(pk, starts) < -lim
+        reach[k, 1] = np.maximum.reduceat(cols[k], starts) > lim
+        reach[k, -1] = np.minimum.reduceat(cols[k], starts) < -lim
     out = []
     for axis, s1, s2 in BOX_EDGES:
         i, j = (k for k in range(3) if k != axis)
-        hs = np.flatnonzero((reach[i, s1] & reach[j, s2])[hf])
-        ta, hb, fc = tail[hs], head[hs], hf[hs]
+        faces = np.flatnonzero(reach[i, s1] & reach[j, s2])
+        sizes = offsets[faces + 1] - offsets[faces]
+        # the half-edges of those faces: offsets[f] .. offsets[f + 1] - 1, in a row
+        first = np.repeat(offsets[faces] - np.cumsum(sizes) + sizes, sizes)
+        hs = first + np.arange(int(sizes.sum()))
         ends = []
+        for k, sign in ((axis, 1), (i, s1), (j, s2)):  # sides tail -> head, spokes centroid -> tail
+            ends.append(sign * np.concatenate([cols[k][hs], cols[6 + k][hs]]))
         for k, sign in ((axis, 1), (i, s1), (j, s2)):
-            ends.append(sign * np.concatenate([coords[k][ta], cents[k][fc]]))
-        for k, sign in ((axis, 1), (i, s1), (j, s2)):
-            ends.append(sign * np.concatenate([coords[k][hb], coords[k][ta]]))
+            ends.append(sign * np.concatenate([cols[3 + k][hs], cols[k][hs]]))
         out.append(tuple(ends))
     return out
 

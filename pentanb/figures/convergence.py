@@ -66,11 +66,11 @@ def draw(meshes: Mapping[str, Mesh] | None = None, *, pairs: int = 6, levels: in
     data = cv.study(pairs=pairs, levels=levels)
     names = list(data["meshes"])
     with vz.style():
-        fig = Figure(figsize=(10.5, 7.4), dpi=vz.DPI)
+        fig = Figure(figsize=(10.5, 8.0), dpi=vz.DPI)
         grid = fig.subplots(2, 3)
         axes = [grid[0, 0], grid[0, 1], grid[0, 2], grid[1, 0], grid[1, 1]]
         grid[1, 2].set_axis_off()
-        fig.subplots_adjust(left=0.07, right=0.99, bottom=0.08, top=0.93, wspace=0.3, hspace=0.5)
+        fig.subplots_adjust(left=0.07, right=0.98, bottom=0.12, top=0.93, wspace=0.3, hspace=0.62)
         fig.suptitle("Convergence under duals (beyond the paper)", fontsize=10.5)
         for (mesh_name, scheme), res in data["pairs"].items():
             c, ls = COLORS[names.index(mesh_name)], STYLES[scheme]
@@ -82,9 +82,8 @@ def draw(meshes: Mapping[str, Mesh] | None = None, *, pairs: int = 6, levels: in
             c, ls = COLORS[names.index(mesh_name)], STYLES[scheme]
             axes[3].semilogy(res.steps, res.crease_at, ls, color=c, marker="o", ms=3)
             axes[4].semilogy(res.steps, res.crease_elsewhere, ls, color=c, marker="o", ms=3)
-        pair_label = "pairs of duals after one remeshing (0: the remeshing alone)"
         for ax in axes[:3]:
-            ax.set_xlabel(pair_label, fontsize=7.5)
+            ax.set_xlabel("pairs of duals after one remeshing")
         axes[0].set_ylabel("std / mean of vertex radii")
         axes[1].set_ylabel("std / mean of edge lengths")
         axes[2].set_ylabel("largest crease angle (deg)")
@@ -106,13 +105,20 @@ def draw(meshes: Mapping[str, Mesh] | None = None, *, pairs: int = 6, levels: in
             ax.xaxis.set_major_locator(MaxNLocator(integer=True))
             ax.grid(alpha=0.25)
             vz.label_panel(ax, text)
-            ax.title.set_y(-0.32)
+            ax.title.set_y(-0.3)
         handles = [Line2D([], [], color=COLORS[i], label=name) for i, name in enumerate(names)]
         handles += [
             Line2D([], [], color="#444444", ls=ls, label=SCHEMES[s].label)
             for s, ls in STYLES.items()
         ]
-        grid[1, 2].legend(handles=handles, loc="center", frameon=False, fontsize=8.5)
+        grid[1, 2].legend(
+            handles=handles,
+            loc="center",
+            frameon=False,
+            fontsize=8.5,
+            title="pair 0: the remeshing alone",
+            title_fontsize=8,
+        )
     return fig
 
 

@@ -79,9 +79,9 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
     data = lt.study()
     levels = np.arange(1, lt.LEVELS + 1)
     with vz.style():
-        fig = Figure(figsize=(11.0, 4.2), dpi=vz.DPI)
+        fig = Figure(figsize=(11.0, 4.8), dpi=vz.DPI)
         axes = list(fig.subplots(1, 3))
-        fig.subplots_adjust(left=0.06, right=0.99, bottom=0.33, top=0.9, wspace=0.3)
+        fig.subplots_adjust(left=0.05, right=0.99, bottom=0.36, top=0.9, wspace=0.3)
         fig.suptitle(
             "Lateral artifact: the wave along a straight edge, measured (box size 2)",
             fontsize=10.5,
@@ -96,8 +96,10 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
             ax.text(-window, 8 * (len(PROFILED) - 1 - i) + 2.2, SCHEMES[s].label, fontsize=7)
         for k in np.arange(-window, window + 1e-9, cell):
             ax.axvline(k, color="#bbbbbb", lw=0.5, zorder=0)
-        ax.set_xlabel("position along the edge (grid lines: the box's cells)")
-        ax.set_ylabel("distance from the edge's axis - mean (1/1000)")
+        ax.plot([window * 1.04] * 2, [0, 5], color="#333333", lw=1.5, clip_on=False)
+        ax.text(window * 1.06, 2.5, "0.005", fontsize=7, va="center", rotation=90)
+        ax.set_xlabel("position along the edge (grey: grid lines)")
+        ax.set_ylabel("distance from the edge's axis, mean removed")
         ax.set_yticks([])
         vz.label_panel(ax, f"(A) profiles, {BOX} per edge, level {lt.LEVELS}")
         # (B) level by level on the 10-cell box
@@ -129,7 +131,7 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
         vz.label_panel(ax, f"(C) level {lt.LEVELS}, box by box")
         for ax in axes:
             ax.grid(alpha=0.25)
-            ax.title.set_y(-0.36)
+            ax.title.set_y(-0.3)
         handles = [
             Line2D([], [], color=STYLE[s][0], ls=STYLE[s][1], label=SCHEMES[s].label)
             for s in lt.LATERAL_SCHEMES
