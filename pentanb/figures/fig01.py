@@ -74,8 +74,8 @@ SPLIT5 = (
     "pentagons in the new mesh."
 )
 STEPS5 = (
-    "Subdivide all edges in the mesh into 3 equal parts. [...] Create a point sphere at the "
-    "centroid of the face. [...] Insert an edge between the point sphere and every other "
+    "Subdivide all edges in the mesh into 3 equal parts. [...] Create a point sphere [4, 14] "
+    "at the centroid of the face. [...] Insert an edge between the point sphere and every other "
     "newly created point in that face"
 )
 STEPS_P = (

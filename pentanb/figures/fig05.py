@@ -104,10 +104,10 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             exact(
                 f"fig05.{k}.irregular",
                 "Section 3",
-                "(6, 3) The schemes that are the dual of sqrt(3) and dual of Loop subdivision "
-                "create regular regions that consist 3-valent vertices and 6-sided faces. In "
-                "this case, the number of non-6-sided faces remains constant after the first "
-                "refinement.",
+                "(6, 3) The schemes that are the dual of sqrt(3) [5, 8, 19, 6] and dual of Loop "
+                "subdivision [12] create regular regions that consist 3-valent vertices and "
+                "6-sided faces. In this case, the number of non-6-sided faces remains constant "
+                "after the first refinement.",
                 f"{panel} (non-hexagons, non-3-valent vertices), against Figure 4's",
                 irregular(src),
                 irregular(m),

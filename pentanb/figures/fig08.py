@@ -61,7 +61,8 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
 
 REGIONS = (
     "If this subdivision is applied to a mesh that includes either (4, 4) or (6, 3) "
-    "regular regions, the resulting mesh will have classical (or geometrical) semi-regular "
+    "regular regions, the resulting mesh [...] will have classical (or geometrical) "
+    "semi-regular "
     "regions 4.3.3.4.3 (see Figure 8.A) or 6.3.3.3.3 (see Figures 9.A)"
 )
 

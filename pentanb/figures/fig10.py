@@ -113,10 +113,15 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
     front = _front(src)
     n = int(src.face_sizes[0])
     pts = out.vertices
-    mids = pts[n : n + src.n_edges]
+    mids = pts[n : n + src.n_edges][:n]  # the front face's edges are edges 0 .. n - 1
     c = mids.mean(axis=0)
-    err = float(np.abs(pts[out.faces[0]] - (c + SCALE * (mids - c))).max())
-    sizes = out.face_sizes[front]
+    inner = pts[out.faces[0]]
+    err = (
+        float(np.abs(inner - (c + SCALE * (mids - c))).max())
+        if inner.shape == mids.shape
+        else float("inf")
+    )
+    sizes = out.face_sizes[front[front < out.n_faces]]
     return [
         exact(
             "fig10.pentagons",

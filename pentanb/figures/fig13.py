@@ -75,8 +75,9 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
 
 
 SOCCER = (
-    "If one applies a honeycomb subdivision, dual of sqrt(3) or dual of Loop, to the "
-    "pentagonal meshes, the resulting meshes do not include any triangle or quadrilateral."
+    "If one applies a honeycomb subdivision, dual of sqrt(3) [5, 8, 19, 6] or dual of Loop "
+    "[18, 12], to the pentagonal meshes, the resulting meshes do not include any triangle or "
+    "quadrilateral."
 )
 
 
@@ -89,7 +90,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
         exact(
             "fig13.A.soccer_ball",
             "Section 6, Figure 13",
-            "the portions of the resulting mesh resemble geodesic domes (also called "
+            "the portions of the resulting mesh resemble geodesic domes [16] (also called "
             "buckyballs, fullerenes or soccerballs)",
             "(A) faces by size, valences, (V, E, F), against the truncated icosahedron's",
             ({5: 12, 6: 20}, {3: 60}, (60, 90, 32)),

@@ -269,8 +269,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
         exact(
             "eq1.no_hexagons_g0",
             "Section 4",
-            "For g = 0 and n = 6 the equation 1 becomes m = 3 (1 - 2/v). In this equation m is "
-            "always smaller than 3 regardless of the value of v. This shows that it is not "
+            "For g = 0 and n = 6 the equation 1 becomes [...] m = 3 (1 - 2/v) In this equation m "
+            "is always smaller than 3 regardless of the value of v. This shows that it is not "
             "possible to create a hexagonal mesh for g = 0.",
             "sum over faces of (6 - sides) and smallest and largest valence of the "
             + ", ".join(honey)
@@ -309,8 +309,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
         judged(
             "eq1.limit",
             "Section 4",
-            "Another interesting case occurs when v goes to infinity. m -> 2n/(n-2). This is "
-            "the same as the value of the m for g = 1",
+            "Another insteresting case occurs when v goes to infinity. [...] This is the same as "
+            "the value of the m for g = 1",
             "|2E/V - 10/3| of " + ", ".join(grow) + f": {fmt([float(x) for x in gaps])}; 2E/V "
             f"of the gyro(hexagonal torus) (g = 1): {fmt(torus_m)}",
             "holds if the distance to 10/3 falls as v grows and the genus-1 mesh has "
