@@ -665,7 +665,9 @@ def edge_profile(
     Returns
     -------
     x, r : (k,) float
-        Sorted by ``x``; the curve is straight between its points.
+        Sorted by ``x``; the curve is straight between its points.  At the
+        ends (``|x|`` near ``half``) the plane also cuts the box's end faces;
+        :func:`lateral_amplitude` measures away from them.
     """
     if not 35.0 <= angle <= 55.0:
         raise ValueError(f"angle must be from 35 to 55 degrees, got {angle}")
