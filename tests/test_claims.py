@@ -29,9 +29,11 @@ import pentanb
 from pentanb import figures, shapes, subdivide
 from pentanb.analysis import convergence as cv
 from pentanb.analysis import lateral as lt
-from pentanb.figures import FAILS, HOLDS, WITHIN, Claim
-from pentanb.figures import claim as cl
 from pentanb.figures import (
+    FAILS,
+    HOLDS,
+    WITHIN,
+    Claim,
     convergence,
     fig01,
     fig03,
@@ -41,6 +43,7 @@ from pentanb.figures import (
     lateral,
     section4,
 )
+from pentanb.figures import claim as cl
 from pentanb.figures._flat import pillow
 
 #: claim key -> names of the tests that falsify it (filled by :func:`falsifies`).
@@ -93,9 +96,7 @@ def test_claim_fig01_B_fails_on_pentagon_preservation_of_the_cube():
 @falsifies("fig01.C.counts", "fig01.C.pentagons")
 def test_claim_fig01_C_fails_on_two_pentagon_preservations():
     p = figures.panels(1)
-    leaves(
-        figures.claims(1, dict(p, C=quinto(p["A"], 2))), "fig01.C.counts", "fig01.C.pentagons"
-    )
+    leaves(figures.claims(1, dict(p, C=quinto(p["A"], 2))), "fig01.C.counts", "fig01.C.pentagons")
 
 
 @falsifies("fig01.D.counts", "fig01.D.pentagons")
@@ -193,9 +194,7 @@ def test_claim_fig05_irregular_fails_on_a_source_with_a_pentagon():
     p = figures.panels(5)
     src = figures.fig05._sources()[0]
     with_pentagon = pentanb.preserve_pentagons(pentanb.shapes.dodecahedron())
-    leaves(
-        figures.fig05.claims(dict(p, **{"source A": with_pentagon})), "fig05.A.irregular"
-    )
+    leaves(figures.fig05.claims(dict(p, **{"source A": with_pentagon})), "fig05.A.irregular")
     assert src.face_size_histogram() == {6: 72}
 
 
@@ -203,9 +202,7 @@ def test_claim_fig05_irregular_fails_on_a_source_with_a_pentagon():
 @falsifies("fig06.pentagons", "fig06.corners")
 def test_claim_fig06_fails_on_a_triangulated_hexagon():
     p = figures.panels(6)
-    leaves(
-        fig06.claims(dict(p, B=pentanb.triangulate(p["A"]))), "fig06.pentagons", "fig06.corners"
-    )
+    leaves(fig06.claims(dict(p, B=pentanb.triangulate(p["A"]))), "fig06.pentagons", "fig06.corners")
 
 
 @falsifies("fig06.thirds", "fig06.centroid")
@@ -399,7 +396,10 @@ def test_claim_eq1_meshes_fails_on_a_mesh_of_another_genus():
 
 @falsifies("eq1.meshes")
 def test_claim_eq1_meshes_fails_on_mixed_faces():
-    leaves(section4.claims({"genus 3": pentanb.preserve_pentagons(shapes.genus_surface(3))}), "eq1.meshes")
+    leaves(
+        section4.claims({"genus 3": pentanb.preserve_pentagons(shapes.genus_surface(3))}),
+        "eq1.meshes",
+    )
 
 
 @falsifies("eq1.no_hexagons_g0")
@@ -434,7 +434,7 @@ def small_lateral():
 def swapped(data: lt.Lateral, pairs: dict[str, str]) -> lt.Lateral:
     """The study with the results of scheme ``pairs[s]`` filed under ``s``."""
     amp, prof = dict(data.amplitude), dict(data.profile)
-    for (b, s) in list(data.amplitude):
+    for b, s in list(data.amplitude):
         for to, src in pairs.items():
             if s == src:
                 amp[b, to] = data.amplitude[b, src]
@@ -446,14 +446,17 @@ def swapped(data: lt.Lateral, pairs: dict[str, str]) -> lt.Lateral:
 def test_claim_lateral_fails_on_vertex_insertion_meshes(small_lateral):
     # a scheme whose edges stay straight: the finding turns into "holds"
     data = swapped(
-        small_lateral, {"pentagonalize": "vertex_insertion", "preserve_pentagons": "vertex_insertion"}
+        small_lateral,
+        {"pentagonalize": "vertex_insertion", "preserve_pentagons": "vertex_insertion"},
     )
     leaves(lateral.claims(data=data), "lateral.pentagonalize", "lateral.preserve_pentagons")
 
 
 @falsifies("lateral.honeycomb")
 def test_claim_lateral_honeycomb_fails_on_vertex_insertion_meshes(small_lateral):
-    data = swapped(small_lateral, {"honeycomb": "vertex_insertion", "preserve_pentagons": "pentagonalize"})
+    data = swapped(
+        small_lateral, {"honeycomb": "vertex_insertion", "preserve_pentagons": "pentagonalize"}
+    )
     leaves(lateral.claims(data=data), "lateral.honeycomb")
 
 
@@ -527,7 +530,9 @@ def test_claim_schemes_fails_on_another_schemes_output():
     mesh = fig03.capped_prism()
     names = list(formulas.PAPER)
     # every scheme's output filed under the next scheme's name
-    outputs = {name: pentanb.SCHEMES[names[(i + 1) % len(names)]](mesh) for i, name in enumerate(names)}
+    outputs = {
+        name: pentanb.SCHEMES[names[(i + 1) % len(names)]](mesh) for i, name in enumerate(names)
+    }
     leaves(formulas.scheme_claims(mesh, outputs), *[f"schemes.{n}" for n in names])
 
 
@@ -598,7 +603,9 @@ def test_verdicts_and_regressions():
 
 
 def test_monotone_claim_names_the_first_rise():
-    c = cl.monotone_claim("k", "s", "q", "w", {"a": [3, 2, 1], "b": [3, 4, 1]}, ["x", "y", "z"], HOLDS)
+    c = cl.monotone_claim(
+        "k", "s", "q", "w", {"a": [3, 2, 1], "b": [3, 4, 1]}, ["x", "y", "z"], HOLDS
+    )
     assert c.verdict == FAILS and "(rises at y)" in c.measured and c.regressed
 
 
@@ -607,7 +614,7 @@ def test_report_prints_findings_and_regressions():
     regress = cl.exact("f.two", "Section 2", "other words", "y", 1, 2)
     fine = cl.exact("f.three", "Section 3", "more words", "z", 1, 1)
     text = cl.format_report({"f": [finding, regress, fine]}, {"f": "title"})
-    assert '[does not hold as stated] f.one  FINDING' in text
+    assert "[does not hold as stated] f.one  FINDING" in text
     assert "[does not hold as stated] f.two  REGRESSION (recorded: holds)" in text
     assert 'paper (Section 3): "more words"' in text
     assert text.splitlines()[-1] == (

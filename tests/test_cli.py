@@ -151,7 +151,10 @@ def test_a_regression_exits_1(monkeypatch, tmp_path, capsys):
     _swap_claims(monkeypatch, "fig02", [regressed])
     assert main(["figures", "--out", str(tmp_path), "--only", "2"]) == 1
     last = capsys.readouterr().out.splitlines()[-1]
-    assert "1 REGRESSIONS: fig02.regressed (recorded: holds, measured: does not hold as stated)" in last
+    assert (
+        "1 REGRESSIONS: fig02.regressed (recorded: holds, measured: does not hold as stated)"
+        in last
+    )
 
 
 def test_a_finding_that_starts_to_hold_is_a_regression_too(monkeypatch, tmp_path, capsys):

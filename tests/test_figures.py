@@ -186,8 +186,10 @@ def test_regressed_claim_gives_exit_1(monkeypatch, tmp_path):
         status = main(["figures", "--out", str(tmp_path), "--only", "2"])
     assert status == 1
     assert "[does not hold as stated] fig02.bad  REGRESSION (recorded: holds)" in buf.getvalue()
-    assert buf.getvalue().splitlines()[-1].endswith(
-        "1 REGRESSIONS: fig02.bad (recorded: holds, measured: does not hold as stated)"
+    assert (
+        buf.getvalue()
+        .splitlines()[-1]
+        .endswith("1 REGRESSIONS: fig02.bad (recorded: holds, measured: does not hold as stated)")
     )
 
 
@@ -316,7 +318,8 @@ def test_panels_and_claims_need_no_matplotlib():
     code = (
         "import sys, pentanb.figures as f; "
         "f.panels(11)['A']; f.panels(6); "
-        "assert not any(c.regressed for n in ('fig07', 'fig06', 'equation1') for c in f.claims(n)); "
+        "names = ('fig07', 'fig06', 'equation1'); "
+        "assert not any(c.regressed for n in names for c in f.claims(n)); "
         "assert 'matplotlib' not in sys.modules, 'matplotlib imported'"
     )
     subprocess.run([sys.executable, "-c", code], check=True)

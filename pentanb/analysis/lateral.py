@@ -166,4 +166,3 @@ def wavelength(x: ArrayLike, r: ArrayLike, samples: int = 512) -> float:
     power = np.abs(np.fft.rfft(y)) ** 2
     k = int(np.argmax(power[1:])) + 1
     return float((grid[-1] - grid[0]) * samples / (samples - 1) / k)
-

@@ -414,9 +414,7 @@ def angle_spread(mesh: Mesh, faces: ArrayLike | None = None, by: str = "size") -
         return 0.0
     ang = corner_angles(mesh)[hs]
     key = (
-        mesh.face_sizes[mesh.halfedge_face[hs]]
-        if by == "size"
-        else mesh.valences[mesh.corners[hs]]
+        mesh.face_sizes[mesh.halfedge_face[hs]] if by == "size" else mesh.valences[mesh.corners[hs]]
     )
     _, inv = np.unique(key, return_inverse=True)
     means = np.bincount(inv, weights=ang) / np.bincount(inv)

@@ -99,17 +99,17 @@ def _merge(v: np.ndarray, faces: list[list[int]], sizes: tuple[int, int], most: 
     """Join up to ``most`` pairs of neighbouring faces of the given sizes, flattest
     first (angle between their normals below ``limit`` degrees), each face at most
     once, never taking a vertex below valence 3."""
-    owner = {}
-    for fi, f in enumerate(faces):
-        for a, b in zip(f, f[1:] + f[:1]):
+    owner: dict[tuple[int, int], int] = {}
+    for fi, face in enumerate(faces):
+        for a, b in zip(face, face[1:] + face[:1]):
             owner[a, b] = fi
     valence = np.bincount(np.concatenate(faces), minlength=len(v))
-    pairs = []
+    pairs: list[tuple[float, int, int, int, int]] = []
     for (a, b), f in owner.items():
         g = owner[b, a]
         if f < g and sorted((len(faces[f]), len(faces[g]))) == sorted(sizes):
             cos = float(np.clip(_normal(v, faces[f]) @ _normal(v, faces[g]), -1.0, 1.0))
-            pairs.append((np.degrees(np.arccos(cos)), a, b, f, g))
+            pairs.append((float(np.degrees(np.arccos(cos))), a, b, f, g))
     pairs.sort()
     used: set[int] = set()
     alive = [True] * len(faces)
@@ -132,7 +132,7 @@ def _merge(v: np.ndarray, faces: list[list[int]], sizes: tuple[int, int], most: 
         valence[a] -= 1
         valence[b] -= 1
         done += 1
-    return [f for f, keep in zip(faces, alive) if keep]
+    return [face for face, keep in zip(faces, alive) if keep]
 
 
 def build() -> tuple[np.ndarray, list[list[int]]]:

@@ -157,7 +157,7 @@ def fmt(x: object) -> str:
     if isinstance(x, list):
         return "[" + ", ".join(fmt(v) for v in x) + "]"
     if hasattr(x, "item") and getattr(x, "ndim", None) == 0:  # numpy scalar
-        return fmt(x.item())  # type: ignore[attr-defined]
+        return fmt(x.item())
     return str(x)
 
 

@@ -128,8 +128,7 @@ G1 = (
     "G1 continuity."
 )
 UNIFORM = (
-    "the resulting shape becomes more and more uniform with each application of dual "
-    "operation."
+    "the resulting shape becomes more and more uniform with each application of dual operation."
 )
 
 #: The verdicts recorded for the study's claims (as measured when they were written).

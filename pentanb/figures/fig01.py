@@ -135,7 +135,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             [5],
             sorted(c.face_size_histogram()),
         ),
-        counts_claim("fig01.D.counts", f"{S52}, Figure 1.D", STEPS_P, "(D)", b, d, "preserve_pentagons"),
+        counts_claim(
+            "fig01.D.counts", f"{S52}, Figure 1.D", STEPS_P, "(D)", b, d, "preserve_pentagons"
+        ),
         exact(
             "fig01.D.pentagons",
             f"{S52}, Figure 1.D",

@@ -77,8 +77,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
         exact(
             "fig04.A.valence",
             "Section 4, equation (1)",
-            "m = 2n/(n-2) (1 + (2g-2)/v) [...] This is the same as the value of the m for "
-            "g = 1",
+            "m = 2n/(n-2) (1 + (2g-2)/v) [...] This is the same as the value of the m for g = 1",
             "(A) (n = 6, built with g = 1) valences, against m = 3 for every v: all 3-valent",
             {3: a.n_vertices},
             a.valence_histogram(),

@@ -149,6 +149,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "corresponding to vi,j.",
             "corners of the central face by valence (each joined to its midpoint: 3)",
             {3: n},
-            {int(k): int(v) for k, v in zip(*np.unique(out.valences[out.faces[0]], return_counts=True))},
+            {
+                int(k): int(v)
+                for k, v in zip(*np.unique(out.valences[out.faces[0]], return_counts=True))
+            },
         ),
     ]

@@ -79,7 +79,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
         return int((m.face_sizes != 5).sum())
 
     return [
-        counts_claim("fig11.A.counts", "Section 5.2, Figure 11", SPLIT, "(A)", src, a, "preserve_pentagons"),
+        counts_claim(
+            "fig11.A.counts", "Section 5.2, Figure 11", SPLIT, "(A)", src, a, "preserve_pentagons"
+        ),
         exact(
             "fig11.A.faces",
             "Section 5.2, Figure 11",

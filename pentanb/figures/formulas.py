@@ -20,7 +20,9 @@ from .fig03 import capped_prism
 
 __all__ = ["TITLE", "scheme_claims", "PAPER"]
 
-TITLE = "Every scheme's counts and kind of mesh, checked on a mesh with triangles, quads and a pentagon"
+TITLE = (
+    "Every scheme's counts and kind of mesh, checked on a mesh with triangles, quads and a pentagon"
+)
 
 
 def _sizes(m: Mesh) -> list[int]:
@@ -100,7 +102,9 @@ PAPER: dict[str, tuple[str, str, str, Callable[[Mesh], object], object]] = {
 }
 
 
-def scheme_claims(mesh: Mesh | None = None, outputs: Mapping[str, Mesh] | None = None) -> list[Claim]:
+def scheme_claims(
+    mesh: Mesh | None = None, outputs: Mapping[str, Mesh] | None = None
+) -> list[Claim]:
     """Every scheme's counts and kind of mesh, checked on a mesh.
 
     Parameters

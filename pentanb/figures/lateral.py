@@ -120,8 +120,8 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
         cells = [int(b.split()[0]) for b in boxes]
         for s in lt.LATERAL_SCHEMES:
             color, ls = STYLE[s]
-            y = [max(data.worst(b, s)[-1], ZERO) for b in boxes]
-            ax.loglog(cells, y, ls, color=color, marker="o", ms=3)
+            last = [max(float(data.worst(b, s)[-1]), ZERO) for b in boxes]
+            ax.loglog(cells, last, ls, color=color, marker="o", ms=3)
         ax.axhline(ZERO, color="#777777", lw=0.6)
         ax.set_xticks(cells)
         ax.set_xticklabels([str(c) for c in cells])
@@ -172,7 +172,9 @@ def _period(data: lt.Lateral, scheme: str) -> str:
     wl = lt.wavelength(x, r)
     cell = lt.BOXES[box][2]
     where = f"{box}, last level"
-    return f"{where}: no wave" if np.isnan(wl) else f"{where}: period {wl:.3f} = {wl / cell:.2f} cells"
+    return (
+        f"{where}: no wave" if np.isnan(wl) else f"{where}: period {wl:.3f} = {wl / cell:.2f} cells"
+    )
 
 
 def claims(meshes: Mapping[str, Mesh] | None = None, data: lt.Lateral | None = None) -> list[Claim]:
@@ -198,8 +200,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None, data: lt.Lateral | None = N
                 f"{SCHEMES[s].label} + two duals, peak-to-peak height of the wave along the 12 "
                 f"straight edges (largest), levels 1-{lt.LEVELS}, box size 2: "
                 f"{_table(data, s)}; {_period(data, s)}",
-                f"holds if every height is below {ZERO:g} (no wave) on every box at every "
-                "level",
+                f"holds if every height is below {ZERO:g} (no wave) on every box at every level",
                 HOLDS if peak <= ZERO else FAILS,
                 FAILS,
             )

@@ -16,6 +16,7 @@ stays the drawing function.)
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Mapping
 from fractions import Fraction
 from typing import TYPE_CHECKING
@@ -258,7 +259,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "eq1.meshes",
             "Section 4",
             EQ1,
-            "average valence 2E/V of the " + ", ".join(f"{k} (built with g = {genus[k]})" for k in ngonal)
+            "average valence 2E/V of the "
+            + ", ".join(f"{k} (built with g = {genus[k]})" for k in ngonal)
             + ", against equation (1) with that g",
             {k: _eq1(m[k], genus[k]) for k in ngonal},
             {k: _m(m[k]) for k in ngonal},
@@ -304,7 +306,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
     grow = ["gyro(cube)", "gyro(cube) x2", "gyro(cube) x3"]
     gaps = [abs(_m(m[k]) - Fraction(10, 3)) for k in grow]
     torus_m = _m(m["gyro(hexagonal torus)"])
-    falls = all(b < a for a, b in zip(gaps, gaps[1:]))
+    falls = all(b < a for a, b in itertools.pairwise(gaps))
     out.append(
         judged(
             "eq1.limit",
@@ -313,8 +315,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "the value of the m for g = 1",
             "|2E/V - 10/3| of " + ", ".join(grow) + f": {fmt([float(x) for x in gaps])}; 2E/V "
             f"of the gyro(hexagonal torus) (g = 1): {fmt(torus_m)}",
-            "holds if the distance to 10/3 falls as v grows and the genus-1 mesh has "
-            "exactly 10/3",
+            "holds if the distance to 10/3 falls as v grows and the genus-1 mesh has exactly 10/3",
             HOLDS if falls and torus_m == Fraction(10, 3) else FAILS,
         )
     )
