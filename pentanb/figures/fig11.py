@@ -110,7 +110,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
         ),
         region_claim(
             "fig11.A.geometry",
-            "Figure 11 (Section 5.1's classical regions)",
+            "Figure 11, read with Section 5.1's 'classical (or geometrical)' regions",
             "A semi-regular tiling created by pentagon preserving scheme that is applied to a "
             "cube.",
             [("level 1 (A)", a), ("level 2", a2), ("level 3", a3)],
