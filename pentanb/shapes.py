@@ -1,4 +1,4 @@
-"""Test shapes: the Platonic solids, tori, higher genus and a low-poly animal.
+"""Test shapes: the Platonic solids, boxes, tori, higher genus and two low-poly rabbits.
 
 Every function returns a closed, outward-oriented :class:`~pentanb.Mesh`.
 :data:`SHAPES` lists them by name (with their default sizes) for sliders,
@@ -29,6 +29,8 @@ __all__ = [
     "hexagonal_surface",
     "voxels",
     "hard_edged_cube",
+    "box",
+    "rabbit",
     "animal",
     "outward",
     "SHAPES",
@@ -313,11 +315,12 @@ def hard_edged_cube(inset: float = 0.8) -> Mesh:
     """A cube with hard edges: each face a 3x3 grid whose outer rows are thin.
 
     The planes ``+-inset`` cut every face into a big central quad, four
-    strips along the edges and four small corner squares (54 quads): with
-    the default inset, the sharp-edged cube of Figures 1 and 8, whose
-    4-valent grid vertices make the (4, 4) regions that become 4.3.3.4.3
-    after pentagonalization.  Figure 11 uses ``inset=1/3``: every face an
-    even 3x3 grid.
+    strips along the edges and four small corner squares (54 quads).  This
+    package's reading of the cube of Figures 1 and 8 (the paper does not
+    describe its cube): the thin strips keep the edges hard under the
+    duals, and the 4-valent grid vertices make the (4, 4) regions that
+    become 4.3.3.4.3 after pentagonalization.  ``inset=1/3`` gives
+    :func:`box` ``(3)``.
 
     Parameters
     ----------
@@ -329,12 +332,53 @@ def hard_edged_cube(inset: float = 0.8) -> Mesh:
     return m.with_vertices(coord[np.rint(m.vertices).astype(int)])
 
 
+def box(cells: int = 3) -> Mesh:
+    """The cube ``[-1, 1]^3`` with every face an even ``cells x cells`` grid of quads.
+
+    The boxes of the lateral-artifact study (Section 1; issue 8): their 12
+    edges are straight and every grid line meets them at the same spacing
+    ``2 / cells``.  ``box(1)`` is :func:`cube` (numbered differently).
+
+    Parameters
+    ----------
+    cells : int, >= 1
+
+    Returns
+    -------
+    Mesh
+        ``6 cells^2`` quads, ``6 cells^2 + 2`` vertices, genus 0.
+    """
+    if isinstance(cells, bool) or not isinstance(cells, (int, np.integer)) or cells < 1:
+        raise ValueError(f"cells must be an integer >= 1, got {cells!r}")
+    n = int(cells)
+    m = voxels(np.ones((n, n, n), dtype=bool))
+    return m.with_vertices(m.vertices * (2.0 / n) - 1.0)
+
+
+def rabbit() -> Mesh:
+    """An irregular low-polygon rabbit: the initial mesh of Figure 12.
+
+    172 vertices and 231 faces (136 triangles, 81 quadrilaterals, 14
+    pentagons), vertex valences 3 to 7, closed, genus 0, about 2.7 units
+    long.  The paper's model (by Esan Mandal) is not available; this one is
+    built by :mod:`pentanb.data.make_rabbit` (a star-shaped union of
+    ellipsoids, triangulated and partly merged into larger faces) and
+    shipped as ``pentanb/data/rabbit.obj`` (read here with numpy only).
+    """
+    from importlib import resources
+
+    from .io import read_obj
+
+    with resources.as_file(resources.files("pentanb.data") / "rabbit.obj") as path:
+        return read_obj(path)
+
+
 def animal() -> Mesh:
-    """A low-poly rabbit of unit cubes standing in for Figure 12's model.
+    """A voxel rabbit: 178 unit-cube quads (valences 3 to 5) scaled into [-1, 1]^3.
 
     Genus 0 with hard features: a body, four legs, a head with a snout, two
-    long ears and a tail (178 quads; valences 3 to 5), scaled into
-    [-1, 1]^3.
+    long ears and a tail.  Figure 12 used it before :func:`rabbit`; it stays
+    as a quads-only shape with hard edges.
     """
     occ = np.zeros((11, 5, 10), dtype=bool)
     occ[2:7, 1:4, 2:5] = True  # body
@@ -356,6 +400,7 @@ SHAPES: dict[str, Callable[[], Mesh]] = {
     "tetrahedron": tetrahedron,
     "cube": cube,
     "hard_cube": hard_edged_cube,
+    "box": box,
     "octahedron": octahedron,
     "dodecahedron": dodecahedron,
     "icosahedron": icosahedron,
@@ -364,6 +409,7 @@ SHAPES: dict[str, Callable[[], Mesh]] = {
     "double_torus": double_torus,
     "hexagonal_genus2": lambda: hexagonal_surface(2),
     "genus3": lambda: genus_surface(3),
+    "rabbit": rabbit,
     "animal": animal,
 }
 

@@ -36,6 +36,7 @@ from . import (
     fig12,
     fig13,
     formulas,
+    lateral,
     section4,
 )
 from .claim import Claim, format_report
@@ -122,6 +123,7 @@ FIGURES: dict[str, FigureSpec] = {
     "fig12": _spec("fig12", fig12),
     "fig13": _spec("fig13", fig13),
     "equation1": _spec("equation1", section4),
+    "lateral": _spec("lateral", lateral),
     "convergence": _spec("convergence", convergence),
 }
 
@@ -153,7 +155,7 @@ def panels(name: int | str) -> dict[str, Mesh]:
     """The meshes a figure draws, by panel label: ``panels(11)["A"]``.
 
     Built afresh on every call (nothing is cached).  Figures whose panels are
-    charts (``"equation1"``, ``"convergence"``) have no meshes: ``{}``.  The
+    charts (``"equation1"``, ``"lateral"``, ``"convergence"``) have no meshes: ``{}``.  The
     flat diagrams (Figures 6 and 10) start from a two-faced "pillow": their
     meshes are closed, but keep its 2-valent corners, which the
     :class:`~pentanb.Mesh` constructor refuses: draw and measure them, but
@@ -182,7 +184,16 @@ def claims(name: int | str, meshes: Mapping[str, Mesh] | None = None) -> list[Cl
     name : int or str
         As for :func:`get`.
     meshes : dict, optional
-        The figure's :func:`panels`, if already built (they are built here otherwise).
+        The figure's :func:`panels`, if already built (they are built here
+        otherwise); a claims function also takes, under their own names, the
+        source meshes it compares with (e.g. ``"source"``), so that a test can
+        give it a wrong one.
+
+    Returns
+    -------
+    list of Claim
+        Each with the paper's words, the measurement and a verdict
+        (:data:`~pentanb.figures.claim.VERDICTS`).
     """
     return get(name).claims(meshes)
 
@@ -257,7 +268,8 @@ def check_all(names: Iterable[int | str] | None = None) -> dict[str, list[Claim]
 
 
 def report(results: Mapping[str, list[Claim]]) -> str:
-    """The claims as text: one block per figure, one line per claim, then a total.
+    """The claims as text: one block per figure, four lines per claim, the findings,
+    then the totals (:func:`~pentanb.figures.claim.format_report`).
 
     Parameters
     ----------
