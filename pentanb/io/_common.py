@@ -113,11 +113,12 @@ def show(line: bytes, limit: int = 60) -> str:
 
 
 def line_blocks(
-    fh: IO[bytes], path: Path, kind: str, block_bytes: int = BLOCK_BYTES
+    fh: IO[bytes], path: Path, kind: str, block_bytes: int | None = None
 ) -> Iterator[tuple[int, bytes]]:
     """The file as blocks of whole lines: ``(number of the block's first line, bytes)``.
 
-    Every block ends with ``b"\\n"``.  A UTF-8 byte-order mark at the start
+    Every block ends with ``b"\\n"``; blocks are about ``block_bytes``
+    long (default :data:`BLOCK_BYTES`).  A UTF-8 byte-order mark at the start
     is dropped; a file whose lines end in a bare ``\\r`` (old Mac) is read
     as if they ended in ``\\n``.
 
@@ -127,6 +128,7 @@ def line_blocks(
         A NUL byte (a binary file, or UTF-16 text) or a line longer than
         :data:`MAX_LINE_BYTES`, naming the file and line.
     """
+    block_bytes = block_bytes or BLOCK_BYTES
     lineno = 1
     rest = b""
     first = True

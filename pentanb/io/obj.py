@@ -189,6 +189,11 @@ def _slow(block: bytes, nv: int, lineno: int, path: Path) -> _Part:
                     i = int(token.split(b"/", 1)[0])
                 except ValueError:
                     raise MeshError(f"{path}:{n}: bad face index {show(token)}") from None
+                if abs(i) >= 1 << 62:
+                    raise MeshError(
+                        f"{path}:{n}: face index {i} out of range "
+                        "(no file holds that many vertices)"
+                    )
                 if i > 0:
                     i -= 1  # may refer to a vertex defined further down
                 elif i < 0:
