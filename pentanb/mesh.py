@@ -786,6 +786,21 @@ class Mesh:
             bad_v = _multi_fan_vertex(self.rotation, c, self.valences)
             raise MeshError(f"vertex {bad_v} is non-manifold: its faces form more than one fan")
 
+    # ------------------------------------------------------------------ other libraries
+    @classmethod
+    def from_trimesh(cls, tmesh: Any) -> Mesh:
+        """A mesh from a ``trimesh.Trimesh`` (see :func:`pentanb.io.from_trimesh`)."""
+        from .io.convert import from_trimesh
+
+        return from_trimesh(tmesh)
+
+    def to_trimesh(self) -> Any:
+        """This mesh as a ``trimesh.Trimesh``, polygons fanned into triangles
+        (see :func:`pentanb.io.to_trimesh`)."""
+        from .io.convert import to_trimesh
+
+        return to_trimesh(self)
+
 
 # ---------------------------------------------------------------------- helpers
 _NOT_ARRAYS = (str, bytes, dict, set, frozenset)

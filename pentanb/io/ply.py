@@ -465,7 +465,9 @@ def _whole(values: np.ndarray, path, n0, lines, row_of) -> np.ndarray:
     bad = np.flatnonzero(values != np.floor(values))
     if bad.size:
         line = int(lines[row_of[bad[0]]])
-        raise MeshError(f"{path}:{n0 + line}: vertex index {values[bad[0]]!r} is not an integer")
+        raise MeshError(
+            f"{path}:{n0 + line}: vertex index {float(values[bad[0]])!r} is not an integer"
+        )
     return values.astype(np.int64)
 
 

@@ -73,6 +73,11 @@ def read_stl(path: str | os.PathLike, tolerance: float = 0.0) -> Mesh:
         elif head.lstrip().startswith(b"solid"):
             fh.seek(0)
             corners, lines = _read_text(fh, path)
+        elif count >= 0 and all(9 <= b < 127 for b in head):
+            raise MeshError(
+                f"{path}:1: text that does not start with 'solid': not an ASCII STL file (and "
+                "not a binary one: its size does not match)"
+            )
         elif count >= 0:
             raise MeshError(
                 f"{path}: a binary STL whose header says {count:,} triangles "
