@@ -864,9 +864,9 @@ def _as_indices(values: Any, what: str) -> IntArray | str:
                 if isinstance(x, (float, np.floating)) and float(x).is_integer():
                     continue
                 return f"{what} has non-integer vertex indices {flat[:8]}"
-        big = [x for x in flat if not -_INDEX_LIMIT <= int(x) < _INDEX_LIMIT]
-        if big:
-            return f"{what} uses vertex index {int(big[0])}, out of range (larger than any mesh)"
+        huge = [x for x in flat if not -_INDEX_LIMIT <= int(x) < _INDEX_LIMIT]
+        if huge:
+            return f"{what} uses vertex index {int(huge[0])}, out of range (larger than any mesh)"
         a = np.array([int(x) for x in flat], dtype=np.int64).reshape(a.shape)
     if a.dtype.kind == "u":
         if a.size and a.max() >= _INDEX_LIMIT:
@@ -908,15 +908,15 @@ def _as_csr(faces: Any) -> tuple[IntArray, IntArray]:
         m, k = faces.shape
         if m == 0:
             raise MeshError("the mesh has no faces")
-        flat = _as_indices(faces, "face")
-        if isinstance(flat, str):
+        indices = _as_indices(faces, "face")
+        if isinstance(indices, str):
             rows = faces.reshape(m, -1)
             for f in range(m):  # name the first face at fault
                 problem = _as_indices(rows[f], f"face {f}")
                 if isinstance(problem, str):
                     raise MeshError(problem + ": face indices must be integers")
-            raise MeshError(flat)  # pragma: no cover - a row is always at fault
-        return flat, np.arange(m + 1, dtype=np.int64) * k
+            raise MeshError(indices)  # pragma: no cover - a row is always at fault
+        return indices, np.arange(m + 1, dtype=np.int64) * k
     if isinstance(faces, np.ndarray) and faces.ndim != 1:
         raise MeshError(
             f"faces must be a list of index sequences or an (m, k) array, got shape {faces.shape}"
