@@ -872,7 +872,8 @@ def _as_indices(values: Any, what: str) -> IntArray | str:
         if a.size and a.max() >= _INDEX_LIMIT:
             return f"{what} uses vertex index {int(a.max())}, out of range (larger than any mesh)"
     elif a.dtype.kind == "f":
-        whole = np.isfinite(a) & (np.mod(a, 1) == 0) if a.size else np.ones(0, bool)
+        with np.errstate(invalid="ignore"):
+            whole = np.isfinite(a) & (np.mod(a, 1) == 0)
         if not whole.all():
             return f"{what} has non-integer vertex indices {a.ravel()[:8].tolist()}"
         big = np.flatnonzero(np.abs(a.ravel()) >= float(_INDEX_LIMIT))
@@ -914,7 +915,8 @@ def _as_csr(faces: Any) -> tuple[IntArray, IntArray]:
             for f in range(m):  # name the first face at fault
                 problem = _as_indices(rows[f], f"face {f}")
                 if isinstance(problem, str):
-                    raise MeshError(problem + ": face indices must be integers")
+                    integers = ": face indices must be integers" if "non-integer" in problem else ""
+                    raise MeshError(problem + integers)
             raise MeshError(indices)  # pragma: no cover - a row is always at fault
         return indices, np.arange(m + 1, dtype=np.int64) * k
     if isinstance(faces, np.ndarray) and faces.ndim != 1:
