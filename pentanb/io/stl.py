@@ -227,10 +227,7 @@ def weld(points: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.nda
         The vertex of every point.
     """
     p = np.ascontiguousarray(points, dtype=np.float64) + 0.0  # -0.0 becomes 0.0
-    order = np.lexsort((p[:, 2], p[:, 1], p[:, 0]))
-    sp = p[order]
-    new = np.ones(p.shape[0], dtype=bool)
-    new[1:] = np.any(sp[1:] != sp[:-1], axis=1)
+    order, new = _groups(p)
     label = np.empty(p.shape[0], dtype=np.int64)
     label[order] = np.cumsum(new) - 1
     first = order[new]  # each group's first point (lexsort is stable)
@@ -243,6 +240,30 @@ def weld(points: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.nda
     rank = np.empty_like(by_first)
     rank[by_first] = np.arange(by_first.size)
     return p[first[by_first]], rank[label]
+
+
+def _groups(p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """An order of the points with equal points together (stable: the first
+    of a group first) and where each group starts in that order.
+
+    One sort by a 64-bit hash of the coordinates' bits; if two different
+    points share a hash, a lexicographic sort of the coordinates instead.
+    """
+    bits = np.ascontiguousarray(p.T).view(np.uint64)  # one row per coordinate
+    key = bits[0] * np.uint64(0x9E3779B97F4A7C15)
+    key ^= bits[1] * np.uint64(0xC2B2AE3D27D4EB4F)
+    key ^= bits[2] * np.uint64(0x165667B19E3779F9)
+    order = np.argsort(key, kind="stable")
+    sp = p[order]
+    same = np.all(sp[1:] == sp[:-1], axis=1)
+    sk = key[order]
+    if np.any((sk[1:] == sk[:-1]) & ~same):  # a collision: sort the coordinates
+        order = np.lexsort((p[:, 2], p[:, 1], p[:, 0]))
+        sp = p[order]
+        same = np.all(sp[1:] == sp[:-1], axis=1)
+    new = np.ones(p.shape[0], dtype=bool)
+    new[1:] = ~same
+    return order, new
 
 
 def _near(points: np.ndarray, tolerance: float) -> np.ndarray:
