@@ -119,6 +119,25 @@ def _as_counts(counts: object, caller: str) -> Counts:
     return V, E, F
 
 
+def _as_limit(max_bytes: object) -> float:
+    """``max_bytes`` as a number of bytes (``float("inf")``: no limit).
+
+    Raises
+    ------
+    TypeError
+        Not a number.
+    ValueError
+        NaN or not positive.
+    """
+    if isinstance(max_bytes, bool) or not isinstance(
+        max_bytes, (int, float, np.integer, np.floating)
+    ):
+        raise TypeError(f"max_bytes must be a number of bytes, got {type(max_bytes).__name__}")
+    if not max_bytes > 0:  # NaN too
+        raise ValueError(f"max_bytes must be a positive number of bytes, got {max_bytes!r}")
+    return float(max_bytes) if np.isinf(max_bytes) else int(max_bytes)
+
+
 def _vef(mesh: Mesh) -> Counts:
     return mesh.n_vertices, mesh.n_edges, mesh.n_faces
 
@@ -194,7 +213,7 @@ def subdivide(
         if unknown:
             takes = ", ".join(s.options) or "no options"
             raise ValueError(f"scheme {s.name!r} takes {takes}; got {sorted(unknown)}")
-        limit = default_max_bytes() if max_bytes is None else int(max_bytes)
+        limit = default_max_bytes() if max_bytes is None else _as_limit(max_bytes)
         steps = predict_counts(_vef(mesh), s, iterations, duals)
         if steps:
             V, E, F = max(steps, key=lambda c: estimate_bytes(*c))

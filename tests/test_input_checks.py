@@ -383,3 +383,26 @@ def test_figures_errors_in_a_subprocess_are_one_line(tmp_path):
         env={**os.environ, "PYTHONPATH": os.getcwd()},
     )
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize(
+    "max_bytes, error, message",
+    [
+        (float("nan"), ValueError, r"^max_bytes must be a positive number of bytes, got nan$"),
+        (-1, ValueError, r"^max_bytes must be a positive number of bytes, got -1$"),
+        (0, ValueError, r"^max_bytes must be a positive number of bytes, got 0$"),
+        ("1e9", TypeError, r"^max_bytes must be a number of bytes, got str$"),
+        (True, TypeError, r"^max_bytes must be a number of bytes, got bool$"),
+    ],
+)
+def test_subdivide_max_bytes_must_be_a_positive_number(max_bytes, error, message):
+    with pytest.raises(error, match=message):
+        pentanb.subdivide(shapes.cube(), "pentagonalize", 1, max_bytes=max_bytes)
+
+
+def test_subdivide_max_bytes_infinite_means_no_limit():
+    # float("inf") raised OverflowError (int(inf)); now it lifts the limit
+    m = pentanb.subdivide(shapes.cube(), "pentagonalize", 2, max_bytes=float("inf"))
+    assert m.n_faces == 120
+    with pytest.raises(MeshError, match=r"over the limit of 1,000 bytes"):
+        pentanb.subdivide(shapes.cube(), "pentagonalize", 2, max_bytes=1e3)
