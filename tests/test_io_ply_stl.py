@@ -452,3 +452,12 @@ def test_stl_write_options(tmp_path):
     with pytest.raises(TypeError, match=r"write_stl: ascii must be True or False, got 1"):
         write_stl(shapes.cube(), tmp_path / "c.stl", ascii=1)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_ascii_ply_numbers_numpy_does_not_parse_are_read_line_by_line(tmp_path):
+    # "1_0.0" is a Python float literal numpy's parsers refuse: the block is read again
+    # line by line, as the OBJ and OFF readers do, instead of failing
+    write_ply(shapes.cube(), tmp_path / "c.ply", ascii=True)
+    text = (tmp_path / "c.ply").read_text().replace("\n1.0 1.0 1.0\n", "\n1_0.0 1.0 1.0\n")
+    (tmp_path / "c.ply").write_text(text)
+    assert read(tmp_path / "c.ply").vertices[-1].tolist() == [10.0, 1.0, 1.0]

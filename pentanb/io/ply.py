@@ -392,16 +392,18 @@ def _text_rows(s, lines, block, n0, path, e):
     ntok = s.ntok[lines]
     data = s.select(lines, True)
     values = parse_floats(data, int(ntok.sum()))
-    if values is None:  # name the first line with something that is not a number
+    if values is None:  # line by line: read what numpy would not, or name the bad line
+        parsed: list[float] = []
         for line in lines.tolist():
             text = block[int(s.start[line]) : int(s.end[line])]
             try:
-                [float(x) for x in text.split()]
+                row: list[float] | None = [float(x) for x in text.split()]
             except ValueError:
-                raise MeshError(
-                    f"{path}:{n0 + line}: bad number in a {e.name} row: {show(text)}"
-                ) from None
-        raise AssertionError("unreachable: a block without a bad line failed to parse")
+                row = None
+            if row is None or len(row) != s.ntok[line]:
+                raise MeshError(f"{path}:{n0 + line}: bad number in a {e.name} row: {show(text)}")
+            parsed += row
+        values = np.array(parsed)
     first = np.cumsum(ntok) - ntok
     return values, ntok, first
 
