@@ -461,3 +461,16 @@ def test_ascii_ply_numbers_numpy_does_not_parse_are_read_line_by_line(tmp_path):
     text = (tmp_path / "c.ply").read_text().replace("\n1.0 1.0 1.0\n", "\n1_0.0 1.0 1.0\n")
     (tmp_path / "c.ply").write_text(text)
     assert read(tmp_path / "c.ply").vertices[-1].tolist() == [10.0, 1.0, 1.0]
+
+
+def test_weld_when_every_hash_collides(monkeypatch):
+    rng = np.random.default_rng(5)
+    base = rng.standard_normal((50, 3))
+    pts = base[rng.integers(0, 50, 400)]
+    v, index = weld(pts)
+    monkeypatch.setattr(pentanb.io.stl, "_hash", lambda cols: np.zeros(cols.shape[1], np.uint64))
+    v2, index2 = weld(pts)
+    assert np.array_equal(v, v2) and np.array_equal(index, index2)
+    assert np.array_equal(v[index], pts)
+    first = [int(np.flatnonzero(index == k)[0]) for k in range(v.shape[0])]
+    assert first == sorted(first)  # vertices in the order of first appearance

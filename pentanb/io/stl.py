@@ -227,10 +227,7 @@ def weld(points: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.nda
         The vertex of every point.
     """
     p = np.ascontiguousarray(points, dtype=np.float64) + 0.0  # -0.0 becomes 0.0
-    order, new = _groups(p)
-    label = np.empty(p.shape[0], dtype=np.int64)
-    label[order] = np.cumsum(new) - 1
-    first = order[new]  # each group's first point (lexsort is stable)
+    label, first = _groups(p)
     if tolerance > 0 and first.size > 1:
         merged = _near(p[first], tolerance)
         merged_first = np.full(int(merged.max()) + 1, p.shape[0], dtype=np.int64)
@@ -243,27 +240,42 @@ def weld(points: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.nda
 
 
 def _groups(p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """An order of the points with equal points together (stable: the first
-    of a group first) and where each group starts in that order.
+    """Group equal points: a group label for every point and each group's first point.
 
-    One sort by a 64-bit hash of the coordinates' bits; if two different
-    points share a hash, a lexicographic sort of the coordinates instead.
+    One sort by a 64-bit hash of the coordinates' bits, then a check that
+    the points sharing a hash are equal; if two different points share one
+    (a collision), a lexicographic sort of the coordinates instead.
     """
-    bits = np.ascontiguousarray(p.T).view(np.uint64)  # one row per coordinate
-    key = bits[0] * np.uint64(0x9E3779B97F4A7C15)
-    key ^= bits[1] * np.uint64(0xC2B2AE3D27D4EB4F)
-    key ^= bits[2] * np.uint64(0x165667B19E3779F9)
-    order = np.argsort(key, kind="stable")
-    sp = p[order]
-    same = np.all(sp[1:] == sp[:-1], axis=1)
-    sk = key[order]
-    if np.any((sk[1:] == sk[:-1]) & ~same):  # a collision: sort the coordinates
-        order = np.lexsort((p[:, 2], p[:, 1], p[:, 0]))
-        sp = p[order]
-        same = np.all(sp[1:] == sp[:-1], axis=1)
-    new = np.ones(p.shape[0], dtype=bool)
-    new[1:] = ~same
-    return order, new
+    cols = np.ascontiguousarray(p.T)  # one row per coordinate: 1-D takes are fastest
+    key = _hash(cols)
+    order = np.argsort(key)
+    sk = key.take(order)
+    runs = np.ones(p.shape[0], dtype=bool)
+    runs[1:] = sk[1:] != sk[:-1]
+    sorted_cols = [c.take(order) for c in cols]
+    same = np.ones(p.shape[0] - 1, dtype=bool)
+    for c in sorted_cols:
+        same &= c[1:] == c[:-1]
+    if np.any(~runs[1:] & ~same):  # a collision: sort the coordinates themselves
+        order = np.lexsort(cols[::-1])
+        sorted_cols = [c.take(order) for c in cols]
+        runs[1:] = False
+        for c in sorted_cols:
+            runs[1:] |= c[1:] != c[:-1]
+    starts = np.flatnonzero(runs)
+    label = np.empty(p.shape[0], dtype=np.int64)
+    label[order] = np.cumsum(runs) - 1
+    return label, np.minimum.reduceat(order, starts)
+
+
+def _hash(cols: np.ndarray) -> np.ndarray:
+    """(n,) uint64: a hash of the bits of the coordinates ``cols`` (3, n)."""
+    key = np.zeros(cols.shape[1], dtype=np.uint64)
+    for b, k in zip(cols.view(np.uint64), (0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B1)):
+        # fold the high bits (sign, exponent, the mantissa's top) down before mixing
+        key += (b ^ (b >> np.uint64(29))) * np.uint64(k)
+    key ^= key >> np.uint64(31)
+    return key
 
 
 def _near(points: np.ndarray, tolerance: float) -> np.ndarray:
