@@ -136,8 +136,8 @@ def torus(rings: int = 12, sides: int = 8, radius: float = 1.0, tube: float = 0.
     around the tube, so face 0 is centred on the outer equator at +x.
     """
     rings, sides = _grid_size(rings, sides)
-    if not (0 < tube < radius):
-        raise ValueError(f"need 0 < tube < radius, got tube={tube}, radius={radius}")
+    _radii(radius, tube)
+    _check_size(f"torus({rings}, {sides})", rings * sides, 2 * rings * sides, rings * sides)
     i, j = np.meshgrid(np.arange(rings), np.arange(sides), indexing="ij")
     v = _torus_points((i - 0.5) / rings, (j - 0.5) / sides, radius, tube)
     idx = lambda a, b: (a % rings) * sides + (b % sides)  # noqa: E731
@@ -163,8 +163,9 @@ def hexagonal_torus(
         sides + j`` surrounds grid point (i, j), face 0 on the outer equator.
     """
     rings, sides = _grid_size(rings, sides)
-    if not (0 < tube < radius):
-        raise ValueError(f"need 0 < tube < radius, got tube={tube}, radius={radius}")
+    _radii(radius, tube)
+    n = rings * sides  # (the triangulated grid it is the dual of is about as large)
+    _check_size(f"hexagonal_torus({rings}, {sides})", 2 * n, 3 * n, n)
     i, j = np.meshgrid(np.arange(rings), np.arange(sides), indexing="ij")
     idx = lambda a, b: (a % rings) * sides + (b % sides)  # noqa: E731
     a, b, c, d = idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)
@@ -183,6 +184,32 @@ def _torus_points(u, v, radius, tube):
     t, p = 2 * np.pi * np.asarray(u), 2 * np.pi * np.asarray(v)
     r = radius + tube * np.cos(p)
     return np.stack([r * np.cos(t), r * np.sin(t), tube * np.sin(p)], axis=-1)
+
+
+def _radii(radius, tube) -> None:
+    for name, value in (("radius", radius), ("tube", tube)):
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+            raise TypeError(f"{name} must be a number, got {type(value).__name__}")
+    if not (0 < tube < radius):
+        raise ValueError(f"need 0 < tube < radius, got tube={tube}, radius={radius}")
+
+
+def _check_size(what: str, V: int, E: int, F: int, extra: int = 0) -> None:
+    """Refuse (MeshError) a shape whose mesh would need more than half the memory.
+
+    The bytes are :func:`pentanb.subdivision.estimate_bytes` of its counts
+    (plus ``extra``), the limit :func:`pentanb.subdivision.default_max_bytes`,
+    as for :func:`pentanb.subdivide`.
+    """
+    from .subdivision import default_max_bytes, estimate_bytes
+
+    limit = default_max_bytes()
+    need = estimate_bytes(V, E, F) + extra
+    if need > limit:
+        raise MeshError(
+            f"{what} would build a mesh of {F:,} faces ({V:,} vertices, {E:,} edges) needing "
+            f"about {need:,} bytes, over the limit of {limit:,} bytes (half the physical memory)"
+        )
 
 
 def _grid_size(rings, sides):
@@ -213,9 +240,27 @@ def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8, side
     """
     if isinstance(genus, bool) or not isinstance(genus, (int, np.integer)) or genus < 1:
         raise ValueError(f"genus must be an integer >= 1, got {genus!r}")
+    if base is not None and not isinstance(base, Mesh):
+        raise TypeError(f"base must be a pentanb.Mesh (a torus) or None, got {type(base).__name__}")
     if base is None:
         base = torus(rings, sides)
+    elif base.genus != 1 or base.n_components != 1:
+        raise ValueError(
+            f"base must be a connected torus (genus 1): a chain of {genus} copies of a mesh of "
+            f"genus {base.genus} with {base.n_components} component(s) does not have genus {genus}"
+        )
     genus = int(genus)
+    # each copy glued on drops two faces and shares the corners of one; the chain is
+    # built face by face in Python, about 500 bytes a face on top of the arrays
+    k = int(base.face_sizes[np.argmax(base.face_centroids[:, 0])])
+    V, E, F = base.n_vertices, base.n_edges, base.n_faces
+    _check_size(
+        f"genus_surface({genus})",
+        genus * V - (genus - 1) * k,
+        genus * E - (genus - 1) * k,
+        genus * F - 2 * (genus - 1),
+        extra=500 * genus * F,
+    )
     if genus == 1:
         return base
     faces = base.faces
@@ -327,6 +372,13 @@ def hard_edged_cube(inset: float = 0.8) -> Mesh:
     inset : float in (0, 1)
         Where the edge loops sit; closer to 1 keeps the edges harder.
     """
+    if isinstance(inset, bool) or not isinstance(inset, (int, float, np.integer, np.floating)):
+        raise TypeError(f"inset must be a number in (0, 1), got {type(inset).__name__}")
+    if not 0 < inset < 1:
+        raise ValueError(
+            f"inset must be in (0, 1), got {inset!r}: 0 and 1 give faces of no area with "
+            "doubled vertices, values outside fold faces inward"
+        )
     m = voxels(np.ones((3, 3, 3), dtype=bool))
     coord = np.array([-1.0, -inset, inset, 1.0])
     return m.with_vertices(coord[np.rint(m.vertices).astype(int)])

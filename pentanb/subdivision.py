@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+
+import numpy as np
 
 from .mesh import Mesh, MeshError
 from .schemes._build import check_count, check_mesh
@@ -46,7 +48,7 @@ def predict_counts(
     s = get_scheme(scheme)
     if not isinstance(s, Scheme):
         raise ValueError("counts can only be predicted for a registered scheme")
-    V, E, F = counts
+    V, E, F = _as_counts(counts, "predict_counts")
     out = []
     for _ in range(iterations):
         V, E, F = s.counts(V, E, F)
@@ -86,9 +88,9 @@ def max_iterations(
         0 when even one iteration would be too large.
     """
     counts = (
-        mesh_or_counts
-        if isinstance(mesh_or_counts, tuple)
-        else _vef(check_mesh(mesh_or_counts, "max_iterations"))
+        _vef(mesh_or_counts)
+        if isinstance(mesh_or_counts, Mesh)
+        else _as_counts(mesh_or_counts, "max_iterations")
     )
     steps = predict_counts(counts, scheme, cap, duals)
     per_iteration = 1 + duals
@@ -96,6 +98,44 @@ def max_iterations(
         if max(F for _, _, F in steps[k * per_iteration : (k + 1) * per_iteration]) > max_faces:
             return k
     return cap
+
+
+def _as_counts(counts: object, caller: str) -> Counts:
+    """``(V, E, F)`` from a tuple, list or array of three non-negative integers.
+
+    Raises
+    ------
+    TypeError
+        Neither a Mesh nor a sequence (the message names ``caller``).
+    ValueError
+        Not three non-negative integers.
+    """
+    if isinstance(counts, (str, bytes)) or not isinstance(counts, (Sequence, np.ndarray)):
+        what = "a pentanb.Mesh or its counts" if caller == "max_iterations" else "counts"
+        raise TypeError(f"{caller} expects {what} (V, E, F), got {type(counts).__name__}")
+    if len(counts) != 3:
+        raise ValueError(f"counts must be (V, E, F), three numbers; got {len(counts)}")
+    V, E, F = (check_count(x, name) for x, name in zip(counts, "VEF"))
+    return V, E, F
+
+
+def _as_limit(max_bytes: object) -> float:
+    """``max_bytes`` as a number of bytes (``float("inf")``: no limit).
+
+    Raises
+    ------
+    TypeError
+        Not a number.
+    ValueError
+        NaN or not positive.
+    """
+    if isinstance(max_bytes, bool) or not isinstance(
+        max_bytes, (int, float, np.integer, np.floating)
+    ):
+        raise TypeError(f"max_bytes must be a number of bytes, got {type(max_bytes).__name__}")
+    if not max_bytes > 0:  # NaN too
+        raise ValueError(f"max_bytes must be a positive number of bytes, got {max_bytes!r}")
+    return float(max_bytes) if np.isinf(max_bytes) else int(max_bytes)
 
 
 def _vef(mesh: Mesh) -> Counts:
@@ -173,7 +213,7 @@ def subdivide(
         if unknown:
             takes = ", ".join(s.options) or "no options"
             raise ValueError(f"scheme {s.name!r} takes {takes}; got {sorted(unknown)}")
-        limit = default_max_bytes() if max_bytes is None else int(max_bytes)
+        limit = default_max_bytes() if max_bytes is None else _as_limit(max_bytes)
         steps = predict_counts(_vef(mesh), s, iterations, duals)
         if steps:
             V, E, F = max(steps, key=lambda c: estimate_bytes(*c))
@@ -191,6 +231,11 @@ def subdivide(
     name = getattr(s, "name", getattr(s, "__name__", "scheme"))
     for i in range(iterations):
         mesh = s(mesh, **options)
+        if not isinstance(mesh, Mesh):
+            raise TypeError(
+                f"scheme {name!r} returned {type(mesh).__name__}, not a pentanb.Mesh "
+                "(a callable scheme maps a Mesh to a Mesh)"
+            )
         done += 1
         if report:
             report(done, total, f"{name} {i + 1}/{iterations}: {mesh.n_faces:,} faces")

@@ -330,7 +330,7 @@ def test_subdivide_refuses_non_scheme_values(bad):
         lambda: subdivide([[0, 0, 0]]),
         lambda: subdivide("cube", "pentagonalize"),
         lambda: smooth(np.zeros((4, 3)), 0),
-        lambda: pentanb.max_iterations([8, 12, 6], "pentagonalize"),
+        lambda: pentanb.max_iterations("cube", "pentagonalize"),
     ],
 )
 def test_subdivide_smooth_and_max_iterations_refuse_a_non_mesh(call):
