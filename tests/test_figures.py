@@ -492,3 +492,9 @@ def test_plot_meshes_one_panel_per_mesh_and_one_legend():
     assert labels == ["triangles (3)", "quads (4)", "pentagons (5)"]
     with pytest.raises(ValueError, match="3 meshes but 2 titles"):
         vz.plot_meshes(meshes, ["a", "b"])
+
+
+@pytest.mark.parametrize("name", ["²", "٣", "7.0", ""])
+def test_get_refuses_names_that_only_look_like_numbers(name):
+    with pytest.raises(ValueError, match="unknown figure"):
+        figures.get(name)

@@ -144,7 +144,8 @@ def get(name: int | str) -> FigureSpec:
             f"a figure is named by its number or a name such as 'fig07', got "
             f"{type(name).__name__} {name!r}"
         )
-    key = f"fig{int(name):02d}" if not isinstance(name, str) or name.isdigit() else name
+    numeric = not isinstance(name, str) or (name.isascii() and name.isdecimal())
+    key = f"fig{int(name):02d}" if numeric else name
     try:
         return FIGURES[key]
     except KeyError:
