@@ -148,7 +148,8 @@ def plot_spectra(
         ax.set_xlim(2.5, 8.5)
         ax.set_ylim(0, 1)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7, loc="lower right")
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=7, loc="lower right")
     for ax in axes.flat[len(labels) :]:
         ax.set_visible(False)
     for ax in axes[-1]:
