@@ -173,7 +173,7 @@ def test_pngs_are_byte_identical_to_the_committed_ones(figures_run):
 @pytest.mark.slow
 def test_drawing_twice_gives_the_same_bytes(figures_run, tmp_path):
     _, _, _, out = figures_run
-    for name in ("fig07", "fig06"):
+    for name in ("fig07", "fig06", "spectra", "characteristic_maps"):
         path = figures.render(name, tmp_path)
         assert path.read_bytes() == (out / f"{name}.png").read_bytes(), name
 
