@@ -34,6 +34,8 @@ from pentanb.figures import (
     HOLDS,
     WITHIN,
     Claim,
+    _continuity,
+    characteristic_maps,
     convergence,
     fig01,
     fig03,
@@ -42,6 +44,7 @@ from pentanb.figures import (
     formulas,
     lateral,
     section4,
+    spectra,
 )
 from pentanb.figures import claim as cl
 from pentanb.figures._flat import pillow
@@ -522,6 +525,164 @@ def test_claim_convergence_uniform_fails_on_the_pentagonalized_cube_in_place(stu
     leaves(
         convergence.claims(data=data), *[f"convergence.uniform.{m}.{s}" for m, s in UNIFORM_FAILS]
     )
+
+
+# ====================================================================== continuity (spectra, maps)
+PAPER_CASES = [
+    c for c in pentanb.analysis.spectral.TABLE_CASES if c[0] in characteristic_maps.PAPER
+]
+SPECTRA_HOLD = [k for k, v in spectra.RECORDED.items() if v == HOLDS]
+
+
+def skey(prefix: str, label: str, kind: str) -> str:
+    return f"{prefix}.{_continuity.key_label(label)}.{_continuity.plural(kind)}"
+
+
+@pytest.fixture(scope="module")
+def table():
+    """The shared continuity table (computed once per process)."""
+    pytest.importorskip("scipy")
+    return _continuity.table()
+
+
+@pytest.fixture(scope="module")
+def undualled():
+    """The paper's schemes and vertex insertion at 3-valent vertices with no duals: the
+    topological refinement without the smoothing the paper adds."""
+    pytest.importorskip("scipy")
+    cases = [*PAPER_CASES, ("vertex_insertion", "vertex_insertion", {})]
+    rows = pentanb.analysis.continuity_table(cases, sizes=[3], duals=0)
+    return [_continuity.detached(r) for r in rows if r.kind == "vertex" and r.spectrum]
+
+
+def replaced(rows, new_rows, label=None):
+    """The table with each row of ``new_rows`` (filed under ``label`` if given) in place
+    of the row of the same scheme, kind and size."""
+    new = [dataclasses.replace(r, label=label) if label else r for r in new_rows]
+    keys = {(r.label, r.kind, r.size): r for r in new}
+    return [keys.get((r.label, r.kind, r.size), r) for r in rows]
+
+
+def perturbed(row, weight=1e-3, i=1):
+    """The row with the eigenvalues of its local matrix after a wrong weight: ``weight``
+    moved, in row ``i``, from its largest entry to the next (the row still sums to 1, so
+    the eigenvalue 1 stays).  A one-entry change splits a real double eigenvalue into two
+    real ones (to first order the 2 x 2 block changes by a rank-one matrix)."""
+    sp = row.spectrum
+    a = sp.matrix.copy()
+    j, k = np.argsort(-a[i])[:2]
+    a[i, j] -= weight
+    a[i, k] += weight
+    w = np.linalg.eigvals(a) ** sp.period
+    w = w[np.argsort(-np.abs(w), kind="stable")]
+    return dataclasses.replace(row, spectrum=dataclasses.replace(sp, eigenvalues=w))
+
+
+def test_the_detached_table_reads_like_the_full_one():
+    pytest.importorskip("scipy")
+    full = pentanb.analysis.continuity_table(PAPER_CASES, sizes=[3, 5])
+    light = [_continuity.detached(r) for r in full]
+    md = pentanb.analysis.table_markdown
+    assert md(light) == md(full)
+    assert all(r.spectrum._context is None for r in light if r.spectrum is not None)
+    assert [r.c1 for r in light] == [r.c1 for r in full]
+    assert [r.char_map.verdict for r in light if r.char_map] == [
+        r.char_map.verdict for r in full if r.char_map
+    ]
+
+
+@falsifies(
+    *[
+        skey(p, label, "vertex")
+        for p in ("spectra", "characteristic_maps")
+        for label, _, _ in PAPER_CASES
+    ]
+)
+def test_claim_continuity_of_vertices_fails_on_a_3_valent_vertex_without_duals(table, undualled):
+    # remeshing alone keeps a 3-valent vertex and its three edge points: a triple
+    # subdominant eigenvalue (|lambda1| = |lambda2| = |lambda3|) and a folded map
+    wrong = replaced(table, undualled)
+    keys = [skey("spectra", label, "vertex") for label, _, _ in PAPER_CASES]
+    by_key = leaves(spectra.claims(rows=wrong), *keys)
+    assert "vertex 3: |lambda2| = |lambda3|" in by_key[keys[0]].measured
+    leaves(
+        characteristic_maps.claims(rows=wrong),
+        *[skey("characteristic_maps", label, "vertex") for label, _, _ in PAPER_CASES],
+    )
+
+
+@falsifies("spectra.preserve_pentagons_075.vertices", "spectra.preserve_pentagons_05.vertices")
+def test_claim_spectra_fails_on_a_wrong_weight_in_the_local_matrix(table):
+    # one weight of the 5-valent vertex's matrix moved by 1e-3 splits |lambda1| = |lambda2|.
+    # Where the one-step matrix has a complex subdominant pair (pentagonalization, which
+    # is chiral, and pentagon preservation's faces, which turn by half a sector per step)
+    # a real perturbation keeps the moduli equal: their wrong inputs are the vertex
+    # without duals and the other scale's triangle
+    labels = ["preserve_pentagons 0.75", "preserve_pentagons 0.5"]
+    rows = [r for r in table if r.label in labels and r.element == "vertex 5"]
+    assert len(rows) == 2
+    wrong = replaced(table, [perturbed(r) for r in rows])
+    keys = [skey("spectra", label, "vertex") for label in labels]
+    by_key = leaves(spectra.claims(rows=wrong), *keys)
+    assert "vertex 5: |lambda1| = " in by_key[keys[0]].measured
+    for label, element in [("pentagonalize", "vertex 5"), ("preserve_pentagons 0.75", "face 5")]:
+        row = next(r for r in table if r.label == label and r.element == element)
+        still = {c.key: c for c in spectra.claims(rows=replaced(table, [perturbed(row)]))}
+        assert still[skey("spectra", label, row.kind)].holds, label
+
+
+@falsifies(
+    "spectra.preserve_pentagons_075.faces", "characteristic_maps.preserve_pentagons_075.faces"
+)
+def test_claim_continuity_of_scale_075_faces_fails_on_scale_05_at_triangles(table):
+    tri = [r for r in table if r.label == "preserve_pentagons 0.5" and r.element == "face 3"]
+    wrong = replaced(table, tri, label="preserve_pentagons 0.75")
+    leaves(spectra.claims(rows=wrong), "spectra.preserve_pentagons_075.faces")
+    leaves(
+        characteristic_maps.claims(rows=wrong), "characteristic_maps.preserve_pentagons_075.faces"
+    )
+
+
+@falsifies("spectra.preserve_pentagons_05.faces", "characteristic_maps.preserve_pentagons_05.faces")
+def test_claim_continuity_of_scale_05_faces_fails_on_scale_075_at_triangles(table):
+    # the finding is the triangle alone: with scale 0.75's triangle the claims hold
+    tri = [r for r in table if r.label == "preserve_pentagons 0.75" and r.element == "face 3"]
+    wrong = replaced(table, tri, label="preserve_pentagons 0.5")
+    leaves(spectra.claims(rows=wrong), "spectra.preserve_pentagons_05.faces")
+    leaves(
+        characteristic_maps.claims(rows=wrong), "characteristic_maps.preserve_pentagons_05.faces"
+    )
+
+
+@falsifies("characteristic_maps.c1")
+def test_claim_c1_fails_on_a_spline_background_granted_to_the_pentagonal_schemes(
+    table, monkeypatch
+):
+    # were the pentagonal schemes C1 splines away from their extraordinary elements,
+    # Reif's criterion would prove C1 for pentagon preservation (real double
+    # subdominant eigenvalues, injective maps): the proof would not be missing
+    monkeypatch.setattr(pentanb.analysis.spectral, "_spline_background", lambda label: True)
+    by_key = leaves(characteristic_maps.claims(rows=table), "characteristic_maps.c1")
+    assert "proven for the paper's schemes at preserve_pentagons 0.75 vertex 3" in (
+        by_key["characteristic_maps.c1"].measured
+    )
+
+
+@falsifies("characteristic_maps.c1")
+def test_claim_c1_fails_on_bilinear_subdivision_as_the_control(table, undualled):
+    # vertex insertion without duals (bilinear subdivision) is not C1: an analysis
+    # that proves nothing must not make the claim hold
+    control = [r for r in undualled if r.label == "vertex_insertion"]
+    by_key = leaves(
+        characteristic_maps.claims(rows=replaced(table, control)), "characteristic_maps.c1"
+    )
+    assert "no (necessary condition fails) at vertex 3" in by_key["characteristic_maps.c1"].measured
+
+
+def test_continuity_claims_without_rows_do_not_hold():
+    empty = spectra.claims(rows=[]) + characteristic_maps.claims(rows=[])
+    assert empty and not any(c.holds for c in empty)
+    assert "3: no row" in empty[0].measured
 
 
 # ====================================================================== schemes

@@ -50,6 +50,8 @@ EXPECTED_FILES = [f"fig{i:02d}.png" for i in range(1, 14)] + [
     "equation1.png",
     "lateral.png",
     "convergence.png",
+    "spectra.png",
+    "characteristic_maps.png",
 ]
 #: The panel labels of every image, as the paper (or our drawing beyond it) letters them.
 PAPER_PANELS = {
@@ -69,9 +71,11 @@ PAPER_PANELS = {
     "equation1": "ABCD",
     "lateral": "ABC",
     "convergence": "ABCDE",
+    "spectra": "ABCDEFGHI",
+    "characteristic_maps": "ABCDEF",
 }
 #: Images whose panels are charts, not meshes.
-CHARTS = ("equation1", "lateral", "convergence")
+CHARTS = ("equation1", "lateral", "convergence", "spectra", "characteristic_maps")
 #: The flat diagrams, whose meshes keep the pillow's 2-valent corners.
 FLAT = ("fig06", "fig10")
 
@@ -105,7 +109,8 @@ def test_command_succeeds_and_writes_every_png(figures_run):
 @pytest.mark.slow
 def test_command_shows_progress(figures_run):
     _, _, progress, _ = figures_run
-    assert "[ 1/16]" in progress and "[16/16]" in progress
+    n = len(EXPECTED_FILES)
+    assert f"[ 1/{n}]" in progress and f"[{n}/{n}]" in progress
     assert "fig07.png" in progress
 
 
@@ -132,7 +137,13 @@ def test_report_lists_every_figure_and_gives_each_claim_a_verdict(figures_run):
     # the findings are listed again before the total
     start = lines.index("findings (the paper's words do not hold as stated):")
     assert len(lines) - 1 - start - 1 == verdicts[figures.FAILS]
-    for key in ("lateral.pentagonalize", "fig08.A.geometry", "eq1.non_integer"):
+    for key in (
+        "lateral.pentagonalize",
+        "fig08.A.geometry",
+        "eq1.non_integer",
+        "spectra.preserve_pentagons_05.faces",
+        "characteristic_maps.preserve_pentagons_05.faces",
+    ):
         assert any(line.startswith(f"  {key}: ") for line in lines[start:]), key
     assert "Pentagonalization: (V, E, F), against (V+2E+F, 5E, 2E)" in report
 
@@ -162,7 +173,7 @@ def test_pngs_are_byte_identical_to_the_committed_ones(figures_run):
 @pytest.mark.slow
 def test_drawing_twice_gives_the_same_bytes(figures_run, tmp_path):
     _, _, _, out = figures_run
-    for name in ("fig07", "fig06"):
+    for name in ("fig07", "fig06", "spectra", "characteristic_maps"):
         path = figures.render(name, tmp_path)
         assert path.read_bytes() == (out / f"{name}.png").read_bytes(), name
 
@@ -193,6 +204,50 @@ def test_regressed_claim_gives_exit_1(monkeypatch, tmp_path):
     )
 
 
+def test_continuity_table_is_computed_once_per_figures_run(monkeypatch, tmp_path):
+    # the two continuity figures and their claims share one table: count its computations
+    # (an empty stand-in, so that the run is fast; its claims then regress)
+    from pentanb.analysis.spectral import TABLE_CASES
+    from pentanb.figures import _continuity
+
+    calls = []
+
+    def fake(cases, sizes):
+        calls.append(cases)
+        return []
+
+    monkeypatch.setattr(_continuity, "continuity_table", fake)
+    _continuity.table.cache_clear()
+    buf = io.StringIO()
+    try:
+        with contextlib.redirect_stdout(buf), contextlib.redirect_stderr(io.StringIO()):
+            status = main(
+                ["figures", "--out", str(tmp_path), "--only", "spectra", "characteristic_maps"]
+            )
+        info = _continuity.table.cache_info()
+    finally:
+        _continuity.table.cache_clear()  # the next user computes the real table
+    assert len(calls) == len(TABLE_CASES)  # one table, computed case by case
+    assert info.misses == 1 and info.hits == 3  # two drawings and two claim lists
+    assert status == 1 and "REGRESSION" in buf.getvalue()
+    assert sorted(p.name for p in tmp_path.glob("*.png")) == [
+        "characteristic_maps.png",
+        "spectra.png",
+    ]
+
+
+def test_continuity_figures_draw_the_rows_they_are_given():
+    from pentanb.analysis.spectral import continuity_table
+
+    rows = continuity_table([("pentagonalize", "pentagonalize", {})], sizes=[3, 4])
+    fig = figures.spectra_figure(rows=rows)
+    visible = [ax for ax in fig.axes if ax.lines]
+    assert [ax.get_title() for ax in visible] == ["(A) pentagonalize + 2 duals"]
+    fig = figures.characteristic_maps_figure(rows=rows)
+    assert [ax.get_title() for ax in fig.axes] == ["(A) vertex 3", "vertex 4"]
+    assert [ax.get_xlabel() for ax in fig.axes] == ["regular, injective"] * 2
+
+
 # ---------------------------------------------------------------------- every figure
 def test_registry_has_every_figure_of_the_paper():
     names = list(figures.FIGURES)
@@ -208,6 +263,8 @@ def test_old_public_names_still_work():
     assert figures.FIGURES["equation1"].draw is figures.equation1
     assert figures.FIGURES["convergence"].draw is figures.convergence_figure
     assert figures.FIGURES["lateral"].draw is figures.lateral_figure
+    assert figures.FIGURES["spectra"].draw is figures.spectra_figure
+    assert figures.FIGURES["characteristic_maps"].draw is figures.characteristic_maps_figure
     assert figures.face_configurations is face_configurations
     assert figures.vertex_configurations is vertex_configurations
     assert callable(figures.scheme_claims)
@@ -320,6 +377,7 @@ def test_panels_and_claims_need_no_matplotlib():
         "f.panels(11)['A']; f.panels(6); "
         "names = ('fig07', 'fig06', 'equation1'); "
         "assert not any(c.regressed for n in names for c in f.claims(n)); "
+        "f.spectra.claims(rows=[]); f.characteristic_maps.claims(rows=[]); "
         "assert 'matplotlib' not in sys.modules, 'matplotlib imported'"
     )
     subprocess.run([sys.executable, "-c", code], check=True)

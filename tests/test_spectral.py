@@ -295,15 +295,26 @@ def test_table_row_for_a_complex_pair_is_undecided():
 @pytest.mark.slow
 def test_whole_table_and_its_pictures():
     pytest.importorskip("matplotlib")
+    from pentanb.figures import _continuity, characteristic_maps
+    from pentanb.figures import spectra as spectra_figure
     from pentanb.viz import spectra
 
-    rows = continuity_table()
+    rows = _continuity.table()  # the figures' table: continuity_table(), detached
     assert {r.label for r in rows} == {label for label, _, _ in spectral.TABLE_CASES}
     fig = spectra.plot_spectra(rows)
     assert len([ax for ax in fig.axes if ax.get_visible()]) >= 9
     fig = spectra.plot_characteristic_maps(rows)
     assert len([ax for ax in fig.axes if ax.get_visible()]) >= 30
-    claims = spectra.spectra_claims(rows) + spectra.characteristic_map_claims(rows)
-    failing = [c.text for c in claims if not c.holds]
+    # the one fold drawn (scale 0.5 around a triangle) is labelled in red under its panel
+    red = [ax.get_xlabel() for ax in fig.axes if ax.xaxis.label.get_color() == "#CC0000"]
+    assert red == ["fold (99 of 190 faces turned)"]
+    claims = spectra_figure.claims(rows=rows) + characteristic_maps.claims(rows=rows)
+    failing = [c.key for c in claims if not c.holds]
     # the findings: pentagon preservation at scale 0.5 around triangles
-    assert len(failing) == 2 and all("preserve_pentagons 0.5" in t for t in failing)
+    assert failing == [
+        "spectra.preserve_pentagons_05.faces",
+        "characteristic_maps.preserve_pentagons_05.faces",
+    ]
+    tri = next(r for r in rows if r.label == "preserve_pentagons 0.5" and r.element == "face 3")
+    assert tri.spectrum.moduli[1] == pytest.approx(0.141667, abs=1e-6)
+    assert tri.spectrum.moduli[2] == pytest.approx(0.116667, abs=1e-6)

@@ -3,8 +3,11 @@
 ``figure1()`` ... ``figure13()`` redraw the paper's Figures 1-13,
 :func:`equation1` draws Section 4 (equation (1) and the ``(n, m)`` chart),
 :func:`lateral_figure` measures Section 1's "lateral artifact" along the
-straight edges of boxes and :func:`convergence_figure` what the paper only
-"visually confirmed" (convergence under duals).  Each returns a
+straight edges of boxes, :func:`convergence_figure` what the paper only
+"visually confirmed" (convergence under duals), and :func:`spectra_figure`
+and :func:`characteristic_maps_figure` answer Section 7's open question
+with subdivision theory (eigenvalues of the local subdivision matrices and
+characteristic maps, :mod:`pentanb.analysis.spectral`).  Each returns a
 :class:`matplotlib.figure.Figure` whose panels are labelled ``(A)``,
 ``(B)``, ... as in the paper.
 
@@ -20,14 +23,18 @@ Layout: :mod:`~pentanb.figures.claim` (the claim framework),
 :mod:`~pentanb.figures.registry` (the table and the functions above), one
 module per figure (:mod:`~pentanb.figures.fig01` ... ``fig13``,
 :mod:`~pentanb.figures.section4` for equation (1),
-:mod:`~pentanb.figures.lateral`, :mod:`~pentanb.figures.convergence`)
+:mod:`~pentanb.figures.lateral`, :mod:`~pentanb.figures.convergence`,
+:mod:`~pentanb.figures.spectra`, :mod:`~pentanb.figures.characteristic_maps`)
 holding its ``panels()``, ``draw()``
 and ``claims()``, and :mod:`~pentanb.figures.formulas` (the schemes' count
 formulas).  A figure's meshes are built once per :func:`render` or
-:func:`claims` call and passed to the drawing or the claims; nothing is
-cached between calls.
+:func:`claims` call and passed to the drawing or the claims; no mesh is
+cached between calls.  The one thing kept is the continuity table that
+``spectra`` and ``characteristic_maps`` share (``_continuity.table()``,
+computed once per process: a figures run computes it once).
 
-Building meshes and checking claims need only numpy; matplotlib is imported
+Building meshes and checking claims need only numpy (the continuity
+table's analysis imports scipy where it needs it); matplotlib is imported
 when a figure is drawn.
 """
 
@@ -38,6 +45,7 @@ from ..analysis.measures import canonical_configuration as canonical_configurati
 from ..analysis.measures import configuration_counts as configuration_counts
 from ..analysis.measures import face_configurations as face_configurations
 from ..analysis.measures import vertex_configurations as vertex_configurations
+from .characteristic_maps import draw as characteristic_maps_figure
 from .claim import FAILS, HOLDS, VERDICTS, WITHIN, Claim
 from .convergence import draw as convergence_figure
 from .fig01 import draw as figure1
@@ -67,6 +75,7 @@ from .registry import (
     report,
 )
 from .section4 import draw as equation1
+from .spectra import draw as spectra_figure
 
 __all__ = [
     "Claim",
@@ -100,4 +109,6 @@ __all__ = [
     "equation1",
     "lateral_figure",
     "convergence_figure",
+    "spectra_figure",
+    "characteristic_maps_figure",
 ]

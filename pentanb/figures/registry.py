@@ -5,7 +5,10 @@ built from the figure's module (:mod:`~pentanb.figures.fig07`): its title
 and caption, the panel labels, and three functions: ``panels()`` builds
 the meshes the figure draws, ``draw(meshes)`` and ``claims(meshes)`` take
 them.  :func:`render` and :func:`claims` build a figure's meshes once per
-call and pass them on; nothing is cached between calls.
+call and pass them on; no mesh is cached between calls.  The one thing kept
+is the continuity table that ``spectra`` and ``characteristic_maps`` draw
+and check (:func:`pentanb.figures._continuity.table`, about 6-10 s): it is
+computed once per process, so a figures run computes it once.
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ import numpy as np
 
 from ..mesh import Mesh
 from . import (
+    characteristic_maps,
     convergence,
     fig01,
     fig02,
@@ -38,6 +42,7 @@ from . import (
     formulas,
     lateral,
     section4,
+    spectra,
 )
 from .claim import Claim, format_report
 
@@ -125,6 +130,8 @@ FIGURES: dict[str, FigureSpec] = {
     "equation1": _spec("equation1", section4),
     "lateral": _spec("lateral", lateral),
     "convergence": _spec("convergence", convergence),
+    "spectra": _spec("spectra", spectra),
+    "characteristic_maps": _spec("characteristic_maps", characteristic_maps),
 }
 
 
@@ -156,7 +163,8 @@ def panels(name: int | str) -> dict[str, Mesh]:
     """The meshes a figure draws, by panel label: ``panels(11)["A"]``.
 
     Built afresh on every call (nothing is cached).  Figures whose panels are
-    charts (``"equation1"``, ``"lateral"``, ``"convergence"``) have no meshes: ``{}``.  The
+    charts (``"equation1"``, ``"lateral"``, ``"convergence"``, ``"spectra"``,
+    ``"characteristic_maps"``) have no meshes: ``{}``.  The
     flat diagrams (Figures 6 and 10) start from a two-faced "pillow": their
     meshes are closed, but keep its 2-valent corners, which the
     :class:`~pentanb.Mesh` constructor refuses: draw and measure them, but

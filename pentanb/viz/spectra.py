@@ -16,10 +16,10 @@ proofs for convergence."  The drawings here show what
 * :func:`plot_eigenvalues` and :func:`draw_characteristic_map` -- one case,
   for a slider.
 
-Each figure has a ``*_claims`` function returning :class:`Claim` items
-(the paper's words or the literature's closed form, the value expected,
-the value measured, and whether they agree); every claim can fail, and
-some do -- those are findings, printed as such.
+What the paper's words become on these pictures -- the claims, with their
+verdicts -- is in the figure modules :mod:`pentanb.figures.spectra` and
+:mod:`pentanb.figures.characteristic_maps` (the one claim framework,
+:class:`pentanb.figures.Claim`); this module only draws.
 
 Figures are plain :class:`matplotlib.figure.Figure` objects (no pyplot).
 """
@@ -28,7 +28,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
 
 import numpy as np
 from matplotlib.collections import PolyCollection
@@ -42,15 +41,11 @@ from ..analysis.spectral import (
 )
 
 __all__ = [
-    "Claim",
     "plot_spectra",
     "plot_characteristic_maps",
     "plot_subdivision_matrix",
     "plot_eigenvalues",
     "draw_characteristic_map",
-    "spectra_claims",
-    "characteristic_map_claims",
-    "catmull_clark_lambda",
     "PAPER_LABELS",
 ]
 
@@ -58,32 +53,6 @@ __all__ = [
 PAPER_LABELS = ("pentagonalize", "preserve_pentagons 0.75", "preserve_pentagons 0.5")
 
 _KIND_STYLE = {"vertex": ("#0072B2", "o"), "face": ("#D55E00", "s")}
-
-
-@dataclass(frozen=True)
-class Claim:
-    """One statement, checked against the analysis.
-
-    The same fields as the claims of :mod:`pentanb.figures`.
-
-    Attributes
-    ----------
-    text : str
-        The paper's words (with the section) or the literature's statement.
-    expected : object
-    measured : object
-    holds : bool
-        Whether the measurement agrees.  False is a finding, not a bug.
-    """
-
-    text: str
-    expected: object
-    measured: object
-    holds: bool
-
-    def __str__(self) -> str:
-        mark = "ok  " if self.holds else "FAIL"
-        return f"[{mark}] {self.text}: expected {self.expected}, measured {self.measured}"
 
 
 def _plural(kind: str) -> str:
@@ -110,7 +79,16 @@ def _stationary(rows, label=None, kind=None):
 # ---------------------------------------------------------------------------
 
 
-def plot_spectra(rows: Sequence[ContinuityRow] | None = None, n_eigen: int = 4) -> Figure:
+def _letter(i: int) -> str:
+    """The panel label of the ``i``-th panel: ``"(A)"``, ``"(B)"``, ..."""
+    return f"({chr(ord('A') + i)})"
+
+
+def plot_spectra(
+    rows: Sequence[ContinuityRow] | None = None,
+    n_eigen: int = 4,
+    labels: Sequence[str] | None = None,
+) -> Figure:
     """Moduli of lambda1..lambda4 per element type, one panel per scheme (+ 2 duals).
 
     Parameters
@@ -120,6 +98,10 @@ def plot_spectra(rows: Sequence[ContinuityRow] | None = None, n_eigen: int = 4) 
         when not given).
     n_eigen : int
         How many eigenvalues after the eigenvalue 1 to draw.
+    labels : sequence of str, optional
+        The schemes (table labels) to draw, one panel each, lettered (A),
+        (B), ... in this order; default every label of ``rows`` with a
+        stationary neighbourhood somewhere.
 
     Returns
     -------
@@ -130,12 +112,13 @@ def plot_spectra(rows: Sequence[ContinuityRow] | None = None, n_eigen: int = 4) 
         |lambda3|`` fails, a ring where the subdominant pair is complex.
     """
     rows = _rows(rows)
-    labels = list(dict.fromkeys(r.label for r in rows if _stationary([r])))
+    if labels is None:
+        labels = list(dict.fromkeys(r.label for r in rows if _stationary([r])))
     ncol = 3
     nrow = max(1, math.ceil(len(labels) / ncol))
     fig = Figure(figsize=(4.0 * ncol, 3.0 * nrow + 0.6), layout="constrained")
     axes = fig.subplots(nrow, ncol, squeeze=False, sharey=True)
-    for ax, label in zip(axes.flat, labels):
+    for i, (ax, label) in enumerate(zip(axes.flat, labels)):
         for kind, (color, marker) in _KIND_STYLE.items():
             sel = _stationary(rows, label, kind)
             if not sel:
@@ -144,28 +127,29 @@ def plot_spectra(rows: Sequence[ContinuityRow] | None = None, n_eigen: int = 4) 
             for r in sel:
                 m = r.spectrum.moduli[1 : 1 + n_eigen]
                 x = r.size + shift
-                for i, val in enumerate(m):
+                for j, val in enumerate(m):
                     ax.plot(
                         [x],
                         [val],
                         marker=marker,
-                        ms=6 if i < 2 else 4,
-                        mfc=color if i < 2 else "none",
+                        ms=6 if j < 2 else 4,
+                        mfc=color if j < 2 else "none",
                         mec=color,
                         ls="none",
-                        alpha=1.0 if i < 2 else 0.7,
+                        alpha=1.0 if j < 2 else 0.7,
                     )
                 if not r.spectrum.necessary:
                     ax.plot([x], [m[0]], marker="x", ms=11, mew=2, color="#CC0000", ls="none")
                 elif r.spectrum.subdominant_complex:
                     ax.plot([x], [m[0]], marker="o", ms=12, mfc="none", mec="#555555", ls="none")
             ax.plot([], [], marker=marker, color=color, ls="none", label=_plural(kind))
-        ax.set_title(f"{label} + 2 duals", fontsize=10)
+        ax.set_title(f"{_letter(i)} {label} + 2 duals", fontsize=10)
         ax.set_xticks(range(3, 9))
         ax.set_xlim(2.5, 8.5)
         ax.set_ylim(0, 1)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7, loc="lower right")
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=7, loc="lower right")
     for ax in axes.flat[len(labels) :]:
         ax.set_visible(False)
     for ax in axes[-1]:
@@ -180,107 +164,36 @@ def plot_spectra(rows: Sequence[ContinuityRow] | None = None, n_eigen: int = 4) 
     return fig
 
 
-def catmull_clark_lambda(k: int, w: int = 1) -> float:
-    """Larger eigenvalue of Catmull-Clark's Fourier block w at valence k.
-
-    ``(5 + cos(2 pi w/k) + cos(pi w/k) sqrt(2 (9 + cos(2 pi w/k)))) / 16``
-    (Halstead, Kass and DeRose 1993; Stam 1998, "Exact evaluation of
-    Catmull-Clark subdivision surfaces", Appendix).  Vertex insertion + 2
-    duals is bilinear subdivision plus one quad averaging (Warren and Weimer
-    2001, Section 7.2), whose edge and face rules are Catmull-Clark's, so
-    its blocks w != 0 are Catmull-Clark's too; its vertex rule (9/16,
-    3/(8k), 1/(16k)) differs and only changes block 0 (eigenvalues 1, 1/4,
-    1/16 at every valence).
-    """
-    c = math.cos(2 * math.pi * w / k)
-    return (5 + c + math.cos(math.pi * w / k) * math.sqrt(2 * (9 + c))) / 16
-
-
-def spectra_claims(rows: Sequence[ContinuityRow] | None = None) -> list[Claim]:
-    """Claims of ``figures/spectra.png``.
-
-    The paper's claim (Section 7) as a necessary condition at every element
-    type of its two schemes, and two validations against closed forms of
-    the literature (which fail if the matrices are wrong).
-    """
-    rows = _rows(rows)
-    out = []
-    words = (
-        'Section 7: "we have visually confirmed that the algorithms converge with G1 '
-        'continuity" -> 1 > |λ1| = |λ2| > |λ3| at every {} of {} + 2 duals'
-    )
-    for label in PAPER_LABELS:
-        for kind in ("vertex", "face"):
-            sel = _stationary(rows, label, kind)
-            if not sel:
-                continue
-            fails = [
-                f"{r.kind} {r.size}: {r.spectrum.necessary_reason}"
-                for r in sel
-                if not r.spectrum.necessary
-            ]
-            out.append(
-                Claim(
-                    words.format(kind, label),
-                    "holds at sizes " + ",".join(str(r.size) for r in sel),
-                    "fails at " + "; ".join(fails) if fails else "holds everywhere",
-                    not fails,
-                )
-            )
-    complex_rows = [r for r in _stationary(rows, "pentagonalize") if r.spectrum.subdominant_complex]
-    pent = _stationary(rows, "pentagonalize")
-    if pent:
-        out.append(
-            Claim(
-                "pentagonalization is chiral: its subdominant eigenvalues are a complex pair "
-                "(Reif's criterion, stated for a real double one, does not apply as is)",
-                f"complex at valences {','.join(str(r.size) for r in pent)}",
-                "complex at valences "
-                + ",".join(
-                    f"{r.size} ({math.degrees(abs(np.angle(r.spectrum.lam(1)))):.1f}°)"
-                    for r in complex_rows
-                ),
-                len(complex_rows) == len(pent),
-            )
-        )
-    vi4 = [r for r in _stationary(rows, "vertex_insertion", "vertex") if r.size == 4]
-    if vi4:
-        m = vi4[0].spectrum.moduli[:7]
-        expected = np.array([1, 1 / 2, 1 / 2, 1 / 4, 1 / 4, 1 / 4, 1 / 8])
-        out.append(
-            Claim(
-                "vertex insertion + 2 duals at valence 4 is the bicubic B-spline: "
-                "spectrum 1, 1/2, 1/2, 1/4, 1/4, 1/4, 1/8",
-                "1, 0.5, 0.5, 0.25, 0.25, 0.25, 0.125",
-                ", ".join(f"{x:.6g}" for x in m),
-                m.size == 7 and bool(np.allclose(m, expected, atol=1e-9)),
-            )
-        )
-    vi = _stationary(rows, "vertex_insertion", "vertex")
-    if vi:
-        err = max(abs(r.spectrum.moduli[1] - catmull_clark_lambda(r.size)) for r in vi)
-        out.append(
-            Claim(
-                "vertex insertion + 2 duals has Catmull-Clark's subdominant eigenvalue "
-                "(Stam 1998) at valences " + ",".join(str(r.size) for r in vi),
-                "error < 1e-9",
-                f"largest error {err:.1e}",
-                err < 1e-9,
-            )
-        )
-    return out
-
-
 # ---------------------------------------------------------------------------
 # characteristic maps
 # ---------------------------------------------------------------------------
 
 
-def draw_characteristic_map(ax, cmap: CharacteristicMap, *, title: str | None = None) -> None:
+def draw_characteristic_map(
+    ax,
+    cmap: CharacteristicMap,
+    *,
+    title: str | None = None,
+    antialiased: bool = True,
+    edgecolor: str = "#333333",
+) -> None:
     """Draw a characteristic map's control net on a matplotlib axis.
 
     Faces turning the majority's way are light blue, the others red (a
     fold); the element's centre is a black dot.
+
+    Parameters
+    ----------
+    ax : matplotlib axis
+    cmap : CharacteristicMap
+    title : str, optional
+        Default ``"<kind> <size>: <verdict>"`` (red unless regular and
+        injective).
+    antialiased : bool
+        Smooth polygon edges; a figure of many nets is drawn without (its PNG
+        is a quarter of the size).
+    edgecolor : str
+        Colour of the faces' edges.
     """
     pts = cmap.points
     off = cmap.offsets
@@ -288,7 +201,13 @@ def draw_characteristic_map(ax, cmap: CharacteristicMap, *, title: str | None = 
     major = 1 if np.sum(cmap.signs) >= 0 else -1
     colors = ["#A6CEE3" if s == major else "#E31A1C" for s in cmap.signs]
     ax.add_collection(
-        PolyCollection(polys, facecolors=colors, edgecolors="#333333", linewidths=0.3)
+        PolyCollection(
+            polys,
+            facecolors=colors,
+            edgecolors=edgecolor,
+            linewidths=0.3,
+            antialiased=antialiased,
+        )
     )
     ax.plot([cmap.centre[0]], [cmap.centre[1]], "k.", ms=4)
     if pts.size:
@@ -318,6 +237,14 @@ def plot_characteristic_maps(
     labels : sequence of str
         Schemes (table labels) to draw; default the paper's two schemes and
         vertex insertion (Catmull-Clark-like) for comparison.
+
+    Returns
+    -------
+    Figure
+        One row per scheme and kind of element (vertices, then faces, where
+        the scheme keeps them), lettered (A), (B), ... in the title of its
+        first panel; one panel per valence or size, its verdict under it
+        (red where the map is not regular and injective).
     """
     rows = _rows(rows)
     lines = []
@@ -328,7 +255,7 @@ def plot_characteristic_maps(
                 lines.append((label, kind, sel))
     ncol = max((len(sel) for _, _, sel in lines), default=1)
     nrow = max(1, len(lines))
-    fig = Figure(figsize=(1.7 * ncol + 1.2, 1.8 * nrow + 0.5), layout="constrained")
+    fig = Figure(figsize=(1.7 * ncol + 1.2, 1.9 * nrow + 0.5), layout="constrained")
     axes = fig.subplots(nrow, ncol, squeeze=False)
     for i, (label, kind, sel) in enumerate(lines):
         for j in range(ncol):
@@ -336,39 +263,23 @@ def plot_characteristic_maps(
             if j >= len(sel):
                 ax.set_visible(False)
                 continue
-            draw_characteristic_map(ax, sel[j].char_map)
+            cm = sel[j].char_map
+            head = f"{kind} {sel[j].size}"
+            draw_characteristic_map(
+                ax,
+                cm,
+                title=f"{_letter(i)} {head}" if j == 0 else head,
+                antialiased=False,  # 36 nets of ~200 faces: 0.3 MB instead of 1.25 MB
+                edgecolor="#5A7D96",
+            )
+            ax.title.set_color("black")
+            ax.set_xlabel(cm.verdict, fontsize=6.5, color="black" if cm.injective else "#CC0000")
         axes[i, 0].set_ylabel(f"{label}\n{_plural(kind)}", fontsize=7)
     fig.suptitle(
         "Characteristic maps (subdominant eigenvectors, 2 levels down); red: folded faces",
         fontsize=9,
     )
     return fig
-
-
-def characteristic_map_claims(rows: Sequence[ContinuityRow] | None = None) -> list[Claim]:
-    """Claims of ``figures/characteristic_maps.png``: regular and injective everywhere?"""
-    rows = _rows(rows)
-    out = []
-    for label in (*PAPER_LABELS, "vertex_insertion"):
-        sel = [r for r in _stationary(rows, label) if r.char_map is not None]
-        if not sel:
-            continue
-        bad = [f"{r.element}: {r.char_map.verdict}" for r in sel if not r.char_map.injective]
-        source = (
-            'Section 7: "converge with G1 continuity"'
-            if label in PAPER_LABELS
-            else "Catmull-Clark's characteristic map is injective (Peters and Reif 2008)"
-        )
-        out.append(
-            Claim(
-                f"{source} -> characteristic map of {label} + 2 duals regular and injective "
-                "(control net 2 levels down)",
-                "at " + ", ".join(r.element for r in sel),
-                "fails at " + "; ".join(bad) if bad else "everywhere",
-                not bad,
-            )
-        )
-    return out
 
 
 # ---------------------------------------------------------------------------
