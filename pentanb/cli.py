@@ -159,7 +159,10 @@ def _parser() -> argparse.ArgumentParser:
         "--only",
         nargs="+",
         metavar="NAME",
-        help="only these figures (fig01 ... fig13, equation1, lateral, convergence, or numbers)",
+        help=(
+            "only these figures (fig01 ... fig13, equation1, lateral, convergence, spectra,"
+            " characteristic_maps, or numbers)"
+        ),
     )
     f.set_defaults(func=_figures)
     return p
