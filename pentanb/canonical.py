@@ -1,0 +1,592 @@
+"""Canonical and planar positions (issue 10).
+
+* :func:`canonical` moves a genus-0 mesh to its *canonical form* (Hart,
+  "Calculating canonical polyhedra", Mathematica in Education and Research
+  6(3), 1997; polyHedronisme's "C", Antiprism's ``canonical``): every edge
+  tangent to the unit sphere, the tangency points centred at the origin,
+  every face planar.  By the Koebe-Andreev-Thurston midsphere theorem a
+  3-connected planar mesh has exactly one such form up to rotation, so it
+  depends only on the topology.
+* :func:`planarize` makes every face planar, for any genus, moving the
+  vertices as little as it can (the paper's meshes are 6-15 % of an edge
+  off planar after two duals).
+
+Method
+------
+Hart moves vertices towards tangency, recentres and flattens faces in turn,
+a fixed-point iteration that converges linearly (and slowly).  Here the
+conditions are solved as equations by damped Gauss-Newton
+(Levenberg-Marquardt) steps of least norm, which converge quadratically:
+
+* canonical: unknowns are the vertices ``x_v`` and the poles ``y_f`` of the
+  face planes (the plane of face f is ``{z : y_f . z = 1}``; ``y_f`` is the
+  vertex of the canonical dual).  Equations: ``x_v . y_f = 1`` at every
+  corner (every face planar) and ``|x_u x w| / |x_u - x_w| = 1`` on every
+  edge (its line is at distance 1 from the origin).  That leaves the
+  Moebius transformations of the sphere free (rotations and "boosts");
+  the boost that centres the tangency points is found by a small Newton
+  iteration and applied exactly, as the projective map of space that
+  preserves the unit ball (so tangency and planarity are kept).
+* planarize: unknowns are the vertices and a plane ``(n_f, d_f)`` for every
+  non-triangular face; equations ``n_f . x_v = d_f`` and ``|n_f| = 1``.
+  Steps of least norm (vertex moves weighted against plane moves) project
+  the mesh onto the planar meshes nearby.
+
+scipy.sparse is imported when a function is called (``import pentanb``
+needs numpy only).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import Literal, overload
+
+import numpy as np
+
+from .analysis.planarity import face_planarity
+from .mesh import Mesh, MeshError
+
+__all__ = ["canonical", "planarize", "PlacementReport", "ConvergenceError", "tangency_points"]
+
+#: Default tolerance: edges tangent, tangency points centred and faces planar
+#: (relative to each face's mean edge length) within this.
+TOLERANCE = 1e-8
+
+
+@dataclass(frozen=True)
+class PlacementReport:
+    """What :func:`canonical` or :func:`planarize` reached.
+
+    Attributes
+    ----------
+    converged : bool
+        Every requested condition holds within ``tolerance`` (and, for the
+        canonical form, the result is convex).
+    iterations : int
+        Gauss-Newton steps taken (accepted or not).
+    planarity : float
+        Largest corner distance from its face's best-fit plane, over that
+        face's mean edge length.
+    tangency : float
+        Largest ``| distance(edge line, origin) - 1 |`` (nan for planarize).
+    centring : float
+        Norm of the mean of the tangency points (nan for planarize).
+    convex : bool
+        No vertex lies outside a face's plane (canonical; True for planarize).
+    max_move : float
+        Largest vertex displacement, over the input's mean edge length
+        (planarize; nan for canonical, whose scale and place are new).
+    seconds : float
+        Wall time.
+    tolerance : float
+    message : str
+        Why it stopped.
+    """
+
+    converged: bool
+    iterations: int
+    planarity: float
+    tangency: float
+    centring: float
+    convex: bool
+    max_move: float
+    seconds: float
+    tolerance: float
+    message: str
+
+
+class ConvergenceError(RuntimeError):
+    """:func:`canonical` or :func:`planarize` did not reach its tolerance.
+
+    Attributes
+    ----------
+    report : PlacementReport
+    mesh : Mesh
+        The best positions found.
+    """
+
+    def __init__(self, message: str, report: PlacementReport, mesh: Mesh):
+        super().__init__(message)
+        self.report = report
+        self.mesh = mesh
+
+
+# ---------------------------------------------------------------------- measures
+def tangency_points(mesh: Mesh) -> tuple[np.ndarray, np.ndarray]:
+    """The point of every edge's line closest to the origin, and its distance.
+
+    Returns
+    -------
+    points : (E, 3) float
+    distances : (E,) float
+    """
+    u = mesh.vertices[mesh.edges[:, 0]]
+    w = mesh.vertices[mesh.edges[:, 1]]
+    lv = w - u
+    s = -np.einsum("ij,ij->i", u, lv) / np.einsum("ij,ij->i", lv, lv)
+    t = u + s[:, None] * lv
+    return t, np.linalg.norm(t, axis=1)
+
+
+def _canonical_measures(mesh: Mesh) -> tuple[float, float, float, bool]:
+    t, d = tangency_points(mesh)
+    tangency = float(np.abs(d - 1.0).max())
+    centring = float(np.linalg.norm(t.mean(axis=0)))
+    planar = float(face_planarity(mesh, relative_to="face").max(initial=0.0))
+    return tangency, centring, planar, _convex(mesh)
+
+
+def _convex(mesh: Mesh, slack: float = 1e-9) -> bool:
+    """No vertex beyond any face's plane (by the Newell normal through the face's mean)."""
+    c = mesh.face_centroids
+    n = mesh.face_normals
+    x = mesh.vertices
+    size = np.abs(x).max()
+    for lo in range(0, c.shape[0], 256):  # bounded memory on large meshes
+        d = np.einsum("fvk,fk->fv", x[None, :, :] - c[lo : lo + 256, None, :], n[lo : lo + 256])
+        if d.max() > slack * size:
+            return False
+    return True
+
+
+def _mean_edge_length(mesh: Mesh) -> float:
+    v = mesh.vertices
+    return float(np.linalg.norm(v[mesh.edges[:, 1]] - v[mesh.edges[:, 0]], axis=1).mean())
+
+
+# ---------------------------------------------------------------------- canonical
+@overload
+def canonical(
+    mesh: Mesh,
+    *,
+    tolerance: float = ...,
+    max_iterations: int = ...,
+    report: Literal[False] = ...,
+) -> Mesh: ...
+@overload
+def canonical(
+    mesh: Mesh,
+    *,
+    tolerance: float = ...,
+    max_iterations: int = ...,
+    report: Literal[True],
+) -> tuple[Mesh, PlacementReport]: ...
+def canonical(
+    mesh: Mesh,
+    *,
+    tolerance: float = TOLERANCE,
+    max_iterations: int = 100,
+    report: bool = False,
+):
+    """The canonical form of a genus-0 mesh: edges tangent to the unit
+    sphere, tangency points centred at the origin, every face planar.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Connected, genus 0 (a polyhedron's topology: 3-connected, which
+        every Conway operator applied to a Platonic seed gives).  Only the
+        connectivity matters; the positions are a starting guess.
+    tolerance : float
+        Largest accepted ``|distance(edge, origin) - 1|``, norm of the mean
+        tangency point, and corner distance from its face's best-fit plane
+        relative to that face's mean edge length.
+    max_iterations : int
+        Gauss-Newton steps before giving up.
+    report : bool
+        Return ``(mesh, PlacementReport)`` instead of the mesh, and do not
+        raise when the tolerance is not reached (the report says so).
+
+    Returns
+    -------
+    Mesh
+        Same connectivity, new positions (``mesh.with_vertices``).
+
+    Raises
+    ------
+    MeshError
+        The mesh is not connected or not of genus 0.
+    ConvergenceError
+        (unless ``report``) the tolerance was not reached or the result is
+        not convex; the error carries the report and the best positions.
+    """
+    _check_mesh(mesh, "canonical")
+    if mesh.n_components != 1 or mesh.genus != 0:
+        raise MeshError(
+            f"the canonical form needs a connected genus-0 mesh; this one has "
+            f"{mesh.n_components} component(s) and genus {mesh.genus} "
+            "(planarize works for any genus)"
+        )
+    tolerance = _check_tolerance(tolerance)
+    start = time.perf_counter()
+    x = _initial_sphere(mesh)
+    y = _poles(mesh, x)
+    x, y, its, message = _solve_canonical(mesh, x, y, max_iterations, tolerance)
+    x = _centre(mesh, x)
+    out = mesh.with_vertices(x)
+    tangency, centring, planar, convex = _canonical_measures(out)
+    ok = max(tangency, centring, planar) <= tolerance and convex
+    if not ok and message == "converged":
+        message = "not convex" if not convex else "tolerance not reached after centring"
+    rep = PlacementReport(
+        converged=ok,
+        iterations=its,
+        planarity=planar,
+        tangency=tangency,
+        centring=centring,
+        convex=convex,
+        max_move=float("nan"),
+        seconds=time.perf_counter() - start,
+        tolerance=tolerance,
+        message=message,
+    )
+    if report:
+        return out, rep
+    if not ok:
+        raise ConvergenceError(
+            f"canonical form not reached ({message}): tangency {tangency:.2e}, "
+            f"centring {centring:.2e}, planarity {planar:.2e}, convex {convex} "
+            f"(tolerance {tolerance:.0e}, {its} iterations)",
+            rep,
+            out,
+        )
+    return out
+
+
+def _check_mesh(mesh, name: str) -> None:
+    if not isinstance(mesh, Mesh):
+        raise TypeError(f"{name} expects a pentanb.Mesh, got {type(mesh).__name__}")
+
+
+def _check_tolerance(tolerance) -> float:
+    try:
+        t = float(tolerance)
+    except (TypeError, ValueError):
+        raise ValueError(f"tolerance must be a positive number, got {tolerance!r}") from None
+    if not (t > 0.0 and np.isfinite(t)):
+        raise ValueError(f"tolerance must be a positive number, got {tolerance!r}")
+    return t
+
+
+def _initial_sphere(mesh: Mesh) -> np.ndarray:
+    """Vertices pushed radially onto a sphere about their mean, scaled so that
+    the edges are at mean distance 1 from the origin."""
+    x = mesh.vertices - mesh.vertices.mean(axis=0)
+    r = np.linalg.norm(x, axis=1, keepdims=True)
+    x = x / np.where(r > 0, r, 1.0)
+    d = _edge_distances(x, mesh.edges)
+    return x / d.mean()
+
+
+def _edge_distances(x: np.ndarray, edges: np.ndarray) -> np.ndarray:
+    u, w = x[edges[:, 0]], x[edges[:, 1]]
+    return np.linalg.norm(np.cross(u, w), axis=1) / np.linalg.norm(u - w, axis=1)
+
+
+def _poles(mesh: Mesh, x: np.ndarray) -> np.ndarray:
+    """The pole ``y`` of every face's plane ``{z : y . z = 1}`` (Newell normal
+    through the corners' mean)."""
+    p = x[mesh.corners]
+    starts = mesh.offsets[:-1]
+    n = np.add.reduceat(np.cross(p, x[mesh.head]), starts, axis=0)
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    c = np.add.reduceat(p, starts, axis=0) / mesh.face_sizes[:, None]
+    d = np.einsum("ij,ij->i", n, c)
+    d = np.where(d > 1e-3, d, 1e-3)  # a plane through the origin has no pole
+    return n / d[:, None]
+
+
+def _canonical_system(mesh: Mesh, x: np.ndarray, y: np.ndarray):
+    """Residuals and Jacobian (sparse) of the canonical equations."""
+    from scipy import sparse
+
+    nv = x.shape[0]
+    H = mesh.n_halfedges
+    v, f = mesh.corners, mesh.halfedge_face
+    xv, yf = x[v], y[f]
+    r_corner = np.einsum("ij,ij->i", xv, yf) - 1.0
+    a, b = mesh.edges[:, 0], mesh.edges[:, 1]
+    u, w = x[a], x[b]
+    c = np.cross(u, w)
+    lv = u - w
+    cn = np.linalg.norm(c, axis=1)
+    ln = np.linalg.norm(lv, axis=1)
+    d = cn / ln
+    r_edge = d - 1.0
+    ch = c / cn[:, None]
+    lh = lv / ln[:, None]
+    du = (np.cross(w, ch) - d[:, None] * lh) / ln[:, None]
+    dw = (np.cross(ch, u) + d[:, None] * lh) / ln[:, None]
+    E = a.size
+    k3 = np.arange(3)
+    rows = np.concatenate(
+        [
+            np.repeat(np.arange(H), 3),
+            np.repeat(np.arange(H), 3),
+            np.repeat(H + np.arange(E), 3),
+            np.repeat(H + np.arange(E), 3),
+        ]
+    )
+    cols = np.concatenate(
+        [
+            (3 * v[:, None] + k3).ravel(),
+            (3 * nv + 3 * f[:, None] + k3).ravel(),
+            (3 * a[:, None] + k3).ravel(),
+            (3 * b[:, None] + k3).ravel(),
+        ]
+    )
+    vals = np.concatenate([yf.ravel(), xv.ravel(), du.ravel(), dw.ravel()])
+    n_unknowns = 3 * (nv + y.shape[0])
+    J = sparse.csr_matrix((vals, (rows, cols)), shape=(H + E, n_unknowns))
+    return np.concatenate([r_corner, r_edge]), J
+
+
+def _least_norm_lm(residual_and_jacobian, z, max_iterations, stop, weights=None):
+    """Levenberg-Marquardt with steps of least (weighted) norm.
+
+    ``residual_and_jacobian(z) -> (r, J)``; the step solves
+    ``(J W J^T + lam I) mu = r``, ``dz = -W J^T mu`` and is kept when it
+    lowers ``|r|``.  Stops when ``max |r| <= stop``.
+
+    Returns
+    -------
+    z, iterations, message
+    """
+    from scipy import sparse
+    from scipy.sparse.linalg import spsolve
+
+    r, J = residual_and_jacobian(z)
+    cost = float(r @ r)
+    lam = 1e-6
+    W = None if weights is None else sparse.diags(weights)
+    its = 0
+    while its < max_iterations:
+        if np.abs(r).max() <= stop:
+            return z, its, "converged"
+        JW = J if W is None else J @ W
+        A = (JW @ J.T).tocsc()
+        eye = sparse.identity(A.shape[0], format="csc")
+        accepted = False
+        while its < max_iterations:
+            its += 1
+            mu = spsolve(A + lam * eye, r)
+            dz = -(JW.T @ mu)
+            z_new = z + dz
+            r_new, J_new = residual_and_jacobian(z_new)
+            cost_new = float(r_new @ r_new)
+            if np.isfinite(cost_new) and cost_new < cost:
+                z, r, J, cost = z_new, r_new, J_new, cost_new
+                lam = max(lam / 10.0, 1e-15)
+                accepted = True
+                break
+            lam *= 10.0
+            if lam > 1e8:
+                break
+        if not accepted:
+            return z, its, "no step lowers the residual (stalled)"
+    if np.abs(r).max() <= stop:
+        return z, its, "converged"
+    return z, its, f"stopped after {max_iterations} iterations"
+
+
+def _solve_canonical(mesh, x, y, max_iterations, tolerance):
+    nv = x.shape[0]
+
+    def system(z):
+        return _canonical_system(mesh, z[: 3 * nv].reshape(-1, 3), z[3 * nv :].reshape(-1, 3))
+
+    z0 = np.concatenate([x.ravel(), y.ravel()])
+    z, its, message = _least_norm_lm(system, z0, max_iterations, stop=min(tolerance, 1e-8) * 1e-3)
+    return z[: 3 * nv].reshape(-1, 3), z[3 * nv :].reshape(-1, 3), its, message
+
+
+def _boost_matrix(b: np.ndarray) -> np.ndarray:
+    """The Lorentz boost of rapidity vector ``b`` on homogeneous ``(p, 1)``."""
+    theta = float(np.linalg.norm(b))
+    L = np.eye(4)
+    if theta == 0.0:
+        return L
+    n = b / theta
+    ch, sh = np.cosh(theta), np.sinh(theta)
+    L[:3, :3] += (ch - 1.0) * np.outer(n, n)
+    L[:3, 3] = -sh * n
+    L[3, :3] = -sh * n
+    L[3, 3] = ch
+    return L
+
+
+def _apply_projective(L: np.ndarray, p: np.ndarray) -> np.ndarray:
+    h = np.concatenate([p, np.ones((p.shape[0], 1))], axis=1) @ L.T
+    return h[:, :3] / h[:, 3:]
+
+
+def _centre(mesh: Mesh, x: np.ndarray) -> np.ndarray:
+    """Apply the Moebius boost that puts the mean of the tangency points at
+    the origin (Newton on the three rapidity components; the boost maps
+    the unit sphere to itself, tangent lines to tangent lines and planes to
+    planes, so the equations solved before stay solved)."""
+    t, _ = tangency_points(mesh.with_vertices(x))
+    t /= np.linalg.norm(t, axis=1, keepdims=True)
+    total = np.eye(4)
+    for _ in range(50):
+        c = t.mean(axis=0)
+        if np.linalg.norm(c) < 1e-15:
+            break
+        M = t.T @ t / t.shape[0]
+        step = np.linalg.solve(np.eye(3) - M, c)
+        L = _boost_matrix(step)
+        t = _apply_projective(L, t)
+        t /= np.linalg.norm(t, axis=1, keepdims=True)
+        total = L @ total
+    return _apply_projective(total, x)
+
+
+# ---------------------------------------------------------------------- planarize
+@overload
+def planarize(
+    mesh: Mesh,
+    *,
+    tolerance: float = ...,
+    max_iterations: int = ...,
+    report: Literal[False] = ...,
+) -> Mesh: ...
+@overload
+def planarize(
+    mesh: Mesh,
+    *,
+    tolerance: float = ...,
+    max_iterations: int = ...,
+    report: Literal[True],
+) -> tuple[Mesh, PlacementReport]: ...
+def planarize(
+    mesh: Mesh,
+    *,
+    tolerance: float = TOLERANCE,
+    max_iterations: int = 100,
+    report: bool = False,
+):
+    """Make every face planar, moving the vertices as little as it can.
+
+    Any genus.  Triangles are planar already and impose nothing; every other
+    face gets a plane, and damped Gauss-Newton steps of least norm (a vertex
+    move weighs ten times a plane move) bring every corner onto its face's
+    plane.
+
+    Parameters
+    ----------
+    mesh : Mesh
+    tolerance : float
+        Largest accepted corner distance from its face's best-fit plane,
+        relative to that face's mean edge length.
+    max_iterations : int
+    report : bool
+        Return ``(mesh, PlacementReport)`` (whose ``max_move`` is the largest
+        vertex displacement over the mean edge length) and do not raise.
+
+    Returns
+    -------
+    Mesh
+        Same connectivity, new positions.
+
+    Raises
+    ------
+    ConvergenceError
+        (unless ``report``) the tolerance was not reached.
+    """
+    _check_mesh(mesh, "planarize")
+    tolerance = _check_tolerance(tolerance)
+    start = time.perf_counter()
+    scale = _mean_edge_length(mesh)
+    origin = mesh.vertices.mean(axis=0)
+    x0 = (mesh.vertices - origin) / scale
+    big = np.flatnonzero(mesh.face_sizes > 3)
+    its, message = 0, "converged"
+    x = x0
+    if big.size:
+        x, its, message = _solve_planar(mesh, x0, big, max_iterations, tolerance)
+    out = mesh.with_vertices(x * scale + origin)
+    planar = float(face_planarity(out, relative_to="face").max(initial=0.0))
+    move = float(np.linalg.norm(x - x0, axis=1).max(initial=0.0))
+    ok = planar <= tolerance
+    if not ok and message == "converged":
+        message = "tolerance not reached"
+    rep = PlacementReport(
+        converged=ok,
+        iterations=its,
+        planarity=planar,
+        tangency=float("nan"),
+        centring=float("nan"),
+        convex=True,
+        max_move=move,
+        seconds=time.perf_counter() - start,
+        tolerance=tolerance,
+        message=message,
+    )
+    if report:
+        return out, rep
+    if not ok:
+        raise ConvergenceError(
+            f"planar positions not reached ({message}): planarity {planar:.2e} "
+            f"(tolerance {tolerance:.0e}, {its} iterations)",
+            rep,
+            out,
+        )
+    return out
+
+
+#: Weight of a plane unknown against a vertex coordinate in the least-norm step.
+PLANE_WEIGHT = 10.0
+
+
+def _solve_planar(mesh: Mesh, x0: np.ndarray, big: np.ndarray, max_iterations, tolerance):
+    from scipy import sparse
+
+    nv = x0.shape[0]
+    nb = big.size
+    slot = np.full(mesh.n_faces, -1, dtype=np.int64)
+    slot[big] = np.arange(nb, dtype=np.int64)
+    hf = mesh.halfedge_face
+    h = np.flatnonzero(slot[hf] >= 0)
+    v, f = mesh.corners[h], slot[hf[h]]
+    nh = h.size
+    sub = Mesh.from_csr(x0, mesh.corners, mesh.offsets, validate=False)
+    from .analysis.planarity import best_fit_planes
+
+    _, normals = best_fit_planes(sub)
+    n0 = normals[big]
+    c0 = np.add.reduceat(x0[mesh.corners], mesh.offsets[:-1], axis=0) / mesh.face_sizes[:, None]
+    d0 = np.einsum("ij,ij->i", n0, c0[big])
+    k3 = np.arange(3)
+    base_n = 3 * nv
+    base_d = 3 * nv + 3 * nb
+
+    def system(z):
+        x = z[:base_n].reshape(-1, 3)
+        n = z[base_n:base_d].reshape(-1, 3)
+        d = z[base_d:]
+        xv, nf = x[v], n[f]
+        r1 = np.einsum("ij,ij->i", nf, xv) - d[f]
+        r2 = 0.5 * (np.einsum("ij,ij->i", n, n) - 1.0)
+        rows = np.concatenate(
+            [np.repeat(np.arange(nh), 3), np.repeat(np.arange(nh), 3), np.arange(nh)]
+            + [np.repeat(nh + np.arange(nb), 3)]
+        )
+        cols = np.concatenate(
+            [
+                (3 * v[:, None] + k3).ravel(),
+                (base_n + 3 * f[:, None] + k3).ravel(),
+                base_d + f,
+                (base_n + 3 * np.arange(nb)[:, None] + k3).ravel(),
+            ]
+        )
+        vals = np.concatenate([nf.ravel(), xv.ravel(), -np.ones(nh), n.ravel()])
+        J = sparse.csr_matrix((vals, (rows, cols)), shape=(nh + nb, base_d + nb))
+        return np.concatenate([r1, r2]), J
+
+    z0 = np.concatenate([x0.ravel(), n0.ravel(), d0])
+    weights = np.concatenate([np.ones(base_n), np.full(4 * nb, PLANE_WEIGHT)])
+    z, its, message = _least_norm_lm(
+        system, z0, max_iterations, stop=min(tolerance, 1e-8) * 1e-3, weights=weights
+    )
+    return z[:base_n].reshape(-1, 3), its, message
