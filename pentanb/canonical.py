@@ -14,19 +14,26 @@
 Method
 ------
 Hart moves vertices towards tangency, recentres and flattens faces in turn,
-a fixed-point iteration that converges linearly (and slowly).  Here the
-conditions are solved as equations by damped Gauss-Newton
-(Levenberg-Marquardt) steps of least norm, which converge quadratically:
+a fixed-point iteration that converges linearly, slowly, and not always
+(it stalls on ``pP5`` and ``bY5``; polyHedronisme's reciprocation
+iteration stalls on ``cY5`` and ``zY5``).  Here:
 
-* canonical: unknowns are the vertices ``x_v`` and the poles ``y_f`` of the
-  face planes (the plane of face f is ``{z : y_f . z = 1}``; ``y_f`` is the
-  vertex of the canonical dual).  Equations: ``x_v . y_f = 1`` at every
-  corner (every face planar) and ``|x_u x w| / |x_u - x_w| = 1`` on every
-  edge (its line is at distance 1 from the origin).  That leaves the
-  Moebius transformations of the sphere free (rotations and "boosts");
-  the boost that centres the tangency points is found by a small Newton
-  iteration and applied exactly, as the projective map of space that
-  preserves the unit ball (so tangency and planarity are kept).
+* canonical: the canonical form is built from a circle pattern, following
+  Bobenko and Springborn ("Variational principles for circle patterns and
+  Koebe's theorem", Trans. AMS 356, 2004): the vertices' horizon circles
+  and the faces' circles on the unit sphere cross at right angles, and
+  after a stereographic projection their radii minimise a *convex*
+  function (one Newton solve per step, a handful of steps).  The pattern
+  is laid out, lifted back to the sphere and centred by the Moebius boost
+  that puts the tangency points' mean at the origin (a projective map of
+  space that keeps the unit ball, so tangency and planarity are kept);
+  each vertex is the pole of the plane through its tangency points.  A
+  few damped Gauss-Newton steps of least norm polish the result; their
+  unknowns are the vertices ``x_v`` and the poles ``y_f`` of the face
+  planes (the plane of f is ``{z : y_f . z = 1}``, ``y_f`` the vertex of the
+  canonical dual), their equations ``x_v . y_f = 1`` at every corner,
+  ``|x_u x w| / |x_u - x_w| = 1`` on every edge and the mean tangency point
+  at the origin.
 * planarize: unknowns are the vertices and a plane ``(n_f, d_f)`` for every
   non-triangular face; equations ``n_f . x_v = d_f`` and ``|n_f| = 1``.
   Steps of least norm (vertex moves weighted against plane moves) project
@@ -162,6 +169,7 @@ def canonical(
     *,
     tolerance: float = ...,
     max_iterations: int = ...,
+    method: str = ...,
     report: Literal[False] = ...,
 ) -> Mesh: ...
 @overload
@@ -170,6 +178,7 @@ def canonical(
     *,
     tolerance: float = ...,
     max_iterations: int = ...,
+    method: str = ...,
     report: Literal[True],
 ) -> tuple[Mesh, PlacementReport]: ...
 def canonical(
@@ -177,6 +186,7 @@ def canonical(
     *,
     tolerance: float = TOLERANCE,
     max_iterations: int = 100,
+    method: str = "koebe",
     report: bool = False,
 ):
     """The canonical form of a genus-0 mesh: edges tangent to the unit
@@ -193,7 +203,13 @@ def canonical(
         tangency point, and corner distance from its face's best-fit plane
         relative to that face's mean edge length.
     max_iterations : int
-        Gauss-Newton steps before giving up.
+        Newton steps (of either method) before giving up.
+    method : {"koebe", "newton"}
+        ``"koebe"``: from the circle pattern (see the module's notes), then
+        at most five Newton steps to polish; falls back to ``"newton"`` if
+        the circle pattern cannot be built.  ``"newton"``: damped Newton
+        steps from the vertices pushed radially onto a sphere (fast, but it
+        can stall or end on a non-convex solution, e.g. on ``pY5``).
     report : bool
         Return ``(mesh, PlacementReport)`` instead of the mesh, and do not
         raise when the tolerance is not reached (the report says so).
@@ -219,24 +235,28 @@ def canonical(
             "(planarize works for any genus)"
         )
     tolerance = _check_tolerance(tolerance)
+    if method not in ("koebe", "newton"):
+        raise ValueError(f"method must be 'koebe' or 'newton', got {method!r}")
     start = time.perf_counter()
     its, message = 0, "converged"
-    x = _koebe(mesh, max_iterations)
+    x = _koebe(mesh, max_iterations) if method == "koebe" else None
+    measures = None
     if x is not None:
         out = mesh.with_vertices(x)
-        tangency, centring, planar, convex = _canonical_measures(out)
-        if max(tangency, centring, planar) > 1e-3 * tolerance:
+        measures = _canonical_measures(out)
+        if max(measures[:3]) > 1e-3 * tolerance:
             # polish: Newton steps from a start that is nearly there
             x, _, its, message = _solve_canonical(mesh, x, _poles(mesh, x), 5, tolerance)
             x = _centre(mesh, x)
+            measures = None
     else:  # fall back: Newton from the vertices pushed onto a sphere
         x = _initial_sphere(mesh)
-        x, _, its, message = _solve_canonical(
-            mesh, x, _poles(mesh, x), max_iterations, tolerance
-        )
+        x, _, its, message = _solve_canonical(mesh, x, _poles(mesh, x), max_iterations, tolerance)
         x = _centre(mesh, x)
-    out = mesh.with_vertices(x)
-    tangency, centring, planar, convex = _canonical_measures(out)
+    if measures is None:
+        out = mesh.with_vertices(x)
+        measures = _canonical_measures(out)
+    tangency, centring, planar, convex = measures
     ok = max(tangency, centring, planar) <= tolerance and convex
     if not ok and message == "converged":
         message = "not convex" if not convex else "tolerance not reached after centring"
@@ -360,24 +380,31 @@ def _koebe(mesh: Mesh, max_iterations: int = 100):
     rho = np.zeros(n)
     ab = np.concatenate([a, b, a, b])
     ba = np.concatenate([a, b, b, a])
+    s0 = objective(rho)
     for _ in range(max_iterations):
         g, x = gradient(rho)
         if not np.all(np.isfinite(g)):
             return None
-        if np.abs(g).max() < 1e-11:
+        gmax = np.abs(g).max()
+        if gmax < 1e-11:
             break
         w = 1.0 / np.cosh(x)
         L = sparse.csc_matrix((np.concatenate([w, w, -w, -w]), (ab, ba)), shape=(n, n))
         step = np.zeros(n)
         step[1:] = -spsolve(L[1:, 1:], g[1:])  # rho_0 fixed: the scale is free
-        s0 = objective(rho)
+        if gmax < 1e-4:  # Newton's own region: full steps, no line search
+            rho = rho + step
+            continue
         t = 1.0
         slack = 1e-12 * (1.0 + abs(s0))
-        while objective(rho + t * step) > s0 + 1e-4 * t * float(g @ step) + slack:
+        while True:
+            s1 = objective(rho + t * step)
+            if s1 <= s0 + 1e-4 * t * float(g @ step) + slack:
+                break
             t *= 0.5
             if t < 1e-10:
                 return None
-        rho = rho + t * step
+        rho, s0 = rho + t * step, s1
     else:
         return None
     r = np.exp(rho)
@@ -454,10 +481,9 @@ def _koebe(mesh: Mesh, max_iterations: int = 100):
     for flip in (1.0, -1.0):
         X, Y = plane[:, 0], flip * plane[:, 1]
         q = 1.0 + X * X + Y * Y
-        t = np.stack([2.0 * X / q, 2.0 * Y / q, (q - 2.0) / q], 1)
-        t[e0] = (0.0, 0.0, 1.0)
-        t = _centred_points(t)
-        x = _poles_through(mesh, t)
+        lifted = np.stack([2.0 * X / q, 2.0 * Y / q, (q - 2.0) / q], 1)
+        lifted[e0] = (0.0, 0.0, 1.0)
+        x = _poles_through(mesh, _centred_points(lifted))
         if x is None:
             return None
         if mesh.with_vertices(x).volume > 0:
@@ -568,9 +594,10 @@ def _canonical_system(mesh: Mesh, x: np.ndarray, y: np.ndarray):
     dt_du = (1.0 + alpha)[:, None, None] * eye - np.einsum(
         "ei,ej->eij", lw, lw - u + 2.0 * alpha[:, None] * lw
     ) / ll[:, None, None]
-    dt_dw = -alpha[:, None, None] * eye - np.einsum(
-        "ei,ej->eij", lw, u - 2.0 * alpha[:, None] * lw
-    ) / ll[:, None, None]
+    dt_dw = (
+        -alpha[:, None, None] * eye
+        - np.einsum("ei,ej->eij", lw, u - 2.0 * alpha[:, None] * lw) / ll[:, None, None]
+    )
     root = np.sqrt(E)
     r_centre = t.sum(axis=0) / root
     k3 = np.arange(3)

@@ -221,7 +221,9 @@ _ANTIPRISM = "Antiprism conway (extended operators)"
 
 _OPERATORS = [
     Operator(
-        "d", "dual", dual,
+        "d",
+        "dual",
+        dual,
         lambda V, E, F: (F, E, V),
         Invariants(0, 1, 1, 1),
         f"Conway; {_HART}",
@@ -230,7 +232,9 @@ _OPERATORS = [
         identity="",
     ),
     Operator(
-        "a", "ambo", ops.ambo,
+        "a",
+        "ambo",
+        ops.ambo,
         lambda V, E, F: (E, 2 * E, V + F),
         Invariants(0, 0, 1, 1, {4: 1}),
         f"Conway; {_HART}",
@@ -238,7 +242,9 @@ _OPERATORS = [
         identity="dj",
     ),
     Operator(
-        "t", "truncate", ops.truncate,
+        "t",
+        "truncate",
+        ops.truncate,
         lambda V, E, F: (2 * E, 3 * E, V + F),
         Invariants(0, 0, 1, 2, {3: 2}),
         f"Conway; tN: {_HART}",
@@ -247,7 +253,9 @@ _OPERATORS = [
         identity="dkd",
     ),
     Operator(
-        "k", "kis", ops.kis,
+        "k",
+        "kis",
+        ops.kis,
         lambda V, E, F: (V + F, 3 * E, 2 * E),
         Invariants(1, 1, 2, 1, {}, {3: 2}),
         f"Conway; kN: {_HART}",
@@ -256,7 +264,9 @@ _OPERATORS = [
         identity="dtd",
     ),
     Operator(
-        "j", "join", ops.join,
+        "j",
+        "join",
+        ops.join,
         lambda V, E, F: (V + F, 2 * E, E),
         Invariants(1, 1, 1, 1, {}, {4: 1}),
         f"Conway; {_HART}",
@@ -264,7 +274,9 @@ _OPERATORS = [
         identity="da",
     ),
     Operator(
-        "e", "expand", classic.corner_cutting,
+        "e",
+        "expand",
+        classic.corner_cutting,
         lambda V, E, F: (2 * E, 4 * E, V + E + F),
         Invariants(0, 0, 1, 1, {4: 2}, {4: 1}),
         f"Conway (Stott's expansion); {_HART}",
@@ -274,7 +286,9 @@ _OPERATORS = [
         identity="aa",
     ),
     Operator(
-        "o", "ortho", classic.vertex_insertion,
+        "o",
+        "ortho",
+        classic.vertex_insertion,
         lambda V, E, F: (V + E + F, 4 * E, 2 * E),
         Invariants(1, 1, 1, 1, {4: 1}, {4: 2}),
         f"Conway; {_HART}",
@@ -284,7 +298,9 @@ _OPERATORS = [
         identity="jj",
     ),
     Operator(
-        "s", "snub", ops.snub,
+        "s",
+        "snub",
+        ops.snub,
         lambda V, E, F: (2 * E, 5 * E, V + 2 * E + F),
         Invariants(0, 0, 1, 1, {5: 2}, {3: 2}),
         f"Conway; {_HART}",
@@ -292,7 +308,9 @@ _OPERATORS = [
         identity="dg",
     ),
     Operator(
-        "g", "gyro", pentagonal.pentagonalize,
+        "g",
+        "gyro",
+        pentagonal.pentagonalize,
         lambda V, E, F: (V + 2 * E + F, 5 * E, 2 * E),
         Invariants(1, 1, 1, 1, {3: 2}, {5: 2}),
         f"Conway; {_HART}; the paper's pentagonalization (Section 5.1)",
@@ -301,7 +319,9 @@ _OPERATORS = [
         identity="ds",
     ),
     Operator(
-        "p", "propeller", ops.propeller,
+        "p",
+        "propeller",
+        ops.propeller,
         lambda V, E, F: (V + 2 * E, 5 * E, F + 2 * E),
         Invariants(1, 0, 1, 1, {4: 2}, {4: 2}),
         "Hart, 'Sculpture based on propellorized polyhedra', MOSAIC 2000",
@@ -309,7 +329,9 @@ _OPERATORS = [
         identity="dpd",
     ),
     Operator(
-        "m", "meta", ops.meta,
+        "m",
+        "meta",
+        ops.meta,
         lambda V, E, F: (V + E + F, 6 * E, 4 * E),
         Invariants(1, 1, 2, 2, {4: 1}, {3: 4}),
         f"Conway; {_HART}",
@@ -317,7 +339,9 @@ _OPERATORS = [
         identity="kj",
     ),
     Operator(
-        "b", "bevel", ops.bevel,
+        "b",
+        "bevel",
+        ops.bevel,
         lambda V, E, F: (4 * E, 6 * E, V + E + F),
         Invariants(0, 0, 2, 2, {3: 4}, {4: 1}),
         f"Conway; {_HART}",
@@ -325,7 +349,9 @@ _OPERATORS = [
         identity="ta",
     ),
     Operator(
-        "c", "chamfer", classic.preserve_hexagons,
+        "c",
+        "chamfer",
+        classic.preserve_hexagons,
         lambda V, E, F: (V + 2 * E, 4 * E, F + E),
         Invariants(1, 0, 1, 1, {3: 2}, {6: 1}),
         f"{_ANTIPRISM}; Goldberg-Coxeter GP(m, n) -> GP(2m, 2n)",
@@ -336,14 +362,18 @@ _OPERATORS = [
         identity="dud",
     ),
     Operator(
-        "w", "whirl", ops.whirl,
+        "w",
+        "whirl",
+        ops.whirl,
         lambda V, E, F: (V + 4 * E, 7 * E, F + 2 * E),
         Invariants(1, 0, 1, 1, {3: 4}, {6: 2}),
         f"{_ANTIPRISM} ('gyro followed by truncation of vertices centered on original faces')",
         "edge thirds; inner points 1/3 from the centroid along the gyro spokes",
     ),
     Operator(
-        "q", "quinto", _quinto,
+        "q",
+        "quinto",
+        _quinto,
         lambda V, E, F: (V + 3 * E, 6 * E, F + 2 * E),
         Invariants(1, 0, 1, 1, {3: 2, 4: 1}, {5: 2}),
         f"{_ANTIPRISM}; the paper's pentagon preservation (Section 5.2)",
@@ -352,16 +382,19 @@ _OPERATORS = [
         options={"scale": 0.5},
     ),
     Operator(
-        "z", "zip", classic.honeycomb,
+        "z",
+        "zip",
+        classic.honeycomb,
         lambda V, E, F: (2 * E, 3 * E, V + F),
         Invariants(0, 0, 2, 1, {3: 2}),
         f"{_ANTIPRISM} (zip = dk, bitruncation); the paper's honeycomb (Figure 13)",
-        "honeycomb: centroid of (u, w, c_f), exactly dual(kis(mesh)) with the "
-        "package's centroids",
+        "honeycomb: centroid of (u, w, c_f), exactly dual(kis(mesh)) with the package's centroids",
         identity="dk",
     ),
     Operator(
-        "u", "subdivide", classic.loop_remesh,
+        "u",
+        "subdivide",
+        classic.loop_remesh,
         lambda V, E, F: (V + E, 4 * E, F + 2 * E),
         Invariants(1, 0, 1, 1, {6: 1}, {3: 2}),
         f"{_ANTIPRISM} ('ambo while retaining original vertices'); Loop's remeshing (Figure 3)",
@@ -369,7 +402,9 @@ _OPERATORS = [
         identity="dcd",
     ),
     Operator(
-        "n", "needle", classic.sqrt3_remesh,
+        "n",
+        "needle",
+        classic.sqrt3_remesh,
         lambda V, E, F: (V + F, 3 * E, 2 * E),
         Invariants(1, 1, 1, 2, {}, {3: 2}),
         f"{_ANTIPRISM} (needle = kd = dt); the sqrt(3) remeshing (Section 3)",
@@ -377,7 +412,9 @@ _OPERATORS = [
         identity="kd",
     ),
     Operator(
-        "r", "reflect", ops.reflect,
+        "r",
+        "reflect",
+        ops.reflect,
         lambda V, E, F: (V, E, F),
         Invariants(1, 0, 1, 1),
         f"Hart; {_HART}",
@@ -520,10 +557,7 @@ _DIGITS = "0123456789"
 
 
 def _known() -> str:
-    return (
-        f"operators {' '.join(OPERATORS)} (kN, tN take a number); "
-        "seeds T C O I D Pn An Yn"
-    )
+    return f"operators {' '.join(OPERATORS)} (kN, tN take a number); seeds T C O I D Pn An Yn"
 
 
 def parse(notation: str, *, seed_given: bool = False) -> Notation:
@@ -562,9 +596,7 @@ def parse(notation: str, *, seed_given: bool = False) -> Notation:
     while i < len(s):
         ch = s[i]
         if ch in _DIGITS:
-            raise NotationError(
-                f"number {ch!r} at position {i} does not follow a letter", s, i
-            )
+            raise NotationError(f"number {ch!r} at position {i} does not follow a letter", s, i)
         op, seed = OPERATORS.get(ch), SEEDS.get(ch)
         if op is None and seed is None:
             raise NotationError(
@@ -737,17 +769,17 @@ def _check_options(n: Notation, options: Mapping) -> None:
             )
             or "none"
         )
-        raise TypeError(
-            f"option(s) {unknown} are taken by no operator of {n.text!r} ({offer})"
-        )
+        raise TypeError(f"option(s) {unknown} are taken by no operator of {n.text!r} ({offer})")
 
 
 def _apply(tokens, mesh: Mesh, options: Mapping) -> Mesh:
     for tok in reversed(tokens):
         op = OPERATORS[tok.letter]
         kwargs = {k: options.get(k, default) for k, default in op.options.items()}
-        mesh = op.func(mesh, tok.number, **kwargs) if tok.number is not None else op.func(
-            mesh, **kwargs
+        mesh = (
+            op.func(mesh, tok.number, **kwargs)
+            if tok.number is not None
+            else op.func(mesh, **kwargs)
         )
     return mesh
 
@@ -899,8 +931,9 @@ def resolve(text: str) -> Scheme:
         return V, E, F
 
     func.__name__ = f"conway_{text}"
-    names = " of ".join(OPERATORS[t.letter].name + (str(t.number) if t.number else "")
-                        for t in tokens)
+    names = " of ".join(
+        OPERATORS[t.letter].name + (str(t.number) if t.number else "") for t in tokens
+    )
     return Scheme(
         name=text,
         func=func,

@@ -150,7 +150,7 @@ def truncate(mesh: Mesh, n: int | None = None, ratio: float = 1.0 / 3.0) -> Mesh
     sizes = np.add.reduceat(1 + from_cut.astype(np.int64), mesh.offsets[:-1])
     face_off = np.concatenate([[0], np.cumsum(sizes)])
     # one face per cut vertex, its points counter-clockwise
-    ring, ring_off = mesh.vertex_ring
+    ring, _ = mesh.vertex_ring
     ring_cut = np.repeat(cut, mesh.valences)
     vert_corners = point[ring[ring_cut]]
     vert_off = np.concatenate([[0], np.cumsum(mesh.valences[cut])])
