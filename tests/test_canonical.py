@@ -392,18 +392,23 @@ def _strings(depth: int, seeds, letters):
 
 
 @pytest.mark.slow
-def test_canonical_and_planarize_on_every_short_string():
-    """Every operator string of up to 3 letters from the issue's operators
-    on every Platonic seed (duplicates after the exact rewrites of
-    REDUCTIONS dropped, results of at most 1000 faces), plus 300 strings of
-    4 letters drawn at random: canonical and planarize both converge."""
+def test_canonical_and_planarize_on_short_strings():
+    """Every string of at most two of the issue's operators on T, C, D and a
+    pyramid (duplicates under the exact rewrites of REDUCTIONS dropped;
+    results of at most 300 faces), plus 60 strings of three or four
+    operators drawn at random: canonical and planarize both converge.
+
+    (The strings of up to four operators on T C O I D are about 690,000,
+    136,000 of them with at most 300 faces: too many for a test;
+    ``benchmarks/bench_canonical.py`` runs those of up to three.)"""
     letters = [c for c in OPERATORS if c != "r"]
+    seeds = ["T", "C", "D", "Y5"]
+    strings = list(_strings(2, seeds, letters))
+    longer = [s for s in _strings(4, ["T", "C", "D", "Y4"], letters) if len(s) >= 4]
+    strings += random.Random(10).sample(longer, 60)
     seen, failures = set(), []
-    strings = list(_strings(3, "TCOID", letters))
-    four = [s for s in _strings(4, "TCOID", letters) if len(s) == 5]
-    strings += random.Random(10).sample(four, 300)
     for text in strings:
-        if predict_counts(text)[0][2] > 1000:
+        if predict_counts(text)[0][2] > 300:
             continue
         key = reduce_notation(text)
         if key in seen:
@@ -415,4 +420,4 @@ def test_canonical_and_planarize_on_every_short_string():
         if not (rep.converged and rep2.converged):
             failures.append((text, rep.message, rep2.message))
     assert not failures, failures[:20]
-    assert len(seen) > 3000
+    assert len(seen) > 800
