@@ -288,7 +288,9 @@ def test_conway_canonical_option():
 
 # ---------------------------------------------------------------------- planarize
 PLANARIZE = {
-    "figure 1B (ddgC)": lambda: conway("ddgC"),
+    "figure 1B (ddg of the hard-edged cube)": lambda: conway("ddg", seed=shapes.hard_edged_cube()),
+    "figure 8A (ddgC)": lambda: conway("ddgC"),
+    "figure 9A (ddg of the hexagonal torus)": lambda: conway("ddg", seed=shapes.hexagonal_torus()),
     "jC": lambda: conway("jC"),
     "cD": lambda: conway("cD"),
     "torus, gyro, two duals": lambda: pentanb.smooth(pentanb.pentagonalize(shapes.torus())),
@@ -363,13 +365,22 @@ def test_planarity_of_a_bent_quad():
     assert planarity(m) == pytest.approx(per_face.max() * 2 / edge_lengths(m).mean(), rel=1e-6)
 
 
-def test_planarity_of_figure_1b():
-    """Issue 10: after two duals the paper's faces are 6-15 % of an edge
-    length off planar (Figures 1B, 9A, 12B).  Figure 1B = ddgC: 6 %."""
-    p = planarity(conway("ddgC"))
-    assert 0.05 < p < 0.15
-    assert planarity(planarize(conway("ddgC"))) < 1e-12
-    assert planarity(canonical(conway("ddgC"))) < 1e-12
+def test_planarity_of_the_papers_figures():
+    """Issue 10: "after two duals the faces here are not planar (6-15 % of an
+    edge length off the best-fit plane on Figures 1B, 9A, 12B)".  Measured:
+    9A and 12B are in that range; 1B is not (its hard-edged cube keeps most
+    faces nearly flat): the 6 % is Figure 8A's plain cube.  Planarize brings
+    every one to rounding level."""
+    fig1b = conway("ddg", seed=shapes.hard_edged_cube())
+    fig8a = conway("ddgC")
+    fig9a = conway("ddg", seed=shapes.hexagonal_torus())
+    fig12b = conway("ddgddg", seed=shapes.animal())
+    assert planarity(fig1b) < 0.06, "does not hold as stated for Figure 1B"
+    for m in (fig8a, fig9a, fig12b):
+        assert 0.06 <= planarity(m) <= 0.16
+    for m in (fig1b, fig8a, fig9a):
+        assert planarity(planarize(m)) < 1e-12
+    assert planarity(canonical(fig8a)) < 1e-12
 
 
 def test_face_planarity_arguments():
@@ -421,3 +432,17 @@ def test_canonical_and_planarize_on_short_strings():
             failures.append((text, rep.message, rep2.message))
     assert not failures, failures[:20]
     assert len(seen) > 800
+
+
+def test_importing_needs_numpy_only():
+    """The new modules import scipy only when a function needs it."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, pentanb.conway, pentanb.canonical, pentanb.analysis.planarity;"
+        "assert 'scipy' not in sys.modules, 'scipy imported';"
+        "pentanb.conway.conway('gC');"
+        "assert 'scipy' not in sys.modules"
+    )
+    subprocess.run([sys.executable, "-c", code], check=True)
