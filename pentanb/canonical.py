@@ -150,8 +150,9 @@ def _convex(mesh: Mesh, slack: float = 1e-9) -> bool:
     n = mesh.face_normals
     x = mesh.vertices
     size = np.abs(x).max()
-    for lo in range(0, c.shape[0], 256):  # bounded memory on large meshes
-        d = np.einsum("fvk,fk->fv", x[None, :, :] - c[lo : lo + 256, None, :], n[lo : lo + 256])
+    step = max(1, 1_000_000 // x.shape[0])  # faces at a time: bounded memory
+    for lo in range(0, c.shape[0], step):
+        d = x @ n[lo : lo + step].T - np.einsum("ij,ij->i", c[lo : lo + step], n[lo : lo + step])
         if d.max() > slack * size:
             return False
     return True
