@@ -57,6 +57,8 @@ __all__ = [
     "conway",
     "resolve",
     "parse",
+    "Notation",
+    "Token",
     "reduce_notation",
     "predict_counts",
     "NotationError",
