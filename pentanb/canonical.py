@@ -37,7 +37,8 @@ iteration stalls on ``cY5`` and ``zY5``).  Here:
 * planarize: unknowns are the vertices and a plane ``(n_f, d_f)`` for every
   non-triangular face; equations ``n_f . x_v = d_f`` and ``|n_f| = 1``.
   Steps of least norm (vertex moves weighted against plane moves) project
-  the mesh onto the planar meshes nearby.
+  the mesh onto the planar meshes nearby; if that collapses edges, a first
+  phase that also keeps the edge lengths comes before the projection.
 
 scipy.sparse is imported when a function is called (``import pentanb``
 needs numpy only).
@@ -651,12 +652,16 @@ def _canonical_system(mesh: Mesh, x: np.ndarray, y: np.ndarray):
     return np.concatenate([r_corner, r_edge, r_centre]), J
 
 
-def _least_norm_lm(residual_and_jacobian, z, max_iterations, stop, weights=None):
+def _least_norm_lm(
+    residual_and_jacobian, z, max_iterations, stop, weights=None, max_step=None, n_capped=0
+):
     """Levenberg-Marquardt with steps of least (weighted) norm.
 
     ``residual_and_jacobian(z) -> (r, J)``; the step solves
     ``(J W J^T + lam I) mu = r``, ``dz = -W J^T mu`` and is kept when it
-    lowers ``|r|``.  Stops when ``max |r| <= stop``.
+    lowers ``|r|``.  Stops when ``max |r| <= stop``.  With ``max_step`` the
+    step is shortened so that no point among the first ``n_capped``
+    unknowns (read as 3-vectors) moves further than that.
 
     Returns
     -------
@@ -681,6 +686,10 @@ def _least_norm_lm(residual_and_jacobian, z, max_iterations, stop, weights=None)
             its += 1
             mu = spsolve(A + lam * eye, r)
             dz = -(JW.T @ mu)
+            if max_step is not None:
+                longest = np.linalg.norm(dz[:n_capped].reshape(-1, 3), axis=1).max()
+                if longest > max_step:
+                    dz *= max_step / longest
             z_new = z + dz
             r_new, J_new = residual_and_jacobian(z_new)
             cost_new = float(r_new @ r_new)
@@ -780,7 +789,12 @@ def planarize(
     Any genus.  Triangles are planar already and impose nothing; every other
     face gets a plane, and damped Gauss-Newton steps of least norm (a vertex
     move weighs ten times a plane move) bring every corner onto its face's
-    plane.
+    plane: nearly the nearest planar mesh.  From a strongly folded start the
+    nearest planar mesh can shrink edges to nothing (``conway("atjT")``: the
+    centroid join of the tetrahedron is folded inwards and its triangles
+    collapse); then a first phase that also keeps the edge lengths (least
+    squares) is run before the projection, and a collapse that remains is
+    reported (``message="faces collapsed"``, not converged).
 
     Parameters
     ----------
@@ -814,10 +828,17 @@ def planarize(
     x = x0
     if big.size:
         x, its, message = _solve_planar(mesh, x0, big, max_iterations, tolerance)
+        for weight in EDGE_WEIGHTS:  # the nearest planar mesh collapsed faces
+            if not _collapsed(x, mesh, x0):
+                break
+            x, more, message = _solve_planar(mesh, x0, big, max_iterations, tolerance, weight)
+            its += more
+        if _collapsed(x, mesh, x0):
+            message = "faces collapsed"
     out = mesh.with_vertices(x * scale + origin)
     planar = float(face_planarity(out, relative_to="face").max(initial=0.0))
     move = float(np.linalg.norm(x - x0, axis=1).max(initial=0.0))
-    ok = planar <= tolerance
+    ok = planar <= tolerance and message != "faces collapsed"
     if not ok and message == "converged":
         message = "tolerance not reached"
     rep = PlacementReport(
@@ -846,9 +867,17 @@ def planarize(
 
 #: Weight of a plane unknown against a vertex coordinate in the least-norm step.
 PLANE_WEIGHT = 10.0
+#: Weights of the edge-length terms tried, in turn, when the nearest planar
+#: mesh collapses faces.
+EDGE_WEIGHTS = (1.0, 3.0, 10.0)
 
 
-def _solve_planar(mesh: Mesh, x0: np.ndarray, big: np.ndarray, max_iterations, tolerance):
+def _solve_planar(
+    mesh: Mesh, x0: np.ndarray, big: np.ndarray, max_iterations, tolerance, edge_weight=0.0
+):
+    """Least-norm projection onto the planar meshes; with ``edge_weight``, a
+    first phase keeps the edge lengths too (least squares), so that faces
+    are not collapsed on the way (then the projection from there)."""
     from scipy import sparse
 
     nv = x0.shape[0]
@@ -869,33 +898,59 @@ def _solve_planar(mesh: Mesh, x0: np.ndarray, big: np.ndarray, max_iterations, t
     k3 = np.arange(3)
     base_n = 3 * nv
     base_d = 3 * nv + 3 * nb
+    ea, eb = mesh.edges[:, 0], mesh.edges[:, 1]
+    length0 = np.linalg.norm(x0[ea] - x0[eb], axis=1)
 
-    def system(z):
+    def system(z, weight=0.0):
         x = z[:base_n].reshape(-1, 3)
         n = z[base_n:base_d].reshape(-1, 3)
         d = z[base_d:]
         xv, nf = x[v], n[f]
         r1 = np.einsum("ij,ij->i", nf, xv) - d[f]
         r2 = 0.5 * (np.einsum("ij,ij->i", n, n) - 1.0)
-        rows = np.concatenate(
-            [np.repeat(np.arange(nh), 3), np.repeat(np.arange(nh), 3), np.arange(nh)]
-            + [np.repeat(nh + np.arange(nb), 3)]
+        rows = [np.repeat(np.arange(nh), 3), np.repeat(np.arange(nh), 3), np.arange(nh)]
+        rows.append(np.repeat(nh + np.arange(nb), 3))
+        cols = [
+            (3 * v[:, None] + k3).ravel(),
+            (base_n + 3 * f[:, None] + k3).ravel(),
+            base_d + f,
+            (base_n + 3 * np.arange(nb)[:, None] + k3).ravel(),
+        ]
+        vals = [nf.ravel(), xv.ravel(), -np.ones(nh), n.ravel()]
+        res = [r1, r2]
+        n_rows = nh + nb
+        if weight:
+            ev = x[ea] - x[eb]
+            length = np.linalg.norm(ev, axis=1)
+            unit = ev / length[:, None]
+            res.append(weight * (length - length0))
+            er = np.repeat(n_rows + np.arange(ea.size), 3)
+            rows += [er, er]
+            cols += [(3 * ea[:, None] + k3).ravel(), (3 * eb[:, None] + k3).ravel()]
+            vals += [weight * unit.ravel(), -weight * unit.ravel()]
+            n_rows += ea.size
+        J = sparse.csr_matrix(
+            (np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+            shape=(n_rows, base_d + nb),
         )
-        cols = np.concatenate(
-            [
-                (3 * v[:, None] + k3).ravel(),
-                (base_n + 3 * f[:, None] + k3).ravel(),
-                base_d + f,
-                (base_n + 3 * np.arange(nb)[:, None] + k3).ravel(),
-            ]
-        )
-        vals = np.concatenate([nf.ravel(), xv.ravel(), -np.ones(nh), n.ravel()])
-        J = sparse.csr_matrix((vals, (rows, cols)), shape=(nh + nb, base_d + nb))
-        return np.concatenate([r1, r2]), J
+        return np.concatenate(res), J
 
-    z0 = np.concatenate([x0.ravel(), n0.ravel(), d0])
+    z = np.concatenate([x0.ravel(), n0.ravel(), d0])
     weights = np.concatenate([np.ones(base_n), np.full(4 * nb, PLANE_WEIGHT)])
+    its0 = 0
+    if edge_weight:
+        z, its0, _ = _least_norm_lm(
+            lambda z: system(z, edge_weight), z, 30, stop=0.0, weights=weights
+        )
     z, its, message = _least_norm_lm(
-        system, z0, max_iterations, stop=min(tolerance, 1e-8) * 1e-3, weights=weights
+        system, z, max_iterations, stop=min(tolerance, 1e-8) * 1e-3, weights=weights
     )
-    return z[:base_n].reshape(-1, 3), its, message
+    return z[:base_n].reshape(-1, 3), its0 + its, message
+
+
+def _collapsed(x: np.ndarray, mesh: Mesh, x0: np.ndarray) -> bool:
+    """An edge shrunk to almost nothing that was not so before."""
+    ea, eb = mesh.edges[:, 0], mesh.edges[:, 1]
+    before = np.linalg.norm(x0[ea] - x0[eb], axis=1)
+    after = np.linalg.norm(x[ea] - x[eb], axis=1)
+    return bool(np.any((after < 1e-3 * after.mean()) & (before >= 1e-2 * before.mean())))

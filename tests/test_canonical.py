@@ -326,6 +326,25 @@ def test_planarize_leaves_planar_meshes_alone():
         assert np.allclose(out.vertices, m.vertices, atol=1e-12)
 
 
+def test_planarize_does_not_collapse_faces():
+    """The nearest planar mesh to the folded ``atjT`` (the centroid join of the
+    tetrahedron is folded inwards) collapses its triangles to points; planarize
+    keeps the edge lengths first and returns a mesh with no collapsed edge."""
+    from pentanb.canonical import _collapsed, _solve_planar
+
+    for text in ("atjT", "utjT"):
+        m = conway(text)
+        x0 = (m.vertices - m.vertices.mean(axis=0)) / edge_lengths(m).mean()
+        big = np.flatnonzero(m.face_sizes > 3)
+        nearest, _, _ = _solve_planar(m, x0, big, 100, TOL)
+        assert _collapsed(nearest, m, x0), "the check can fail"
+        out, report = planarize(m, report=True)
+        assert report.converged, report
+        assert flatness(out) <= TOL
+        lengths = edge_lengths(out)
+        assert lengths.min() > 0.1 * lengths.mean()
+
+
 def test_planarize_reports_failure():
     m = conway("jC")
     with pytest.raises(ConvergenceError, match="planar positions not reached"):
