@@ -246,9 +246,11 @@ def canonical(
     if x is not None:
         out = mesh.with_vertices(x)
         measures = _canonical_measures(out)
-        if max(measures[:3]) > 1e-3 * tolerance:
+        if max(measures[:3]) > 1e-2 * tolerance:
             # polish: Newton steps from a start that is nearly there
-            x, _, its, message = _solve_canonical(mesh, x, _poles(mesh, x), 5, tolerance)
+            x, _, its, message = _solve_canonical(
+                mesh, x, _poles(mesh, x), 5, tolerance, centring=False
+            )
             x = _centre(mesh, x)
             measures = None
     else:  # fall back: Newton from the vertices pushed onto a sphere
@@ -405,7 +407,8 @@ def _koebe(mesh: Mesh, max_iterations: int = 100):
         w = 1.0 / np.cosh(x)
         L = sparse.csc_matrix((np.concatenate([w, w, -w, -w]), (ab, ba)), shape=(n, n))
         step = np.zeros(n)
-        step[1:] = -spsolve(L[1:, 1:], g[1:])  # rho_0 fixed: the scale is free
+        # rho_0 fixed: the scale is free
+        step[1:] = -spsolve(L[1:, 1:], g[1:], permc_spec="MMD_AT_PLUS_A")
         if gmax < 1e-4:  # Newton's own region: full steps, no line search
             rho = rho + step
             continue
@@ -653,15 +656,17 @@ def _canonical_system(mesh: Mesh, x: np.ndarray, y: np.ndarray):
 
 
 def _least_norm_lm(
-    residual_and_jacobian, z, max_iterations, stop, weights=None, max_step=None, n_capped=0
+    residual_and_jacobian,
+    z,
+    max_iterations,
+    stop,
+    weights=None,
 ):
     """Levenberg-Marquardt with steps of least (weighted) norm.
 
     ``residual_and_jacobian(z) -> (r, J)``; the step solves
     ``(J W J^T + lam I) mu = r``, ``dz = -W J^T mu`` and is kept when it
-    lowers ``|r|``.  Stops when ``max |r| <= stop``.  With ``max_step`` the
-    step is shortened so that no point among the first ``n_capped``
-    unknowns (read as 3-vectors) moves further than that.
+    lowers ``|r|``.  Stops when ``max |r| <= stop``.
 
     Returns
     -------
@@ -686,10 +691,6 @@ def _least_norm_lm(
             its += 1
             mu = spsolve(A + lam * eye, r)
             dz = -(JW.T @ mu)
-            if max_step is not None:
-                longest = np.linalg.norm(dz[:n_capped].reshape(-1, 3), axis=1).max()
-                if longest > max_step:
-                    dz *= max_step / longest
             z_new = z + dz
             r_new, J_new = residual_and_jacobian(z_new)
             cost_new = float(r_new @ r_new)
@@ -708,11 +709,15 @@ def _least_norm_lm(
     return z, its, f"stopped after {max_iterations} iterations"
 
 
-def _solve_canonical(mesh, x, y, max_iterations, tolerance):
+def _solve_canonical(mesh, x, y, max_iterations, tolerance, centring=True):
+    """Newton (least-norm Levenberg-Marquardt) on the canonical equations;
+    without ``centring`` the three dense centring rows are left out (a
+    polish that is centred afterwards)."""
     nv = x.shape[0]
 
     def system(z):
-        return _canonical_system(mesh, z[: 3 * nv].reshape(-1, 3), z[3 * nv :].reshape(-1, 3))
+        r, J = _canonical_system(mesh, z[: 3 * nv].reshape(-1, 3), z[3 * nv :].reshape(-1, 3))
+        return (r, J) if centring else (r[:-3], J[:-3])
 
     z0 = np.concatenate([x.ravel(), y.ravel()])
     z, its, message = _least_norm_lm(system, z0, max_iterations, stop=min(tolerance, 1e-8) * 1e-3)
