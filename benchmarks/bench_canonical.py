@@ -75,7 +75,7 @@ def table(runs: int) -> list[dict]:
 def enumerate_strings(depth: int, seeds: list[str], max_faces: int) -> dict:
     letters = [c for c in OPERATORS if c != "r"]
     seen: set[str] = set()
-    failures, times, slow = [], [], []
+    failures, times, slow, slow_p = [], [], [], []
     start = time.perf_counter()
     for k in range(depth + 1):
         for ops in itertools.product(letters, repeat=k):
@@ -96,6 +96,7 @@ def enumerate_strings(depth: int, seeds: list[str], max_faces: int) -> dict:
                 tp = time.perf_counter() - t
                 times.append((m.n_faces, tc, tp))
                 slow.append((tc, text, m.n_faces))
+                slow_p.append((tp, text, m.n_faces, rep2.iterations, round(rep2.max_move, 3)))
                 if not (rep.converged and rep2.converged):
                     failures.append((text, rep.message, rep2.message))
     t = np.array(times)
@@ -111,6 +112,7 @@ def enumerate_strings(depth: int, seeds: list[str], max_faces: int) -> dict:
                 "planarize_max_s": float(t[sel, 2].max()),
             }
     slow.sort(reverse=True)
+    slow_p.sort(reverse=True)
     return {
         "depth": depth,
         "seeds": seeds,
@@ -120,9 +122,11 @@ def enumerate_strings(depth: int, seeds: list[str], max_faces: int) -> dict:
         "wall_s": time.perf_counter() - start,
         "by_size": bins,
         "slowest_canonical": [(s, f, round(x, 3)) for x, s, f in slow[:10]],
+        "slowest_planarize": [(s, f, round(x, 3), i, mv) for x, s, f, i, mv in slow_p[:10]],
         "over_1s_at_most_500_faces": [
             (s, f, round(x, 3)) for x, s, f in slow if x > 1.0 and f <= 500
-        ],
+        ]
+        + [(s, f, round(x, 3)) for x, s, f, _, _ in slow_p if x > 1.0 and f <= 500],
     }
 
 
@@ -161,7 +165,8 @@ def main(argv=None) -> int:
         )
         for k, v in e["by_size"].items():
             print(f"  {k:>14}: {v}")
-        print("  slowest:", e["slowest_canonical"])
+        print("  slowest canonical:", e["slowest_canonical"])
+        print("  slowest planarize:", e["slowest_planarize"])
         for f in e["failures"][:20]:
             print("  FAILED", f)
     if args.check:
