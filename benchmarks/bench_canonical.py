@@ -1,7 +1,7 @@
 """Benchmark: canonical and planar positions of Conway polyhedra (issue 10).
 
-Issue 10 asks that :func:`pentanb.canonical.canonical` and
-:func:`pentanb.canonical.planarize` converge on every seed and on every
+Issue 10 asks that :func:`pentanb.positions.canonical` and
+:func:`pentanb.positions.planarize` converge on every seed and on every
 operator string of length up to 4 from the seeds, in under a second for
 meshes of a few hundred faces.  This script
 
@@ -9,7 +9,7 @@ meshes of a few hundred faces.  This script
 * with ``--enumerate N`` runs both on *every* string of at most N operators
   (the issue's 18 letters, ``r`` left out: a mirror image has the mirror
   canonical form) on the given seeds, one string per class of the exact
-  rewrites of ``pentanb.conway.REDUCTIONS``, results of at most
+  rewrites of ``pentanb.notation.REDUCTIONS``, results of at most
   ``--max-faces`` faces, and reports failures, timings and the slowest
   strings.
 
@@ -32,8 +32,8 @@ import time
 
 import numpy as np
 
-from pentanb.canonical import canonical, planarize
-from pentanb.conway import OPERATORS, conway, predict_counts, reduce_notation
+from pentanb.notation import OPERATORS, conway, predict_counts, reduce_notation
+from pentanb.positions import canonical, planarize
 
 TABLE = [
     "tI", "sC", "gC", "pT", "ddgT", "zD", "cD", "wD", "qgC", "ggD", "cwD", "gggC",

@@ -16,6 +16,8 @@ from __future__ import annotations
 from . import shapes, topology
 from .io import read, write
 from .mesh import Mesh, MeshError
+from .notation import conway
+from .positions import ConvergenceError, canonical, planarize
 from .schemes import (
     SCHEMES,
     Scheme,
@@ -64,6 +66,10 @@ __all__ = [
     "export_html",
     "figures",
     "analysis",
+    "conway",
+    "canonical",
+    "planarize",
+    "ConvergenceError",
 ]
 
 # drawing functions: imported on first use, so that `import pentanb` needs numpy only

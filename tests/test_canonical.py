@@ -22,9 +22,9 @@ from helpers import corpus, face_lists, two_cubes
 
 import pentanb
 from pentanb import Mesh, MeshError, shapes
-from pentanb.analysis.planarity import best_fit_planes, face_planarity, planarity
-from pentanb.canonical import ConvergenceError, canonical, planarize
-from pentanb.conway import OPERATORS, conway, predict_counts, reduce_notation
+from pentanb.analysis.measures import best_fit_planes, face_planarity, planarity
+from pentanb.notation import OPERATORS, conway, predict_counts, reduce_notation
+from pentanb.positions import ConvergenceError, canonical, planarize
 
 PHI = (1 + 5**0.5) / 2
 TOL = 1e-8
@@ -330,7 +330,7 @@ def test_planarize_does_not_collapse_faces():
     """The nearest planar mesh to the folded ``atjT`` (the centroid join of the
     tetrahedron is folded inwards) collapses its triangles to points; planarize
     keeps the edge lengths first and returns a mesh with no collapsed edge."""
-    from pentanb.canonical import _collapsed, _solve_planar
+    from pentanb.positions import _collapsed, _solve_planar
 
     for text in ("atjT", "utjT"):
         m = conway(text)
@@ -459,9 +459,9 @@ def test_importing_needs_numpy_only():
     import sys
 
     code = (
-        "import sys, pentanb.conway, pentanb.canonical, pentanb.analysis.planarity;"
+        "import sys, pentanb.notation, pentanb.positions, pentanb.analysis.measures;"
         "assert 'scipy' not in sys.modules, 'scipy imported';"
-        "pentanb.conway.conway('gC');"
+        "pentanb.notation.conway('gC');"
         "assert 'scipy' not in sys.modules"
     )
     subprocess.run([sys.executable, "-c", code], check=True)

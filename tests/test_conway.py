@@ -24,7 +24,7 @@ from helpers import check_valid, corpus, face_lists, is_isomorphic
 
 import pentanb
 from pentanb import Mesh, shapes
-from pentanb.conway import (
+from pentanb.notation import (
     OPERATORS,
     REDUCTIONS,
     SEEDS,

@@ -374,3 +374,16 @@ def test_scheme_formula_text():
     assert SCHEMES["honeycomb"].formula == "(2E, 3E, V+F)"
     # triangulate leaves triangles alone: its formula is a bound
     assert SCHEMES["triangulate"].formula.endswith("at most (when no face is a triangle)")
+
+
+def test_conway_notation_is_a_scheme_name():
+    """Issue 10 item 5: wherever a scheme name is taken, Conway operators are too."""
+    from pentanb.schemes.registry import get_scheme
+
+    s = get_scheme("dg")
+    assert s.name == "dg" and s.formula == "(2E, 5E, V+2E+F)"
+    snub = subdivide(shapes.cube(), "dg", iterations=1, duals=0)
+    assert (snub.n_vertices, snub.n_edges, snub.n_faces) == (24, 60, 38)  # snub cube sC
+    assert get_scheme("k4").formula.endswith(" at most")
+    with pytest.raises(ValueError, match=r"unknown scheme 'pentagonalise'.*Conway operators"):
+        get_scheme("pentagonalise")

@@ -816,3 +816,14 @@ def test_lazy_names_are_exposed():
     assert pentanb.step_through is steps.step_through
     assert pentanb.export_html is html.export_html
     assert stages.stages is not None
+
+
+def test_explore_accepts_conway_notation():
+    """Issue 10 item 5: a notation string wherever a scheme name is taken."""
+    e = pentanb.explore("cube", "dg", iterations=1, duals=0)
+    assert e.scheme.value == "dg"
+    m = e.mesh_at(1)
+    assert (m.n_vertices, m.n_edges, m.n_faces) == (24, 60, 38)  # the snub cube, sC
+    assert m.face_size_histogram() == {3: 32, 4: 6}
+    with pytest.raises(ValueError, match="Conway operators"):
+        pentanb.explore("cube", "dgX")

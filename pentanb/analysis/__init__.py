@@ -2,7 +2,8 @@
 
 * :mod:`~pentanb.analysis.measures`: measures that the figures, the
   convergence study and the notebooks share (vertex and face
-  configurations, radius spread, crease angles, edge waviness); re-exported
+  configurations, radius spread, crease angles, edge waviness, spreads,
+  planarity); re-exported
   here, so ``from pentanb.analysis import vertex_configurations`` works.
 * :mod:`~pentanb.analysis.convergence`: how fast dual smoothing converges
   (Section 7's "visually confirmed" G1 continuity, measured).
@@ -20,13 +21,25 @@ stays numpy-only.)
 from __future__ import annotations
 
 from .measures import (
+    angle_spread,
+    best_fit_planes,
     canonical_configuration,
     configuration_counts,
+    corner_angles,
+    crease_angles,
+    edge_length_spread,
+    edge_lengths,
+    edge_profile,
     edge_waviness,
     face_configurations,
+    face_planarity,
+    lateral_amplitude,
     normal_angles,
+    planarity,
     radius_spread,
     ray_distances,
+    region_geometry,
+    uniformity,
     vertex_configurations,
 )
 from .spectral import (
@@ -59,4 +72,16 @@ __all__ = [
     "normal_angles",
     "ray_distances",
     "edge_waviness",
+    "edge_lengths",
+    "edge_length_spread",
+    "corner_angles",
+    "angle_spread",
+    "uniformity",
+    "face_planarity",
+    "planarity",
+    "best_fit_planes",
+    "region_geometry",
+    "crease_angles",
+    "edge_profile",
+    "lateral_amplitude",
 ]

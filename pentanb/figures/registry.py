@@ -152,7 +152,7 @@ def get(name: int | str) -> FigureSpec:
             f"{type(name).__name__} {name!r}"
         )
     numeric = not isinstance(name, str) or (name.isascii() and name.isdecimal())
-    key = f"fig{int(name):02d}" if numeric else name
+    key = f"fig{int(name):02d}" if numeric else str(name)
     try:
         return FIGURES[key]
     except KeyError:

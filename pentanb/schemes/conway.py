@@ -3,7 +3,7 @@
 The paper's pentagonalization is Conway's *gyro* and its comparison schemes
 are *expand* (corner cutting), *ortho* (vertex insertion), *chamfer* (hexagon
 preservation), *zip* (honeycomb), *subdivide* (Loop's remeshing) and
-*needle* (the sqrt(3) remeshing): :mod:`pentanb.conway` calls those
+*needle* (the sqrt(3) remeshing): :mod:`pentanb.notation` calls those
 functions for those letters.  This module adds the rest of Conway's and
 Hart's set (Hart, "Conway notation for polyhedra", and the extended set of
 Antiprism's ``conway``), written like the other remeshings: whole-array

@@ -41,8 +41,8 @@ def _scheme_argument(scheme: object) -> Scheme:
     s = get_scheme(scheme)  # type: ignore[arg-type]
     if not isinstance(s, Scheme):
         raise TypeError(
-            f"scheme must be the name of a scheme of pentanb.SCHEMES ({', '.join(SCHEMES)}), "
-            f"not {type(scheme).__name__}"
+            f"scheme must be the name of a scheme of pentanb.SCHEMES ({', '.join(SCHEMES)}) "
+            f"or Conway notation such as 'dg', not {type(scheme).__name__}"
         )
     return s
 
@@ -124,8 +124,11 @@ class Explorer(W.HBox):
         self.shape = W.Dropdown(
             options=options, value=first, description="shape", style=style, layout=wide
         )
+        choices = [(x.label, x.name) for x in SCHEMES.values()]
+        if s.name not in SCHEMES:  # Conway notation, e.g. explore("cube", "dg")
+            choices.append((s.label, s.name))
         self.scheme = W.Dropdown(
-            options=[(x.label, x.name) for x in SCHEMES.values()],
+            options=choices,
             value=s.name,
             description="scheme",
             style=style,
@@ -201,7 +204,7 @@ class Explorer(W.HBox):
         return self._meshes[name]
 
     def _options(self) -> dict[str, float]:
-        s = SCHEMES[self.scheme.value]
+        s = _scheme_argument(self.scheme.value)
         return {"scale": float(self.scale.value)} if "scale" in s.options else {}
 
     def key(self, iterations: int | None = None) -> Key:
@@ -211,7 +214,7 @@ class Explorer(W.HBox):
         return (self.shape.value, self.scheme.value, self.duals.value, opts, it)
 
     def _sync_scale(self) -> None:
-        self.scale.disabled = "scale" not in SCHEMES[self.scheme.value].options
+        self.scale.disabled = "scale" not in _scheme_argument(self.scheme.value).options
 
     def _on_change(self, change) -> None:
         if change["owner"] is self.scheme:
@@ -358,7 +361,7 @@ class Explorer(W.HBox):
                 meshes.append(self.mesh_at(k))
             except MeshError:
                 break
-        label = SCHEMES[self.scheme.value].label
+        label = _scheme_argument(self.scheme.value).label
         opts = self._options()
         title = (
             f"<b>{html.escape(str(self.shape.value))}</b>: {html.escape(label)}"
@@ -402,7 +405,8 @@ def explore(
     mesh : Mesh or str
         A mesh, or a name from :data:`pentanb.shapes.SHAPES`.
     scheme : str or Scheme
-        A scheme of :data:`pentanb.SCHEMES`.
+        A scheme of :data:`pentanb.SCHEMES`, or Conway operators such as ``"dg"``
+        (:func:`pentanb.notation.resolve`).
     iterations : int in [0, max_iterations]
         First value of the iterations slider.
     duals : int in [0, :data:`MAX_DUALS`]

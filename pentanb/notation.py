@@ -32,7 +32,7 @@ formula, literature):
 Positions follow the package's conventions (edge midpoints and thirds, face
 centroids, old vertices kept), so the dual is the paper's smoothing and
 ``"ddgT"`` is *not* ``"gT"``.  ``canonical=True`` puts the result in
-canonical form (:func:`pentanb.canonical.canonical`), which depends only on
+canonical form (:func:`pentanb.positions.canonical`), which depends only on
 the topology; there the rewrite table :data:`REDUCTIONS` (``dd`` -> nothing,
 ``ad`` -> ``a``, ``dk`` -> ``z``, ..., polyHedronisme's and Hart's
 substitutions) is applied before any work, because it then changes nothing
@@ -837,7 +837,7 @@ def conway(
     seed : Mesh, optional
         Any mesh to start from instead of a seed letter.
     canonical : bool
-        Put the result in canonical form (:func:`pentanb.canonical.canonical`;
+        Put the result in canonical form (:func:`pentanb.positions.canonical`;
         genus 0 only).  Otherwise the package's positions (centroids, edge
         midpoints and thirds; the dual is the paper's smoothing).
     reduce : bool, optional
@@ -870,7 +870,7 @@ def conway(
     Examples
     --------
     >>> import pentanb
-    >>> from pentanb.conway import conway
+    >>> from pentanb.notation import conway
     >>> m = conway("tI")
     >>> m.n_vertices, m.n_edges, m.n_faces, m.face_size_histogram()
     (60, 90, 32, {5: 12, 6: 20})
@@ -896,7 +896,7 @@ def conway(
         seed = s.build(n.seed.number) if s.needs_number else s.build()
     mesh = _apply(n.operators, seed, options)
     if canonical:
-        from .canonical import canonical as _canonical
+        from .positions import canonical as _canonical
 
         mesh = _canonical(mesh)
     return mesh

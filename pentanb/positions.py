@@ -52,7 +52,7 @@ from typing import Literal, overload
 
 import numpy as np
 
-from .analysis.planarity import face_planarity
+from .analysis.measures import face_planarity
 from .mesh import Mesh, MeshError
 
 __all__ = ["canonical", "planarize", "PlacementReport", "ConvergenceError", "tangency_points"]
@@ -894,7 +894,7 @@ def _solve_planar(
     v, f = mesh.corners[h], slot[hf[h]]
     nh = h.size
     sub = Mesh.from_csr(x0, mesh.corners, mesh.offsets, validate=False)
-    from .analysis.planarity import best_fit_planes
+    from .analysis.measures import best_fit_planes
 
     _, normals = best_fit_planes(sub)
     n0 = normals[big]
