@@ -31,7 +31,9 @@ from ._build import (
     concat_faces,
     edge_points,
     fixed_size,
+    index_dtype,
     output,
+    scale_safe,
 )
 
 __all__ = [
@@ -45,6 +47,7 @@ __all__ = [
 ]
 
 
+@scale_safe
 def triangulate(mesh: Mesh) -> Mesh:
     """The simplest triangulation of Figure 2: a centroid fan in every non-triangle.
 
@@ -65,8 +68,9 @@ def triangulate(mesh: Mesh) -> Mesh:
     if not big.any():
         return mesh
     big_faces = np.flatnonzero(big)
-    centre_id = np.full(mesh.n_faces, -1, dtype=np.int64)
-    centre_id[big_faces] = n + np.arange(big_faces.size, dtype=np.int64)
+    dt = index_dtype(n + big_faces.size, 3 * mesh.n_halfedges)
+    centre_id = np.full(mesh.n_faces, -1, dtype=dt)
+    centre_id[big_faces] = np.arange(n, n + big_faces.size, dtype=dt)
     hf = mesh.halfedge_face
     hb = np.flatnonzero(big[hf])
     fans = np.stack([mesh.corners[hb], mesh.head[hb], centre_id[hf[hb]]], axis=1)
@@ -76,6 +80,7 @@ def triangulate(mesh: Mesh) -> Mesh:
     return output(vertices, corners, offsets)
 
 
+@scale_safe
 def loop_remesh(mesh: Mesh) -> Mesh:
     """Loop's remeshing (Figure 3): a triangle-preserving scheme on any mesh.
 
@@ -91,13 +96,16 @@ def loop_remesh(mesh: Mesh) -> Mesh:
         ``(m_h, w, m_next)``.
     """
     check_mesh(mesh, "loop_remesh")
-    mid = mesh.n_vertices + mesh.halfedge_edge
+    dt = index_dtype(mesh.n_vertices + mesh.n_edges, 4 * mesh.n_halfedges)
+    mid = mesh.halfedge_edge.astype(dt)
+    mid += mesh.n_vertices
     corner_tris = np.stack([mid, mesh.head, mid[mesh.next]], axis=1)
     corners, offsets = concat_faces((mid, mesh.offsets), fixed_size(corner_tris))
     vertices = np.concatenate([mesh.vertices, edge_points(mesh, 1)])
     return output(vertices, corners, offsets)
 
 
+@scale_safe
 def sqrt3_remesh(mesh: Mesh) -> Mesh:
     """The remeshing of sqrt(3) subdivision: a centroid fan, then every old edge flipped.
 
@@ -111,13 +119,16 @@ def sqrt3_remesh(mesh: Mesh) -> Mesh:
         twin lies in face g.
     """
     check_mesh(mesh, "sqrt3_remesh")
-    c = mesh.n_vertices + mesh.halfedge_face
+    dt = index_dtype(mesh.n_vertices + mesh.n_faces, 3 * mesh.n_halfedges)
+    c = mesh.halfedge_face.astype(dt)
+    c += mesh.n_vertices
     tris = np.stack([mesh.corners, c[mesh.twin], c], axis=1)
     corners, offsets = fixed_size(tris)
     vertices = np.concatenate([mesh.vertices, mesh.face_centroids])
     return output(vertices, corners, offsets)
 
 
+@scale_safe
 def vertex_insertion(mesh: Mesh) -> Mesh:
     """Catmull-Clark's remeshing (vertex insertion), a quadrilateralization.
 
@@ -131,8 +142,12 @@ def vertex_insertion(mesh: Mesh) -> Mesh:
     """
     check_mesh(mesh, "vertex_insertion")
     n, E = mesh.n_vertices, mesh.n_edges
-    mid = n + mesh.halfedge_edge
-    quads = np.stack([mid, mesh.head, mid[mesh.next], n + E + mesh.halfedge_face], axis=1)
+    dt = index_dtype(n + E + mesh.n_faces, 4 * mesh.n_halfedges)
+    mid = mesh.halfedge_edge.astype(dt)
+    mid += n
+    centre = mesh.halfedge_face.astype(dt)
+    centre += n + E
+    quads = np.stack([mid, mesh.head.astype(dt), mid[mesh.next], centre], axis=1)
     corners, offsets = fixed_size(quads)
     vertices = np.concatenate([mesh.vertices, edge_points(mesh, 1), mesh.face_centroids])
     return output(vertices, corners, offsets)
@@ -147,6 +162,7 @@ def _corner_points(mesh: Mesh, scale: float) -> np.ndarray:
     return c + scale * (mesh.vertices[mesh.corners] - c)
 
 
+@scale_safe
 def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     """Doo-Sabin's remeshing (corner cutting), the dual of vertex insertion.
 
@@ -173,7 +189,7 @@ def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     check_mesh(mesh, "corner_cutting")
     s = check_scale(scale)
     check_vertex_faces(mesh, "corner_cutting")
-    k = np.arange(mesh.n_halfedges, dtype=np.int64)
+    k = np.arange(mesh.n_halfedges, dtype=mesh.corners.dtype)
     nxt, twin = mesh.next, mesh.twin
     eh = mesh.edge_halfedge
     quads = np.stack([nxt[eh], eh, nxt[twin[eh]], twin[eh]], axis=1)
@@ -182,6 +198,7 @@ def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     return output(_corner_points(mesh, s), corners, offsets)
 
 
+@scale_safe
 def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     """Hexagon preservation: the dual of Loop's remeshing (Conway's chamfer).
 
@@ -201,7 +218,8 @@ def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     check_mesh(mesh, "preserve_hexagons")
     s = check_scale(scale)
     n = mesh.n_vertices
-    k = n + np.arange(mesh.n_halfedges, dtype=np.int64)
+    dt = index_dtype(n + 2 * mesh.n_edges, 4 * mesh.n_halfedges)
+    k = np.arange(n, n + mesh.n_halfedges, dtype=dt)
     nxt, twin, tail = mesh.next, mesh.twin, mesh.corners
     h = mesh.edge_halfedge
     g = twin[h]
@@ -213,6 +231,7 @@ def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     return output(vertices, corners, offsets)
 
 
+@scale_safe
 def honeycomb(mesh: Mesh) -> Mesh:
     """Honeycomb subdivision: the dual of sqrt(3)'s remeshing (Conway's zip).
 
@@ -231,11 +250,11 @@ def honeycomb(mesh: Mesh) -> Mesh:
     """
     check_mesh(mesh, "honeycomb")
     H = mesh.n_halfedges
-    k = np.arange(H, dtype=np.int64)
+    k = np.arange(H, dtype=mesh.corners.dtype)
     ring, ring_off = mesh.vertex_ring
     # around vertex v: z(h_0), z(prev h_0), z(h_1), z(prev h_1), ...
     vfaces = np.stack([ring, mesh.prev[ring]], axis=1).reshape(-1)
-    corners, offsets = concat_faces((k, mesh.offsets), (vfaces, 2 * ring_off))
+    corners, offsets = concat_faces((k, mesh.offsets), (vfaces, 2 * ring_off.astype(np.int64)))
     v = mesh.vertices
     points = (v[mesh.corners] + v[mesh.head] + mesh.face_centroids[mesh.halfedge_face]) / 3.0
     return output(points, corners, offsets)

@@ -9,20 +9,21 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..mesh import Mesh
+from ..mesh import Mesh, _next_of, _prev_of
 from ._build import (
+    BLOCK,
     check_mesh,
     check_scale,
-    concat_faces,
     edge_points,
-    fixed_size,
-    halfedge_edge_point,
+    index_dtype,
     output,
+    scale_safe,
 )
 
 __all__ = ["pentagonalize", "preserve_pentagons"]
 
 
+@scale_safe
 def pentagonalize(mesh: Mesh) -> Mesh:
     """Pentagonalization (pentagonal conversion), Section 5.1 steps 1-2, Figure 6.
 
@@ -49,51 +50,114 @@ def pentagonalize(mesh: Mesh) -> Mesh:
         ``h = (u, w)`` in face ``f`` is ``(t1, t2, w, t1', c_f)``: the
         trisection points of ``h`` near u and near w, w, the point just after w
         on the next half-edge, and the centre.
+
+    Notes
+    -----
+    The output's faces are written column by column into one (2E, 5)
+    array; its twins and vertex rings follow from the input's and are
+    written when first asked for (by the dual, say), never found by sorting.
     """
     check_mesh(mesh, "pentagonalize")
-    n, E = mesh.n_vertices, mesh.n_edges
-    nxt, prv, twin = mesh.next, mesh.prev, mesh.twin
-    t1 = n + halfedge_edge_point(mesh, 2, 0)
-    t2 = n + halfedge_edge_point(mesh, 2, 1)
-    centre = n + 2 * E + mesh.halfedge_face
-    faces = np.stack([t1, t2, mesh.head, t1[nxt], centre], axis=1)
-    vertices = np.concatenate([mesh.vertices, edge_points(mesh, 2), mesh.face_centroids])
-    corners, offsets = fixed_size(faces)
-    # the output's twins and vertex rings follow from the input's; written when
-    # first asked for (by the dual, say), never found by sorting
+    n, E, F, H = mesh.n_vertices, mesh.n_edges, mesh.n_faces, mesh.n_halfedges
+    dt = index_dtype(n + 2 * E + F, 5 * H)
+    forward = mesh._forward
+    # every column is computed contiguously and written once: numpy is slow on
+    # strided views, and slower still on views whose last axis is short
+    faces = np.empty((H, 5), dtype=dt)
+    base = mesh.halfedge_edge.astype(dt)  # V + 2e
+    base *= 2
+    base += n
+    t1 = base + 1  # the trisection point near the tail: V + 2e + (0 forward, 1 backward)
+    t1 -= forward
+    faces[:, 0] = t1
+    base += forward  # the one near the head: V + 2e + (1 forward, 0 backward)
+    faces[:, 1] = base
+    del t1, base
+    faces[:, 2] = mesh.head
+    k = mesh._uniform_size
+    if k:  # every face a k-gon: the next half-edge is the next row of the face
+        block = faces.reshape(F, k, 5)
+        centres = np.arange(n + 2 * E, n + 2 * E + F, dtype=dt)
+        for j in range(k):
+            block[:, j, 3] = block[:, (j + 1) % k, 0]
+            block[:, j, 4] = centres
+    else:
+        faces[:, 3] = faces[:, 0][mesh.next]
+        centre = mesh.halfedge_face.astype(dt)
+        centre += n + 2 * E
+        faces[:, 4] = centre
+    vertices = np.empty((n + 2 * E + F, 3))
+    vertices[:n] = mesh.vertices
+    edge_points(mesh, 2, out=vertices[n : n + 2 * E])
+    vertices[n + 2 * E :] = mesh.face_centroids
+    twin_in, offsets_in, source = mesh.twin, mesh.offsets, mesh._faces_only()
     return output(
         vertices,
-        corners,
-        offsets,
-        twin=lambda: np.stack(
-            [5 * twin, 5 * prv[twin] + 2, 5 * twin[nxt] + 1, 5 * nxt + 4, 5 * prv + 3], axis=1
-        ).reshape(-1),
-        rings=lambda: _pentagonalized_rings(mesh, t1 - n),
+        faces.reshape(-1),
+        np.arange(0, 5 * H + 1, 5, dtype=dt),
+        twin=lambda: _pentagonalized_twin(twin_in, offsets_in, dt),
+        rings=lambda: _pentagonalized_rings(source, dt),
     )
 
 
-def _pentagonalized_rings(mesh: Mesh, t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _pentagonalized_twin(twin: np.ndarray, offsets: np.ndarray, dt: np.dtype) -> np.ndarray:
+    """The twins of ``pentagonalize(mesh)`` from ``mesh``'s twins and offsets.
+
+    Half-edge ``5h + s`` is slot ``s`` of the pentagon of ``h``: its twins
+    are ``5 twin[h]``, ``5 prev[twin[h]] + 2``, ``5 twin[next[h]] + 1``,
+    ``5 next[h] + 4`` and ``5 prev[h] + 3``.
+    """
+    H = twin.size
+    tw = twin.astype(dt, copy=False)
+    nxt, prv = _next_of(offsets, H, dt), _prev_of(offsets, H, dt)
+    out = np.empty((H, 5), dtype=dt)
+    # column by column, each computed contiguously and written once
+    for s, part in enumerate((tw, prv[tw], tw[nxt], nxt, prv)):
+        col = part * 5
+        col += (0, 2, 1, 4, 3)[s]
+        out[:, s] = col
+    return out.reshape(-1)
+
+
+def _pentagonalized_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     """The vertex rings of ``pentagonalize(mesh)``, written from ``mesh``'s.
 
     Half-edge ``5h + s`` is slot ``s`` of the pentagon of ``h``.  Around an
     old vertex v: ``5 prev[h] + 2`` for v's outgoing h, in v's order; around
     the trisection point t1(h): ``5h, 5 prev[h] + 3, 5 twin[h] + 1``; around
-    the centre of f: ``5h + 4`` for f's half-edges in face order.
+    the centre of f: ``5h + 4`` for f's half-edges in face order.  The
+    trisection point ``2e`` is t1 of edge e's forward half-edge, ``2e + 1``
+    of its twin.
     """
-    prv, twin = mesh.prev, mesh.twin
+    prv, twin = mesh.prev.astype(dt, copy=False), mesh.twin.astype(dt, copy=False)
     ring, ring_off = mesh.vertex_ring
     H = mesh.n_halfedges
-    h_of_point = np.empty(H, dtype=np.int64)
-    h_of_point[t1] = np.arange(H, dtype=np.int64)
-    h = h_of_point
-    trisection = np.stack([5 * h, 5 * prv[h] + 3, 5 * twin[h] + 1], axis=1).reshape(-1)
-    rings = np.concatenate([5 * prv[ring] + 2, trisection, 5 * np.arange(H, dtype=np.int64) + 4])
-    offsets = np.concatenate(
-        [ring_off, ring_off[-1] + 3 * np.arange(1, H + 1), ring_off[-1] + 3 * H + mesh.offsets[1:]]
-    )
-    return rings, offsets
+    out = np.empty(5 * H, dtype=dt)
+    old = out[:H]
+    np.take(prv, ring, out=old)
+    old *= 5
+    old += 2
+    h = np.empty(H, dtype=dt)  # the half-edge of every trisection point
+    eh = mesh.edge_halfedge
+    h[0::2] = eh
+    h[1::2] = twin[eh]
+    tri = out[H : 4 * H].reshape(H, 3)
+    for s, part in enumerate((h, prv[h], twin[h])):
+        col = part * 5
+        col += (0, 3, 1)[s]
+        tri[:, s] = col
+    centre = out[4 * H :]
+    centre[:] = np.arange(4, 5 * H, 5, dtype=dt)
+    n = ring_off.size - 1
+    offsets = np.empty(n + H + mesh.n_faces + 1, dtype=dt)
+    offsets[: n + 1] = ring_off
+    offsets[n + 1 : n + H + 1] = np.arange(H + 3, 4 * H + 1, 3, dtype=dt)
+    offsets[n + H + 1 :] = mesh.offsets[1:]
+    offsets[n + H + 1 :] += 4 * H
+    return out, offsets
 
 
+@scale_safe
 def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     """Pentagon preservation, Section 5.2 steps 1-3, Figure 10.
 
@@ -123,16 +187,34 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     """
     check_mesh(mesh, "preserve_pentagons")
     s = check_scale(scale)
-    n, E, H = mesh.n_vertices, mesh.n_edges, mesh.n_halfedges
+    n, E, H, F = mesh.n_vertices, mesh.n_edges, mesh.n_halfedges, mesh.n_faces
+    dt = index_dtype(n + 3 * E, 6 * H)
+    vertices = np.empty((n + 3 * E, 3))
+    vertices[:n] = mesh.vertices
+    edge_points(mesh, 1, out=vertices[n : n + E])
+    mid = mesh.halfedge_edge.astype(dt)
+    mid += n
+    # the copies: every face's edge midpoints scaled about their mean
+    copies, offsets, sizes = vertices[n + E :], mesh.offsets, mesh.face_sizes
+    for a in range(0, F, BLOCK):
+        o = offsets[a : a + BLOCK + 1]
+        lo, hi = int(o[0]), int(o[-1])
+        p = vertices.take(mid[lo:hi], axis=0)
+        centre = np.add.reduceat(p, o[:-1] - lo, axis=0) / sizes[a : a + BLOCK, None]
+        centre = np.repeat(centre, sizes[a : a + BLOCK], axis=0)
+        p -= centre
+        p *= s
+        np.add(centre, p, out=copies[lo:hi])
+    corners = np.empty(6 * H, dtype=dt)
+    corners[:H] = np.arange(n + E, n + E + H, dtype=dt)  # the copies, face by face
+    pentagons = corners[H:].reshape(H, 5)
     nxt = mesh.next
-    mids = edge_points(mesh, 1)
-    mid = n + mesh.halfedge_edge
-    q = n + E + np.arange(H, dtype=np.int64)
-    p = mids[mesh.halfedge_edge]
-    centre = np.add.reduceat(p, mesh.offsets[:-1], axis=0) / mesh.face_sizes[:, None]
-    centre = centre[mesh.halfedge_face]
-    copies = centre + s * (p - centre)
-    pentagons = np.stack([mid, mesh.head, mid[nxt], q[nxt], q], axis=1)
-    corners, offsets = concat_faces((q, mesh.offsets), fixed_size(pentagons))
-    vertices = np.concatenate([mesh.vertices, mids, copies])
-    return output(vertices, corners, offsets)
+    pentagons[:, 0] = mid
+    pentagons[:, 1] = mesh.head
+    pentagons[:, 2] = mid[nxt]
+    np.add(nxt, n + E, out=pentagons[:, 3])
+    pentagons[:, 4] = corners[:H]
+    face_offsets = np.empty(F + H + 1, dtype=dt)
+    face_offsets[: F + 1] = offsets
+    face_offsets[F + 1 :] = np.arange(H + 5, 6 * H + 1, 5, dtype=dt)
+    return output(vertices, corners, face_offsets)
