@@ -210,8 +210,9 @@ class Mesh:
 
     def __init__(self, vertices: ArrayLike, faces: ArrayLike | Sequence[Sequence[int]]):
         v = _as_vertices(vertices)
-        corners, offsets = _as_csr(faces)
-        self._init(v, *_compact(corners, offsets, v.shape[0]))
+        corners, offsets = _compact(*_as_csr(faces), v.shape[0])
+        self._init(v, corners, offsets)
+        del corners, offsets  # (any wider copy made on the way is gone before validating)
         self._validate()
 
     # ------------------------------------------------------------------ sealing
@@ -563,18 +564,15 @@ class Mesh:
     def head(self) -> IntArray:
         """(H,) int: the vertex a half-edge reaches (``corners[next]``)."""
         k = self._uniform_size
-        if k:  # every face a k-gon: the next corner is the next column, cyclically
-            c = self._corners.reshape(-1, k)
-            head = np.empty_like(c)
-            head[:, :-1] = c[:, 1:]
-            head[:, -1] = c[:, 0]
-            return _readonly(head.reshape(-1))
+        if k:
+            return _readonly(_head(self._corners, self._offsets, k))
         return _readonly(self._corners[self.next])
 
     @_connectivity
     def twin(self) -> IntArray:
         """(H,) int: the opposite half-edge (same edge, other face)."""
-        twin = _pair_twins(self._corners, self.head, self.n_vertices)
+        k = self._uniform_size
+        twin = _pair_twins(self._corners, None if k else self.head, self.n_vertices, k)
         if twin is None:
             raise MeshError("the faces do not pair up into a closed, oriented manifold")
         return _readonly(twin)
@@ -615,7 +613,7 @@ class Mesh:
 
         ``rotation[h] = twin[prev[h]]``.
         """
-        return _readonly(self.twin[self.prev])
+        return _readonly(_rotation(self.twin, self._offsets, self._uniform_size, self))
 
     @_connectivity
     def vertex_ring(self) -> Rings:
@@ -815,7 +813,9 @@ class Mesh:
             return False
         if self._repeats_in_a_face(c, n):
             return False
-        twin = _pair_twins(c, self.head, n)
+        # the arrays below are not kept (only the twins and rings are): the
+        # peak stays a few bytes per corner above the faces themselves
+        twin = _pair_twins(c, None if k else self.head, n, k)
         if twin is None:
             return False
         if int(self.valences.min()) < 3:
@@ -823,11 +823,19 @@ class Mesh:
         neighbour = twin // k if k else self.halfedge_face[twin]
         if self._repeats_in_a_face(neighbour, self.n_faces):
             return False
+        del neighbour
         self._shared.values["twin"] = _readonly(twin)
-        ring, _ = self.vertex_ring
+        if k:  # rotation[h] = twin[prev[h]], prev computed as needed (no array kept)
+            ring, ring_off = _vertex_rings(_RotateUniform(twin, k), c, self.valences)
+        else:
+            ring, ring_off = _vertex_rings(_rotation(twin, o, k, self), c, self.valences)
         seen = np.zeros(c.size, dtype=bool)
-        seen[ring] = True
-        return bool(seen.all())
+        for a in range(0, ring.size, _BLOCK):
+            seen[ring[a : a + _BLOCK]] = True
+        if not seen.all():
+            return False
+        self._shared.values["vertex_ring"] = (_readonly(ring), _readonly(ring_off))
+        return True
 
     def _repeats_in_a_face(self, values: np.ndarray, bound: int) -> bool:
         """Whether some face holds a value twice (``values``: one per corner, in ``[0, bound)``).
@@ -1113,6 +1121,52 @@ def _halfedge_face(offsets: np.ndarray, n_corners: int, k: int) -> IntArray:
     return np.repeat(faces, k if k else np.diff(offsets))
 
 
+def _shifted(a: np.ndarray, k: int, step: int) -> np.ndarray:
+    """``a`` (one value per corner of k-gons) moved ``step`` places round every face.
+
+    ``out[h] = a[next[h]]`` for ``step = 1``, ``a[prev[h]]`` for ``step = -1``:
+    a copy column by column, without gathering.
+    """
+    rows = a.reshape(-1, k)
+    out = np.empty_like(rows)
+    if step == 1:
+        out[:, :-1] = rows[:, 1:]
+        out[:, -1] = rows[:, 0]
+    else:
+        out[:, 1:] = rows[:, :-1]
+        out[:, 0] = rows[:, -1]
+    return out.reshape(-1)
+
+
+def _head(corners: np.ndarray, offsets: np.ndarray, k: int) -> IntArray:
+    """(H,) the vertex every half-edge reaches, for faces that are all k-gons."""
+    return _shifted(corners, k, 1)
+
+
+def _rotation(twin: np.ndarray, offsets: np.ndarray, k: int, mesh: Any = None) -> IntArray:
+    """(H,) ``twin[prev]``: the next outgoing half-edge counter-clockwise round its tail."""
+    if k:
+        return _shifted(twin, k, -1)
+    prv = mesh.prev if mesh is not None else _prev_of(offsets, twin.size, twin.dtype)
+    return twin[prv]
+
+
+class _RotateUniform:
+    """``rotation[h]`` of a mesh of k-gons from its twins, without a rotation array.
+
+    ``rotate[cur]`` is ``twin[prev[cur]]``, ``prev[h]`` being ``h - 1``, or
+    ``h + k - 1`` at the first corner of a face.
+    """
+
+    def __init__(self, twin: np.ndarray, k: int) -> None:
+        self.twin, self.k = twin, k
+
+    def __getitem__(self, cur: np.ndarray) -> np.ndarray:
+        prv = cur - 1
+        prv[cur % self.k == 0] += self.k
+        return self.twin[prv]
+
+
 def _next_of(offsets: np.ndarray, n_corners: int, dtype: Any) -> IntArray:
     """(H,) the next half-edge round each face, from the offsets alone."""
     nxt = np.arange(1, n_corners + 1, dtype=dtype)
@@ -1127,7 +1181,9 @@ def _prev_of(offsets: np.ndarray, n_corners: int, dtype: Any) -> IntArray:
     return prv
 
 
-def _pair_twins(tail: np.ndarray, head: np.ndarray, n: int) -> IntArray | None:
+def _pair_twins(
+    tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0
+) -> IntArray | None:
     """The twin of every half-edge of a closed oriented manifold, or None.
 
     Every half-edge ``h = (u, w)`` gets the key ``(min, max, u > w)`` of its
@@ -1136,7 +1192,10 @@ def _pair_twins(tail: np.ndarray, head: np.ndarray, n: int) -> IntArray | None:
     times faster than an argsort) then puts the two halves of every edge
     side by side, the forward one first.  None when that pattern breaks (a
     directed edge used twice, a boundary edge): the caller then looks for
-    the culprit (:func:`_match_twins`).
+    the culprit (:func:`_match_twins`).  Beyond the twins, only the packed
+    keys (8 bytes a half-edge) are allocated: keys are built, checked and
+    unpacked in blocks.  ``head`` may be None when every face is a k-gon:
+    it is then read block by block from ``tail``.
 
     When key and index need more than 63 bits (meshes of millions of
     vertices), the half-edges are first split by the high bits of their
@@ -1146,20 +1205,19 @@ def _pair_twins(tail: np.ndarray, head: np.ndarray, n: int) -> IntArray | None:
     H = tail.size
     if H % 2:
         return None
-    lo = np.minimum(tail, head)
-    hi = np.maximum(tail, head)
-    flip = tail > head
     twin = np.empty(H, dtype=tail.dtype)
     index_bits = max(int(H - 1).bit_length(), 1)
     vertex_bits = max(int(n - 1).bit_length(), 1)
     # a key (lo * n + hi) * 2 + flip with lo < 2**low_bits is below 2**(63 - index_bits)
     low_bits = 62 - index_bits - int(n).bit_length()
     if low_bits >= vertex_bits:
-        return twin if _pair_part(lo, hi, flip, n, index_bits, None, twin) else None
+        return twin if _pair_part(tail, head, n, index_bits, None, None, twin, k) else None
+    if head is None:
+        head = _head(tail, np.empty(0), k)
     parts = vertex_bits - max(low_bits, 0)
     if low_bits < 1 or parts > 16:  # pragma: no cover - beyond 2**40 half-edges
-        return _match_twins_argsort(lo, hi, flip, n, twin)
-    part = (lo >> low_bits).astype(np.uint16)
+        return _match_twins_argsort(tail, head, n, twin)
+    part = (np.minimum(tail, head) >> low_bits).astype(np.uint16)
     order = np.argsort(part, kind="stable").astype(tail.dtype)  # radix sort: O(H)
     bounds = np.concatenate([[0], np.cumsum(np.bincount(part, minlength=1 << parts))])
     del part
@@ -1168,45 +1226,60 @@ def _pair_twins(tail: np.ndarray, head: np.ndarray, n: int) -> IntArray | None:
         if a == b:
             continue
         ids = order[a:b]
-        ok = _pair_part(lo[ids] & mask, hi[ids], flip[ids], n, index_bits, ids, twin)
-        if not ok:
+        if not _pair_part(tail[ids], head[ids], n, index_bits, ids, mask, twin):
             return None
     return twin
 
 
-def _pair_part(lo, hi, flip, n, index_bits, ids, twin) -> bool:
-    """Pair the half-edges of one part (see :func:`_pair_twins`); False if they do not pair."""
-    size = lo.size
+_BLOCK = 1 << 16
+
+
+def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0) -> bool:
+    """Pair the half-edges of one part (see :func:`_pair_twins`); False if they do not pair.
+
+    ``ids`` maps the part's half-edges to the mesh's (None: the whole mesh);
+    ``mask`` keeps the low bits of the smaller vertex (None: all of it);
+    ``head`` None: faces of ``k`` corners, heads read from ``tail``.
+    """
+    size = tail.size
     if size % 2:
         return False
-    key = lo.astype(np.int64)
-    key *= np.int64(n)
-    key += hi
-    key <<= 1
-    key |= flip
-    key <<= index_bits
-    key |= np.arange(size, dtype=np.int64)
+    key = np.empty(size, dtype=np.int64)
+    step = _BLOCK - _BLOCK % k if head is None else _BLOCK
+    for a in range(0, size, step):
+        t = tail[a : a + step]
+        h = _head(t, np.empty(0), k) if head is None else head[a : a + step]
+        lo = np.minimum(t, h)
+        part = key[a : a + step]
+        np.multiply(lo & mask if mask is not None else lo, np.int64(n), out=part)
+        part += np.maximum(t, h)
+        part <<= 1
+        part |= t > h
+        part <<= index_bits
+        part |= np.arange(a, a + part.size, dtype=np.int64)
     key.sort()
     # the two halves of every edge must sit side by side: keys 2K and 2K + 1,
-    # which differ in their lowest bit only
-    pair = key[0::2] ^ key[1::2]
-    pair >>= index_bits
-    if not (pair == 1).all():
-        return False
-    del pair
-    which = np.empty(size, dtype=twin.dtype)
-    np.bitwise_and(key, (1 << index_bits) - 1, out=which, casting="unsafe")
-    del key
-    a, b = which[0::2], which[1::2]
-    if ids is not None:
-        a, b = ids[a], ids[b]
-    twin[a] = b
-    twin[b] = a
+    # which differ in their lowest bit only; then the low bits say which
+    # half-edges they are
+    low = np.int64((1 << index_bits) - 1)
+    for a in range(0, size, _BLOCK):
+        part = key[a : a + _BLOCK]
+        pair = part[0::2] ^ part[1::2]
+        pair >>= index_bits
+        if not (pair == 1).all():
+            return False
+        part &= low
+        first, second = part[0::2], part[1::2]
+        if ids is not None:
+            first, second = ids[first], ids[second]
+        twin[first] = second
+        twin[second] = first
     return True
 
 
-def _match_twins_argsort(lo, hi, flip, n, twin):  # pragma: no cover - huge meshes only
-    key = (lo.astype(np.int64) * np.int64(n) + hi) * 2 + flip
+def _match_twins_argsort(tail, head, n, twin):  # pragma: no cover - huge meshes only
+    lo = np.minimum(tail, head)
+    key = (lo.astype(np.int64) * np.int64(n) + np.maximum(tail, head)) * 2 + (tail > head)
     order = np.argsort(key)
     skey = key[order]
     a, b = skey[0::2], skey[1::2]
@@ -1370,8 +1443,10 @@ def _vertex_rings(rotation, tail, valences):
     ring_off = np.zeros(n + 1, dtype=dtype)
     np.cumsum(valences, out=ring_off[1:])
     start = np.empty(n, dtype=dtype)
-    # any outgoing half-edge per vertex: the last one written wins
-    start[tail] = np.arange(tail.size, dtype=dtype)
+    # any outgoing half-edge per vertex: the last one written wins (in blocks:
+    # numpy widens a scatter's index array, the whole of it at once otherwise)
+    for a in range(0, tail.size, _BLOCK):
+        start[tail[a : a + _BLOCK]] = np.arange(a, min(a + _BLOCK, tail.size), dtype=dtype)
     ring = np.empty(tail.size, dtype=dtype)
     if n == 0:
         return ring, ring_off
@@ -1388,9 +1463,9 @@ def _vertex_rings(rotation, tail, valences):
         return ring, ring_off
     # the rest, for the vertices of more edges, by valence (a radix sort on
     # small ints): at step k the vertices still walking are a suffix
-    more = np.flatnonzero(valences > low)
+    more = np.flatnonzero(valences > low).astype(dtype)
     small = valences[more].astype(np.uint16 if top < 65536 else np.int64)
-    order = np.argsort(small, kind="stable")
+    order = np.argsort(small, kind="stable").astype(dtype)
     more = more[order]
     first = np.searchsorted(small[order], np.arange(top), side="right")
     cur = cur[more]
