@@ -94,6 +94,75 @@ def concat_faces(*parts: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.
     return corners, np.concatenate(offs)
 
 
+def affine(part: np.ndarray, scale: int, add: int, dt: np.dtype) -> np.ndarray:
+    """``scale * part + add`` as a new contiguous array of dtype ``dt``."""
+    col = part.astype(dt, copy=True)
+    if scale != 1:
+        col *= scale
+    if add:
+        col += add
+    return col
+
+
+def columns(dt: np.dtype, rows: int, *cols: np.ndarray | int) -> np.ndarray:
+    """A (rows, len(cols)) array whose column s is ``cols[s]`` (an array or an int).
+
+    Written one column at a time: numpy is slow on arrays whose last axis
+    is short (``np.stack(..., axis=1)`` of a few long columns).
+    """
+    out = np.empty((rows, len(cols)), dtype=dt)
+    for s, col in enumerate(cols):
+        out[:, s] = col
+    return out
+
+
+def inverse(ring: np.ndarray) -> np.ndarray:
+    """``pos`` with ``pos[ring[i]] = i``: where every half-edge sits in the vertex rings."""
+    pos = np.empty_like(ring)
+    pos[ring] = np.arange(ring.size, dtype=ring.dtype)
+    return pos
+
+
+def start_at_max(ring: np.ndarray, offsets: np.ndarray, k: int = 0) -> np.ndarray:
+    """Every vertex's ring turned to start at its largest half-edge, order kept.
+
+    The rings :attr:`pentanb.Mesh.vertex_ring` derives for a mesh start
+    there; operators that write their output's rings directly turn them
+    the same way, so that the output is the same mesh, bit for bit, as one
+    whose rings were derived (the dual's faces start where its rings do).
+
+    Parameters
+    ----------
+    ring : (H,) int
+        Half-edges, vertex after vertex, each vertex's in rotation order
+        (any start).
+    offsets : (n + 1,) int
+    k : int
+        Every vertex has k half-edges (0: read the sizes from ``offsets``).
+
+    Returns
+    -------
+    (H,) int
+        A new array.
+    """
+    if k:
+        rows = ring.reshape(-1, k)
+        first = rows.argmax(axis=1)
+        cols = (first[:, None] + np.arange(k)) % k
+        return np.take_along_axis(rows, cols, axis=1).reshape(-1)
+    sizes = np.diff(offsets)
+    start = offsets[:-1].astype(np.int64)
+    top = np.maximum.reduceat(ring, start) if ring.size else ring[:0]
+    h = np.arange(ring.size, dtype=np.int64)
+    owner_start = np.repeat(start, sizes)
+    owner_size = np.repeat(sizes, sizes)
+    at = np.flatnonzero(ring == np.repeat(top, sizes))  # one per vertex: ids are distinct
+    shift = np.repeat(at - start, sizes)
+    out = np.empty_like(ring)
+    out[owner_start + (h - owner_start - shift) % owner_size] = ring
+    return out
+
+
 def output(
     vertices: np.ndarray,
     corners: np.ndarray,

@@ -18,6 +18,7 @@ from ._build import (
     index_dtype,
     output,
     scale_safe,
+    start_at_max,
 )
 
 __all__ = ["pentagonalize", "preserve_pentagons"]
@@ -217,4 +218,82 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     face_offsets = np.empty(F + H + 1, dtype=dt)
     face_offsets[: F + 1] = offsets
     face_offsets[F + 1 :] = np.arange(H + 5, 6 * H + 1, 5, dtype=dt)
-    return output(vertices, corners, face_offsets)
+    source = mesh._faces_only()
+    return output(
+        vertices,
+        corners,
+        face_offsets,
+        twin=lambda: _preserved_twin(source, dt),
+        rings=lambda: _preserved_rings(source, dt),
+    )
+
+
+def _preserved_twin(mesh, dt: np.dtype) -> np.ndarray:
+    """The twins of ``preserve_pentagons(mesh)``, from ``mesh``'s faces.
+
+    Half-edge h (< H) is the copy's edge ``q_h -> q_next``; ``H + 5h + s``
+    is slot s of the pentagon of h, ``(m_h, w, m_next, q_next, q_h)``.  Twins:
+    ``h`` and ``H + 5h + 3``; ``H + 5h`` and ``H + 5 prev[twin[h]] + 1``;
+    ``H + 5h + 2`` and ``H + 5 next[h] + 4``.
+    """
+    H = mesh.n_halfedges
+    nxt, prv = mesh.next.astype(dt, copy=False), mesh.prev.astype(dt, copy=False)
+    twin = mesh.twin.astype(dt, copy=False)
+    out = np.empty(6 * H, dtype=dt)
+    out[:H] = np.arange(H + 3, 6 * H, 5, dtype=dt)
+    pent = out[H:].reshape(H, 5)
+    for s, (part, add) in enumerate(
+        ((prv[twin], 1), (twin[nxt], 0), (nxt, 4), (None, 0), (prv, 2))
+    ):
+        if part is None:
+            pent[:, s] = np.arange(H, dtype=dt)
+            continue
+        col = part * 5
+        col += H + add
+        pent[:, s] = col
+    return out
+
+
+def _preserved_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
+    """The vertex rings of ``preserve_pentagons(mesh)``, from ``mesh``'s.
+
+    Around an old vertex: ``H + 5 prev[h] + 1`` for its outgoing h, in its
+    order; around the midpoint of edge e (forward half-edge h):
+    ``H + 5h, H + 5 prev[h] + 2, H + 5 twin[h], H + 5 prev[twin[h]] + 2``;
+    around the copy vertex of h: ``h, H + 5 prev[h] + 3, H + 5h + 4``.  Each
+    ring then starts at its largest half-edge, as derived rings do.
+    """
+    H, E = mesh.n_halfedges, mesh.n_edges
+    prv, twin = mesh.prev.astype(dt, copy=False), mesh.twin.astype(dt, copy=False)
+    ring, ring_off = mesh.vertex_ring
+    old = prv[ring] * 5
+    old += H + 1
+    eh = mesh.edge_halfedge.astype(dt, copy=False)
+    back = twin[eh]
+    mids = np.empty((E, 4), dtype=dt)
+    for s, (part, add) in enumerate(((eh, 0), (prv[eh], 2), (back, 0), (prv[back], 2))):
+        col = part * 5
+        col += H + add
+        mids[:, s] = col
+    copies = np.empty((H, 3), dtype=dt)
+    h = np.arange(H, dtype=dt)
+    copies[:, 0] = h
+    col = prv * 5
+    col += H + 3
+    copies[:, 1] = col
+    col = h * 5
+    col += H + 4
+    copies[:, 2] = col
+    rings = np.concatenate(
+        [
+            start_at_max(old, ring_off),
+            start_at_max(mids.reshape(-1), None, 4),
+            start_at_max(copies.reshape(-1), None, 3),
+        ]
+    )
+    n = ring_off.size - 1
+    offsets = np.empty(n + E + H + 1, dtype=dt)
+    offsets[: n + 1] = ring_off
+    offsets[n + 1 : n + E + 1] = np.arange(H + 4, H + 4 * E + 1, 4, dtype=dt)
+    offsets[n + E + 1 :] = np.arange(H + 4 * E + 3, H + 4 * E + 3 * H + 1, 3, dtype=dt)
+    return rings, offsets

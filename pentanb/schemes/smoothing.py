@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..mesh import Mesh
-from ._build import check_count, check_mesh, check_vertex_faces, output
+from ._build import check_count, check_mesh, check_vertex_faces, inverse, output
 
 __all__ = ["dual", "smooth"]
 
@@ -71,18 +71,11 @@ def dual(mesh: Mesh) -> Mesh:
         corners,
         ring_off,
         twin=lambda: _dual_twin(faces),
-        rings=lambda: (_inverse(faces.vertex_ring[0]), faces.offsets),
+        rings=lambda: (inverse(faces.vertex_ring[0]), faces.offsets),
         dual_of=mesh,
     )
     out._note_extent(mesh._extent)
     return out
-
-
-def _inverse(ring: np.ndarray) -> np.ndarray:
-    """``pos`` with ``pos[ring[i]] = i``: where every half-edge sits in the rings."""
-    pos = np.empty_like(ring)
-    pos[ring] = np.arange(ring.size, dtype=ring.dtype)
-    return pos
 
 
 def _dual_twin(mesh) -> np.ndarray:
@@ -93,7 +86,7 @@ def _dual_twin(mesh) -> np.ndarray:
     the dual half-edge at ``next[rotation[h]]``.
     """
     ring, _ = mesh.vertex_ring
-    pos = _inverse(ring)
+    pos = inverse(ring)
     return pos[mesh.next[mesh.rotation[ring]]]
 
 
