@@ -98,8 +98,10 @@ class Table:
                 lines.append(f"| **{section}** | | | |")
             unit = r["unit"]
             value = f"{r['value']:.2f}x" if unit == "x" else f"{r['value']:,.1f} {unit}"
-            target = "" if r["target"] is None else f"<= {r['target']:g}" + (
-                "x" if unit == "x" else f" {unit}"
+            target = (
+                ""
+                if r["target"] is None
+                else f"<= {r['target']:g}" + ("x" if unit == "x" else f" {unit}")
             )
             verdict = {None: "", True: "pass", False: "**missed**"}[r["ok"]]
             note = f" ({r['note']})" if r["note"] else ""
@@ -263,7 +265,9 @@ def linear(table: Table, runs: int, clock, small_runs: dict) -> dict:
     v2, f2 = icosphere(9)
     assert len(f2) == 5_242_880
     # alternate small and large, so that both see the same machine
-    t = alternate({"small": lambda: pipeline(v1, f1), "large": lambda: pipeline(v2, f2)}, runs, clock)
+    t = alternate(
+        {"small": lambda: pipeline(v1, f1), "large": lambda: pipeline(v2, f2)}, runs, clock
+    )
     small = median(t["small"]) / len(f1)
     large = median(t["large"]) / len(f2)
     sec = "linear and memory"
@@ -353,14 +357,32 @@ def io_rows(table: Table, runs: int, clock) -> dict:
             )
             w = median(t["write"]) / median(t["trimesh export"])
             r = median(t["read"]) / median(t["trimesh load"])
-            table.add(sec, f"5. write {fmt.upper()} / trimesh export", w, "x", 1.0,
-                      note=f"{1000 * median(t['write']):,.0f} ms")
-            table.add(sec, f"5. read {fmt.upper()} / trimesh load", r, "x", 1.0,
-                      note=f"{1000 * median(t['read']):,.0f} ms")
+            table.add(
+                sec,
+                f"5. write {fmt.upper()} / trimesh export",
+                w,
+                "x",
+                1.0,
+                note=f"{1000 * median(t['write']):,.0f} ms",
+            )
+            table.add(
+                sec,
+                f"5. read {fmt.upper()} / trimesh load",
+                r,
+                "x",
+                1.0,
+                note=f"{1000 * median(t['read']):,.0f} ms",
+            )
             peak, back = peak_bytes(lambda ours=ours: pb.read(ours))
             arrays = back.vertices.nbytes + back.corners.nbytes + back.offsets.nbytes
-            table.add(sec, f"5. peak memory reading {fmt.upper()} / arrays read", peak / arrays,
-                      "x", 3.0, note=f"{peak / 2**20:,.0f} MiB")
+            table.add(
+                sec,
+                f"5. peak memory reading {fmt.upper()} / arrays read",
+                peak / arrays,
+                "x",
+                3.0,
+                note=f"{peak / 2**20:,.0f} MiB",
+            )
             out[fmt] = {k: [float(x) for x in xs] for k, xs in t.items()}
     return out
 
@@ -368,12 +390,23 @@ def io_rows(table: Table, runs: int, clock) -> dict:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--runs", type=int, default=7, help="timed runs per case (median)")
-    ap.add_argument("--clock", choices=sorted(CLOCKS), default="wall",
-                    help="wall time (default) or this process's CPU time")
-    ap.add_argument("--quick", action="store_true",
-                    help="skip the 5-million-face rows (linearity, memory at that size)")
-    ap.add_argument("--only", nargs="*", choices=["speed", "slider", "linear", "guard", "io"],
-                    help="run only these sections")
+    ap.add_argument(
+        "--clock",
+        choices=sorted(CLOCKS),
+        default="wall",
+        help="wall time (default) or this process's CPU time",
+    )
+    ap.add_argument(
+        "--quick",
+        action="store_true",
+        help="skip the 5-million-face rows (linearity, memory at that size)",
+    )
+    ap.add_argument(
+        "--only",
+        nargs="*",
+        choices=["speed", "slider", "linear", "guard", "io"],
+        help="run only these sections",
+    )
     ap.add_argument("--json", help="also write the measurements to this JSON file")
     ap.add_argument("--markdown", help="also write the table as markdown to this file")
     ap.add_argument("--check", action="store_true", help="exit 1 when a target is missed")

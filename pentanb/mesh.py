@@ -703,9 +703,10 @@ class Mesh:
         """
         p = self._vertices[self._corners]
         q = self._vertices[self.head]
-        cross = np.cross(p, q)
-        n = np.add.reduceat(cross, self._offsets[:-1], axis=0)
-        length = np.linalg.norm(n, axis=1, keepdims=True)
+        with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+            cross = np.cross(p, q)
+            n = np.add.reduceat(cross, self._offsets[:-1], axis=0)
+            length = np.linalg.norm(n, axis=1, keepdims=True)
         # lengths outside [2**-800, 2**800] may have lost everything to
         # underflow or overflow: those faces again, rescaled
         redo = np.flatnonzero(~((length[:, 0] >= 2.0**-800) & (length[:, 0] <= 2.0**800)))
@@ -719,12 +720,20 @@ class Mesh:
         """Signed enclosed volume (positive for outward-oriented faces).
 
         Each face is fanned from its centroid; the tetrahedra to the origin
-        are summed.
+        are summed.  Coordinates beyond 2**300 (or below 2**-300) are
+        scaled by a power of two first, so the result is ``inf`` (or 0)
+        only when the volume itself is beyond float64's range.
         """
-        c = self.face_centroids[self.halfedge_face]
-        p = self._vertices[self._corners]
-        q = self._vertices[self.head]
-        return float(np.einsum("ij,ij->", c, np.cross(p, q)) / 6.0)
+        extent = self._extent
+        if extent == 0 or 2.0**-300 < extent < 2.0**300:
+            c = self.face_centroids[self.halfedge_face]
+            p = self._vertices[self._corners]
+            q = self._vertices[self.head]
+            return float(np.einsum("ij,ij->", c, np.cross(p, q)) / 6.0)
+        shift = int(np.frexp(extent)[1])
+        small = self._rescaled(-shift)
+        with np.errstate(over="ignore", under="ignore"):
+            return float(np.ldexp(small.volume, 3 * shift))
 
     @property
     def bounds(self) -> FloatArray:
@@ -1091,12 +1100,17 @@ def _compact(corners: np.ndarray, offsets: np.ndarray, n: int) -> tuple[IntArray
     """``corners`` and ``offsets`` as int32 when they fit (see :func:`_index_dtype`).
 
     Values out of int32's range stay int64, so that validation still sees
-    (and names) them instead of a wrapped-around index.
+    (and names) them instead of a wrapped-around index.  Always plain numpy
+    arrays (a subclass such as trimesh's ``TrackedArray`` is not kept: its
+    Python-level operators would slow every pass down).
     """
+    corners, offsets = np.asarray(corners), np.asarray(offsets)
     dtype = _index_dtype(n, corners.size)
     if dtype == corners.dtype:
         return corners, offsets
-    if corners.size and not (-_INT32_MAX <= int(corners.min()) and int(corners.max()) <= _INT32_MAX):
+    if corners.size and not (
+        -_INT32_MAX <= int(corners.min()) and int(corners.max()) <= _INT32_MAX
+    ):
         return corners, offsets
     if offsets.size and not (
         -_INT32_MAX <= int(offsets.min()) and int(offsets.max()) <= _INT32_MAX
@@ -1181,9 +1195,7 @@ def _prev_of(offsets: np.ndarray, n_corners: int, dtype: Any) -> IntArray:
     return prv
 
 
-def _pair_twins(
-    tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0
-) -> IntArray | None:
+def _pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) -> IntArray | None:
     """The twin of every half-edge of a closed oriented manifold, or None.
 
     Every half-edge ``h = (u, w)`` gets the key ``(min, max, u > w)`` of its
@@ -1231,7 +1243,9 @@ def _pair_twins(
     return twin
 
 
-_BLOCK = 1 << 16
+#: Elements per block of the block-wise passes: the temporaries of a pass
+#: stay a few hundred kilobytes (in cache, and out of the peak memory).
+_BLOCK = 1 << 13
 
 
 def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0) -> bool:
@@ -1264,7 +1278,7 @@ def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0) -> bool:
     low = np.int64((1 << index_bits) - 1)
     for a in range(0, size, _BLOCK):
         part = key[a : a + _BLOCK]
-        pair = part[0::2] ^ part[1::2]
+        pair = np.bitwise_xor(part[0::2], part[1::2])
         pair >>= index_bits
         if not (pair == 1).all():
             return False
@@ -1321,7 +1335,7 @@ def _face_means(
     if not values.flags.c_contiguous:
         values = np.ascontiguousarray(values)
     if k and k < 8:
-        block = 1 << 15
+        block = _BLOCK
         corner_rows = corners.reshape(m, k)
         for a in range(0, m, block):
             rows = corner_rows[a : a + block]
@@ -1332,7 +1346,7 @@ def _face_means(
         out /= k
         return out
     if k:  # k >= 8: numpy's pairwise sums, one coordinate at a time
-        block = max(1, (1 << 17) // k)
+        block = max(1, (_BLOCK * 4) // k)
         for i in range(d):
             col = np.ascontiguousarray(values[:, i])
             for a in range(0, m, block):
@@ -1344,10 +1358,13 @@ def _face_means(
     # the sum in brackets from left to right while it has fewer than 8 terms
     # (pairwise beyond); the same order here, slot by slot over blocks of faces
     sizes = np.diff(offsets)
-    block = 1 << 15
-    for a in range(0, m, block):
-        b = min(a + block, m)
+    a = 0
+    while a < m:
+        # blocks of at most _BLOCK faces and about 4 * _BLOCK corners
+        b = int(np.searchsorted(offsets, offsets[a] + 4 * _BLOCK, side="right")) - 1
+        b = min(max(b, a + 1), a + _BLOCK, m)
         size, start, acc = sizes[a:b], offsets[a:b], out[a:b]
+        a = b
         np.take(values, corners[start + 1], axis=0, out=acc)
         top = int(size.max())
         for j in range(2, min(top, 8)):

@@ -19,7 +19,7 @@ _Op = TypeVar("_Op", bound=Callable[..., Mesh])
 
 #: Edges (or faces) per block when positions are computed block by block:
 #: small enough that the temporaries stay in cache and out of the peak.
-BLOCK = 1 << 15
+BLOCK = 1 << 13
 
 
 def index_dtype(n_vertices: int, n_corners: int) -> np.dtype:
@@ -123,7 +123,7 @@ def inverse(ring: np.ndarray) -> np.ndarray:
     return pos
 
 
-def start_at_max(ring: np.ndarray, offsets: np.ndarray, k: int = 0) -> np.ndarray:
+def start_at_max(ring: np.ndarray, offsets: np.ndarray | None, k: int = 0) -> np.ndarray:
     """Every vertex's ring turned to start at its largest half-edge, order kept.
 
     The rings :attr:`pentanb.Mesh.vertex_ring` derives for a mesh start
@@ -136,7 +136,7 @@ def start_at_max(ring: np.ndarray, offsets: np.ndarray, k: int = 0) -> np.ndarra
     ring : (H,) int
         Half-edges, vertex after vertex, each vertex's in rotation order
         (any start).
-    offsets : (n + 1,) int
+    offsets : (n + 1,) int, or None with ``k``
     k : int
         Every vertex has k half-edges (0: read the sizes from ``offsets``).
 
@@ -150,6 +150,7 @@ def start_at_max(ring: np.ndarray, offsets: np.ndarray, k: int = 0) -> np.ndarra
         first = rows.argmax(axis=1)
         cols = (first[:, None] + np.arange(k)) % k
         return np.take_along_axis(rows, cols, axis=1).reshape(-1)
+    assert offsets is not None
     sizes = np.diff(offsets)
     start = offsets[:-1].astype(np.int64)
     top = np.maximum.reduceat(ring, start) if ring.size else ring[:0]

@@ -132,7 +132,8 @@ def _loop_twin(m, dt: np.dtype) -> np.ndarray:
 
 def _loop_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     """Rings of ``loop_remesh``: old vertex ``H + 3 prev[h] + 1`` for its h; midpoint
-    of edge e (forward h, twin t): ``H + 3h, h, H + 3 prev[h] + 2, H + 3t, t, H + 3 prev[t] + 2``."""
+    of edge e (forward h, twin t):
+    ``H + 3h, h, H + 3 prev[h] + 2, H + 3t, t, H + 3 prev[t] + 2``."""
     H, E = m.n_halfedges, m.n_edges
     prv, twin = m.prev, m.twin
     ring, ring_off = m.vertex_ring
@@ -273,7 +274,11 @@ def _insertion_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     h = m.edge_halfedge
     t = twin[h]
     mids = columns(
-        dt, E, affine(h, 4, 0, dt), affine(prv[h], 4, 2, dt), affine(t, 4, 0, dt),
+        dt,
+        E,
+        affine(h, 4, 0, dt),
+        affine(prv[h], 4, 2, dt),
+        affine(t, 4, 0, dt),
         affine(prv[t], 4, 2, dt),
     )
     rings = np.concatenate(
