@@ -132,7 +132,7 @@ def fit_hold(B: np.ndarray, z: np.ndarray) -> np.ndarray:
         return np.zeros(B.shape[1])
     w = 1.0 / np.maximum(np.abs(z), 1.0)
     coef, *_ = np.linalg.lstsq(B * w[:, None], z * w, rcond=None)
-    short = (z - B @ coef) / np.maximum(B[:, 1], 1)
+    short = (z + 0.01 * np.abs(z) - B @ coef) / np.maximum(B[:, 1], 1)
     coef[1] += max(0.0, float(short.max()))
     return coef
 

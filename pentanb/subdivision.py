@@ -364,10 +364,9 @@ def _iteration_bytes(
     V, E, F = counts
     step, hold = MEMORY_MODEL[_model_name(s, counts)][min(duals, 2)]
     x = regressors(counts, s, kind)
-    need = sum(a * b for a, b in zip(step, x))
+    need = _FIXED + _MARGIN * sum(a * b for a, b in zip(step, x))
     if later:
         need += sum(a * b for a, b in zip(hold, x))
-    need = _FIXED + _MARGIN * max(need, 0.0)
     V2, E2, _ = s.counts(V, E, F)
     if _itemsize(max(V2, V), 2 * E2) == 8:
         need *= 2  # int64 indices: about twice the memory (an upper bound)

@@ -130,20 +130,39 @@ def _pentagonalized_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     trisection point ``2e`` is t1 of edge e's forward half-edge, ``2e + 1``
     of its twin.
     """
-    prv, twin = mesh.prev.astype(dt, copy=False), mesh.twin.astype(dt, copy=False)
+    twin = mesh.twin.astype(dt, copy=False)
     ring, ring_off = mesh.vertex_ring
     H = mesh.n_halfedges
+    k = mesh._uniform_size
+    if k:  # prev[h] is h - 1, or h + k - 1 at a face's first corner: no gathering
+        prv = None
+    else:
+        prv = mesh.prev.astype(dt, copy=False)
+
+    def before(h: np.ndarray) -> np.ndarray:
+        if prv is not None:
+            return prv[h]
+        p = h.astype(dt)
+        p -= 1
+        p[h % k == 0] += k
+        return p
+
     out = np.empty(5 * H, dtype=dt)
     old = out[:H]
-    np.take(prv, ring, out=old)
+    old[:] = before(ring)
     old *= 5
     old += 2
+    eh = mesh.edge_halfedge.astype(dt, copy=False)
+    back = twin[eh]
     h = np.empty(H, dtype=dt)  # the half-edge of every trisection point
-    eh = mesh.edge_halfedge
     h[0::2] = eh
-    h[1::2] = twin[eh]
+    h[1::2] = back
+    across = np.empty(H, dtype=dt)  # twin[h]: back for eh, eh for back
+    across[0::2] = back
+    across[1::2] = eh
+    del back
     tri = out[H : 4 * H].reshape(H, 3)
-    for s, part in enumerate((h, prv[h], twin[h])):
+    for s, part in enumerate((h, before(h), across)):
         col = part * 5
         col += (0, 3, 1)[s]
         tri[:, s] = col
