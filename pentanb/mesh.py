@@ -1271,6 +1271,7 @@ def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0) -> bool:
         part |= t > h
         part <<= index_bits
         part |= np.arange(a, a + part.size, dtype=np.int64)
+        del t, h, lo, part
     key.sort()
     # the two halves of every edge must sit side by side: keys 2K and 2K + 1,
     # which differ in their lowest bit only; then the low bits say which
@@ -1352,6 +1353,8 @@ def _face_means(
             for a in range(0, m, block):
                 g = col.take(corners[a * k : (a + block) * k])
                 out[a : a + block, i] = g.reshape(-1, k).sum(axis=1)
+                del g
+            del col
         out /= k
         return out
     # mixed sizes: np.add.reduceat adds a face's corners as a0 + (a1 + a2 + ...),
@@ -1381,6 +1384,7 @@ def _face_means(
             h += np.arange(h.size, dtype=h.dtype)
             g = values.take(corners[h], axis=0)
             acc[long] = np.add.reduceat(g, np.cumsum(np.r_[0, size[long][:-1]]), axis=0)
+            del g, h, o
     out /= sizes[:, None]
     return out
 

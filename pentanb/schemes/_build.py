@@ -56,6 +56,7 @@ def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray
             r = rows[a : a + BLOCK, j]
             np.multiply(pa, 1.0 - t[j], out=r)
             r += pb * t[j]
+        del pa, pb  # (a block's temporaries: gone before the next allocations)
     return res
 
 

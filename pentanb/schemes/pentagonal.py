@@ -225,6 +225,7 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
         p -= centre
         p *= s
         np.add(centre, p, out=copies[lo:hi])
+        del p, centre  # (a block's temporaries: gone before the next allocations)
     corners = np.empty(6 * H, dtype=dt)
     corners[:H] = np.arange(n + E, n + E + H, dtype=dt)  # the copies, face by face
     pentagons = corners[H:].reshape(H, 5)
