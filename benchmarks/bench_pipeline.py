@@ -56,7 +56,7 @@ from pathlib import Path
 import numpy as np
 
 import pentanb as pb
-from pentanb.subdivision import default_max_bytes, estimate_bytes, predict_counts
+from pentanb.subdivision import default_max_bytes
 
 CLOCKS = {"wall": time.perf_counter, "cpu": time.process_time}
 
@@ -248,10 +248,10 @@ def slider(table: Table, runs: int, clock) -> dict:
             t = clock()
             e.iterations.value = 1  # the explorer's own path: compute, buffers, legend
             dt = clock() - t
-            assert e.mesh is not None and e.mesh.n_faces > base.n_faces, "no new mesh shown"
+            assert e.mesh is not None and e.mesh is not base, "no new mesh shown"
             if r:  # the first is a warm-up
                 times.append(dt)
-            e.close_all() if hasattr(e, "close_all") else None
+            e.close()
         ms = 1000 * median(times)
         target = 10.0 if scheme.family == "pentagonal" else 15.0
         table.add(sec, f"3. {name} + 2 duals", ms, "ms", target)
@@ -293,33 +293,33 @@ def linear(table: Table, runs: int, clock, small_runs: dict) -> dict:
 
 def guard(table: Table) -> dict:
     """Estimate against measured peak, per scheme, and the largest mesh allowed by default."""
+    from pentanb import subdivision
+
     print("\nmemory guard: estimate / measured peak (subdivide, 1 iteration, 2 duals)")
     v, f = icosphere(6)
-    base = pb.Mesh(v, f)
     limit = default_max_bytes()
-    sec = f"memory guard (default limit {limit / 2**30:.1f} GiB)"
+    sec = f"memory guard (default limit {limit / 2**30:.1f} GiB: half the memory)"
     out = {}
-    for name in pb.SCHEMES:
-        peak, mesh = peak_bytes(lambda name=name: pb.subdivide(base, name, 1, 2))
+    for name, s in pb.SCHEMES.items():
+        base = pb.Mesh(v, f)
         counts = (base.n_vertices, base.n_edges, base.n_faces)
-        est = max(estimate_bytes(*c, scheme=name) for c in _steps(counts, name))
-        # the largest icosphere-like input whose estimate fits the default limit
-        scale = limit / est
-        faces_out = int(mesh.n_faces * scale)
+        est = subdivision._request_bytes(s, counts, 1, 2, subdivision._kind_of(base))
+        peak, mesh = peak_bytes(lambda base=base, name=name: pb.subdivide(base, name, 1, 2))
+        # the estimate is linear in the counts: scale the input until it reaches the limit
+        scale = (limit - subdivision._FIXED) / (est - subdivision._FIXED)
+        faces_out = mesh.n_faces * scale
         table.add(
             sec,
-            f"{name}: estimate / peak",
+            f"{name} + 2 duals: estimate / measured peak",
             est / peak,
             "x",
             1.25,
-            note=f"largest within the default limit: about {faces_out / 1e6:,.0f} M output faces",
+            note=f"largest by default: about {faces_out / 1e6:,.0f} M faces out, "
+            f"{len(f) * scale / 1e6:,.1f} M triangles in",
         )
         out[name] = {"peak": peak, "estimate": est, "largest_output_faces": faces_out}
+        del mesh
     return out
-
-
-def _steps(counts, name):
-    return [counts] + predict_counts(counts, name, 1, 2)
 
 
 def io_rows(table: Table, runs: int, clock) -> dict:

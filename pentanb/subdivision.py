@@ -8,14 +8,19 @@ a slider.
 The memory guard
 ----------------
 :func:`estimate_bytes` predicts the peak memory of one iteration (a
-remeshing and its duals) from the counts ``(V, E, F)`` of its input, by
-:data:`MEMORY_MODEL`: one linear form per scheme and number of duals,
-calibrated on numpy's allocations as :mod:`tracemalloc` counts them
-(``benchmarks/calibrate_memory.py`` measures and fits it again).  The
-promise, tested for every scheme: the measured peak is at most the
-estimate, and the estimate at most 1.25 times the measured peak, on meshes
-of ten thousand half-edges and more (smaller ones cost a few kilobytes of
-Python objects besides).
+remeshing and its duals) from the counts ``(V, E, F)`` of its input and
+what is known of its regularity (every face a k-gon, every vertex
+d-valent), by :data:`MEMORY_MODEL`: linear forms per scheme and number of
+duals, calibrated on numpy's allocations as :mod:`tracemalloc` counts them
+(``benchmarks/calibrate_memory.py`` measures and fits them again).  The
+promise, tested for every scheme on meshes of tens of thousands of
+half-edges (tori, triangle, pentagonal and mixed meshes the forms were not
+fitted on): the measured peak of :func:`subdivide` above its input is at
+most the estimate, and the estimate at most 1.25 times the measured peak.
+Smaller meshes need a few dozen kilobytes of Python objects besides, which
+the estimate's fixed part covers.  With the default limit (half of the
+physical memory) an allowed request therefore leaves at least the other
+half.
 
 A request is checked iteration by iteration, from the first, and refused at
 the first iteration whose estimate is over the limit, before anything is
@@ -130,143 +135,63 @@ def regressors(counts: Counts, scheme: str | Scheme | None = None, kind: Kind = 
 
 #: Peak memory per scheme and number of duals (0, 1, or 2 and more):
 #: ``(step, hold)``, two linear forms in :func:`regressors` of the counts of
-#: the input of an iteration.  ``step``: the peak of the iteration above its input (a mesh
-#: as the constructor leaves it: twins and vertex rings derived).
-#: ``hold``: what an input built by the earlier iterations of the same call
-#: adds.  Measured with int32 indices; twice the index part when meshes
-#: need int64 (more than 2**31 corners).  Calibrated by
-#: ``benchmarks/calibrate_memory.py``.
+#: the input of an iteration.  ``step``: the peak of the iteration above its
+#: input (a mesh as the constructor leaves it: twins and vertex rings
+#: derived).  ``hold``: what an input built by the earlier iterations of the
+#: same call adds (one term, in its edges; negative when such an input,
+#: having derived arrays already, costs less than a fresh one).  Measured
+#: with int32 indices; twice the whole when meshes need int64 (more than
+#: 2**31 corners).  Calibrated by ``benchmarks/calibrate_memory.py``.
 MEMORY_MODEL: dict[str, dict[int, tuple[Form, Form]]] = {
     "pentagonalize": {
-        0: (
-            (175.2, 0.0, 187.3, 26.3, 2.7, 0.0, 0.0),
-            (8756.5, -1010.1, -407.1, -4.5, 0.0, 0.0, -2035.4),
-        ),
-        1: (
-            (298.5, 0.0, 328.0, 10.6, 0.0, 0.0, 0.0),
-            (-2353.6, -5881.8, 89780.0, -11.3, -11768.0, 0.0, -11768.0),
-        ),
-        2: (
-            (426.8, 0.0, 445.4, 20.7, 3.8, 0.0, 0.0),
-            (24966.7, -2916.4, -1167.4, -13.6, 0.0, 0.0, -5836.9),
-        ),
+        0: ((0.0, 158.1, 32.0, 19.4, 0.0, 0.0, 0.0), (0.0, 20.5, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        1: ((0.0, 281.3, 48.3, 8.9, 0.0, 0.0, 0.0), (0.0, -24.9, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        2: ((0.0, 363.4, 54.1, 13.6, 0.0, 0.0, 0.0), (0.0, -31.2, 0.0, 0.0, 0.0, 0.0, 0.0)),
     },
     "preserve_pentagons": {
-        0: (
-            (10.0, 200.8, 0.0, 49.0, 0.0, 0.0, 0.0),
-            (356010.6, -71061.2, 354395.1, -75.6, 16.3, 16.3, -142122.9),
-        ),
-        1: (
-            (400.7, 0.0, 430.6, 15.6, 0.0, 14.1, 0.0),
-            (-1789.9, 139.1, -1816.9, -6.6, 277.7, 277.7, 277.7),
-        ),
-        2: (
-            (511.5, 0.0, 484.0, 25.1, 0.0, 28.4, 0.0),
-            (-125018.7, 24976.4, -124745.4, 2.1, -0.6, -0.6, 49951.9),
-        ),
+        0: ((201.4, 0.0, 189.3, 20.4, 0.0, 0.0, 0.0), (0.0, 32.9, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        1: ((0.0, 362.0, 88.8, 12.8, 0.0, 7.3, 0.0), (0.0, 19.2, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        2: ((0.0, 439.2, 70.8, 19.9, 0.0, 16.3, 0.0), (0.0, 36.5, 0.0, 0.0, 0.0, 0.0, 0.0)),
     },
     "triangulate": {
-        0: ((0.0, 14.1, 308.0, 0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: (
-            (207.4, 0.0, 285.5, 11.0, 0.0, 0.0, 0.0),
-            (-4847.4, -7268.1, 207142.1, -219.1, -14542.3, 0.0, -14542.3),
-        ),
-        2: ((276.0, 0.0, 292.3, 9.9, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        0: ((0.0, 67.2, 175.5, 0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        1: ((0.0, 171.8, 157.1, 7.9, 0.0, 0.0, 0.0), (0.0, 8.5, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        2: ((0.0, 229.9, 115.6, 7.9, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
     },
     "loop_remesh": {
-        0: (
-            (0.0, 71.6, 89.5, 25.0, 0.0, 9.1, 0.0),
-            (-41878.9, 8409.1, -42092.6, 3.2, -6.5, -6.5, 16817.7),
-        ),
-        1: (
-            (259.7, 0.0, 288.2, 17.6, 0.0, 22.8, 0.0),
-            (34620.9, -2663.4, 34694.5, -15.4, -5327.2, -5327.2, -5327.2),
-        ),
-        2: (
-            (255.6, 0.0, 324.6, 15.2, 0.0, 24.7, 0.0),
-            (85893.6, -17185.2, 85983.4, -14.2, 0.5, 0.5, -34370.7),
-        ),
+        0: ((0.0, 43.2, 134.3, 19.4, 0.0, 15.0, 0.0), (0.0, 22.1, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        1: ((0.0, 139.3, 190.9, 11.3, 0.0, 39.7, 0.0), (0.0, 46.5, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        2: ((196.8, 0.0, 356.2, 12.3, 0.0, 34.6, 0.0), (0.0, 20.2, 0.0, 0.0, 0.0, 0.0, 0.0)),
     },
     "sqrt3_remesh": {
-        0: (
-            (0.0, 66.6, 55.5, 4.8, 0.0, 0.0, 0.0),
-            (-17388.6, 1073.5, 712.5, 1.2, 0.0, 0.0, 2137.5),
-        ),
-        1: (
-            (0.0, 274.4, 112.3, 0.0, 0.0, 0.0, 0.0),
-            (961.4, 1445.3, -40761.5, -1.9, 2884.1, 0.0, 2884.1),
-        ),
-        2: (
-            (307.4, 0.0, 376.7, 3.9, 7.0, 0.0, 0.0),
-            (-20724.7, 1270.9, 846.0, -5.9, 0.0, 0.0, 2538.1),
-        ),
+        0: ((72.1, 0.0, 102.5, 7.1, 0.0, 0.0, 0.0), (0.0, 33.6, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        1: ((0.0, 285.6, 84.5, 0.0, 0.0, 0.0, 0.0), (0.0, 28.6, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        2: ((0.0, 285.6, 84.5, 0.0, 0.0, 0.0, 0.0), (0.0, 11.7, 0.0, 0.0, 0.0, 0.0, 0.0)),
     },
     "vertex_insertion": {
-        0: (
-            (0.0, 119.6, 69.7, 21.3, 0.0, 0.0, 0.0),
-            (-74982.3, 30015.3, 15007.4, 5.1, 0.0, 0.0, 3.5),
-        ),
-        1: (
-            (0.0, 256.7, 130.8, 1.0, 0.0, 0.0, 0.0),
-            (26086.6, 52175.0, -130423.9, 9.2, 2.7, 0.0, 2.7),
-        ),
-        2: (
-            (292.2, 0.0, 367.3, 18.7, 0.0, 0.0, 3.3),
-            (150160.1, -60039.5, -30020.6, -20.2, 0.0, 0.0, -1.2),
-        ),
+        0: ((0.0, 115.1, 93.8, 17.6, 0.0, 0.0, 0.0), (0.0, 31.3, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        1: ((0.0, 253.5, 138.0, 1.8, 0.0, 0.0, 0.0), (0.0, 18.1, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        2: ((278.7, 0.0, 394.2, 16.4, 0.0, 0.0, 0.8), (0.0, 17.9, 0.0, 0.0, 0.0, 0.0, 0.0)),
     },
     "corner_cutting": {
-        0: (
-            (166.9, 0.0, 236.9, 2.3, 0.0, 0.0, 0.0),
-            (26192.1, 52386.2, -130890.0, 7.7, 2.7, 2.7, 0.0),
-        ),
-        1: (
-            (235.3, 0.0, 309.7, 18.2, 0.0, 20.0, 0.0),
-            (17276.4, -6894.0, -3447.6, -11.3, 0.0, 1.7, 0.0),
-        ),
-        2: (
-            (283.7, 0.0, 372.6, 11.0, 0.0, 11.4, 0.0),
-            (6302.5, 12605.6, -31494.9, -2.6, 3.0, 3.0, 0.0),
-        ),
+        0: ((0.0, 158.1, 92.8, 1.4, 0.0, 0.0, 0.0), (0.0, 46.9, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        1: ((221.9, 0.0, 336.3, 16.0, 0.0, 17.7, 0.0), (0.0, 15.7, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        2: ((276.6, 0.0, 391.0, 9.9, 0.0, 10.0, 0.0), (0.0, 17.2, 0.0, 0.0, 0.0, 0.0, 0.0)),
     },
     "preserve_hexagons": {
-        0: (
-            (252.5, 0.0, 298.5, 2.2, 0.0, 0.0, 0.0),
-            (-52246.7, 4023.7, -52191.2, 5.1, 8040.2, 8040.2, 8040.2),
-        ),
-        1: (
-            (279.0, 0.0, 351.7, 15.3, 0.0, 0.0, 0.0),
-            (-75121.4, 5797.2, -75369.3, -1.6, 11587.2, 11587.2, 11587.2),
-        ),
-        2: (
-            (342.1, 0.0, 402.4, 15.9, 0.0, 0.0, 0.0),
-            (15274.4, -1169.3, 15174.3, -8.4, -2339.2, -2339.2, -2339.2),
-        ),
+        0: ((0.0, 237.9, 54.3, 1.5, 0.0, 0.0, 5.8), (0.0, 42.6, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        1: ((0.0, 247.2, 90.7, 13.0, 0.0, 0.0, 9.5), (0.0, 57.1, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        2: ((0.0, 304.3, 68.8, 15.0, 0.0, 0.0, 17.4), (0.0, 24.5, 0.0, 0.0, 0.0, 0.0, 0.0)),
     },
     "honeycomb": {
-        0: (
-            (144.1, 0.0, 215.9, 2.3, 0.0, 0.0, 0.0),
-            (985.3, 1483.0, -41692.1, -1.9, 2956.0, 2956.0, 0.0),
-        ),
-        1: (
-            (0.0, 202.5, 151.2, 1.5, 0.0, 0.0, 0.0),
-            (123639.8, -7537.3, -5048.0, 31.1, 0.0, -15144.0, 0.0),
-        ),
-        2: (
-            (221.3, 0.0, 336.5, 12.9, 0.0, 0.0, 0.0),
-            (-281.1, -419.0, 12041.1, -7.2, -843.4, -843.4, 0.0),
-        ),
+        0: ((0.0, 135.3, 94.8, 1.4, 0.0, 0.0, 0.0), (0.0, 61.8, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        1: ((0.0, 209.5, 128.7, 0.0, 0.0, 0.0, 0.0), (0.0, 103.1, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        2: ((0.0, 221.1, 117.9, 10.3, 0.0, 0.0, 0.0), (0.0, 28.3, 0.0, 0.0, 0.0, 0.0, 0.0)),
     },
     "triangulate (triangles)": {
-        0: (
-            (0.0, 3.2, 0.0, 0.0, 0.0, 0.0, 0.0),
-            (-546155.6, 33222.5, 22118.3, 777.9, 0.0, 0.0, 66354.8),
-        ),
-        1: ((29.3, 16.9, 0.0, 6.1, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: (
-            (108.7, 0.0, 0.0, 9.3, 0.0, 0.0, 0.0),
-            (-305070.4, 18554.0, 12350.1, 466.7, 0.0, 0.0, 37050.2),
-        ),
+        0: ((0.0, 3.2, 0.0, 0.0, 0.0, 0.0, 0.0), (0.0, 42.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        1: ((29.3, 0.0, 25.4, 6.1, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        2: ((108.7, 0.0, 0.0, 9.3, 0.0, 0.0, 0.0), (0.0, 47.2, 0.0, 0.0, 0.0, 0.0, 0.0)),
     },
 }
 
@@ -376,7 +301,7 @@ def max_iterations(
         if biggest > max_faces or need > limit:
             return k
         after = ((F2, E2, V2) if duals % 2 else (V2, E2, F2)), _kind_after(s, kind, duals)
-        if after == ((V, E, F), kind):
+        if after == ((V, E, F), kind) and k > 0:
             return cap  # a fixed point: every later iteration is the same
         (V, E, F), kind = after
     return cap
@@ -445,9 +370,11 @@ def _iteration_bytes(
     V, E, F = counts
     step, hold = MEMORY_MODEL[_model_name(s, counts)][min(duals, 2)]
     x = regressors(counts, s, kind)
-    need = _FIXED + _MARGIN * sum(a * b for a, b in zip(step, x))
-    if later:
-        need += sum(a * b for a, b in zip(hold, x))
+    stepped = sum(a * b for a, b in zip(step, x))
+    need = _FIXED + _MARGIN * stepped
+    if later:  # and the same room again: later inputs vary more
+        need += sum(a * b for a, b in zip(hold, x)) + (_MARGIN - 1) * stepped
+        need = max(need, _FIXED + stepped / 2)
     V2, E2, _ = s.counts(V, E, F)
     if _itemsize(max(V2, V), 2 * E2) == 8:
         need *= 2  # int64 indices: about twice the memory (an upper bound)
@@ -463,8 +390,8 @@ def _request_bytes(
         need = max(need, _iteration_bytes(s, (V, E, F), duals, later=i > 0, kind=kind))
         V2, E2, F2 = s.counts(V, E, F)
         after = ((F2, E2, V2) if duals % 2 else (V2, E2, F2)), _kind_after(s, kind, duals)
-        if after == ((V, E, F), kind):
-            break  # a fixed point: every later iteration is the same
+        if after == ((V, E, F), kind) and i > 0:
+            break  # a fixed point: every later iteration is the same (as the second)
         (V, E, F), kind = after
     return need
 
@@ -530,8 +457,8 @@ def _guard(
                 "Lower iterations or raise max_bytes."
             )
         after = ((F2, E2, V2) if duals % 2 else (V2, E2, F2)), _kind_after(s, kind, duals)
-        if after == ((V, E, F), kind):
-            break  # a fixed point: every later iteration is the same
+        if after == ((V, E, F), kind) and i > 0:
+            break  # a fixed point: every later iteration is the same (as the second)
         (V, E, F), kind = after
     steps = iterations * (1 + duals)
     if steps > MAX_STEPS:
@@ -551,8 +478,8 @@ def default_max_bytes() -> int:
 
 
 #: Bytes per output edge that a user's callable scheme is assumed to need at
-#: the peak of one iteration with its duals (the most of any registered
-#: scheme, with room to spare).
+#: the peak of one iteration with its duals: more than any registered scheme
+#: needs (their estimates stay below it, tested), twice with int64 indices.
 CALLABLE_BYTES_PER_EDGE = 160
 
 
@@ -672,7 +599,7 @@ def _guard_callable(
     V, E, F = (float(x) for x in after)
     for i in range(1, iterations):
         V, E, F = V * growth[0], E * growth[1], F * growth[2]
-        need = CALLABLE_BYTES_PER_EDGE * E
+        need = CALLABLE_BYTES_PER_EDGE * E * (2 if max(V, 2 * E) >= 2**31 else 1)
         if need > limit or need > _ABSOLUTE:
             raise MeshError(
                 f"{name} iteration {i + 1} of {iterations:,} would build a mesh of about "

@@ -495,3 +495,36 @@ def test_scheme_formula_text():
     assert SCHEMES["honeycomb"].formula == "(2E, 3E, V+F)"
     # triangulate leaves triangles alone: its formula is a bound
     assert SCHEMES["triangulate"].formula.endswith("at most (when no face is a triangle)")
+
+
+@pytest.mark.parametrize("name", OPERATOR_NAMES)
+def test_the_memory_model_stays_sensible_far_beyond_its_calibration(name):
+    # per edge of the output, every form gives a positive, plausible figure for
+    # inputs of a thousand to a billion edges, of every regularity: the
+    # model extrapolates, it does not explode or turn negative
+    from pentanb import subdivision
+
+    s = SCHEMES[name]
+    for E in (10**3, 10**5, 10**7, 10**9):
+        for V, F, kind in (
+            (E // 3, 2 * E // 3, (3, 6)),
+            (E // 2, E // 2, (4, 4)),
+            (2 * E // 3, 2 * E // 5, (5, 3)),
+            (E // 2, E // 2, (0, 0)),
+        ):
+            out_edges = s.counts(V, E, F)[1]
+            for duals in (0, 1, 2, 5):
+                for later in (False, True):
+                    need = subdivision._iteration_bytes(s, (V, E, F), duals, later, kind)
+                    per_edge = need / out_edges
+                    assert need > 0
+                    # (with int64 indices, beyond 2**31 corners, twice the bytes)
+                    wide = 2 if 2 * out_edges >= 2**31 else 1
+                    if E >= 10**5:
+                        assert 1 < per_edge < wide * subdivision.CALLABLE_BYTES_PER_EDGE, (
+                            E,
+                            kind,
+                            duals,
+                            later,
+                            per_edge,
+                        )
