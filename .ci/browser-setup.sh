@@ -5,8 +5,10 @@
 #   * Python's playwright, only when a Python is named (argument or $PYTHON)
 #     and it lacks it; it drives that chromium, so no browser download is
 #     needed (the test extras of pyproject.toml bring it into a venv anyway),
-#   * the npm packages @jupyter-widgets/html-manager and requirejs, in a cache
-#     folder outside the repository: $PENTANB_JS_DIR, default
+#   * the npm packages @jupyter-widgets/html-manager and requirejs, at the
+#     versions of pentanb/viz/js_versions.json (the one place they are
+#     written; pentanb.viz.html reads the same file), in a cache folder
+#     outside the repository: $PENTANB_JS_DIR, default
 #     ${XDG_CACHE_HOME:-$HOME/.cache}/pentanb/js.
 # Safe to run again: each step is skipped when its result is already there.
 #
@@ -14,8 +16,7 @@
 set -euo pipefail
 
 PY="${1:-${PYTHON:-}}"
-HTML_MANAGER_VERSION=1.0.15
-REQUIREJS_VERSION=2.3.8
+JS_VERSIONS="$(cd "$(dirname "$0")/.." && pwd)/pentanb/viz/js_versions.json"
 JS_DIR="${PENTANB_JS_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/pentanb/js}"
 
 apt_updated=0
@@ -37,17 +38,25 @@ if [ -n "$PY" ] && ! "$PY" -c "import playwright" 2>/dev/null; then
     "$PY" -m pip install --quiet "playwright>=1.40"
 fi
 
-manager="$JS_DIR/node_modules/@jupyter-widgets/html-manager/dist/embed-amd.js"
-requirejs="$JS_DIR/node_modules/requirejs/require.js"
-if [ ! -f "$manager" ] || [ ! -f "$requirejs" ]; then
+# "name@version" for every package of js_versions.json not yet in the cache
+# at that version
+mapfile -t packages < <("${PY:-python3}" - "$JS_VERSIONS" "$JS_DIR" <<'PYTHON'
+import json, pathlib, sys
+wanted = json.loads(pathlib.Path(sys.argv[1]).read_text())
+for name, version in wanted.items():
+    installed = pathlib.Path(sys.argv[2], "node_modules", name, "package.json")
+    if not installed.is_file() or json.loads(installed.read_text()).get("version") != version:
+        print(f"{name}@{version}")
+PYTHON
+)
+if [ "${#packages[@]}" -gt 0 ]; then
     if ! command -v npm >/dev/null 2>&1; then
         echo "browser-setup: installing npm"
         apt_install npm
     fi
-    echo "browser-setup: fetching html-manager and requirejs into $JS_DIR"
+    echo "browser-setup: fetching ${packages[*]} into $JS_DIR"
     mkdir -p "$JS_DIR"
-    npm install --prefix "$JS_DIR" --no-audit --no-fund --loglevel=error \
-        "@jupyter-widgets/html-manager@$HTML_MANAGER_VERSION" "requirejs@$REQUIREJS_VERSION"
+    npm install --prefix "$JS_DIR" --no-audit --no-fund --loglevel=error "${packages[@]}"
 fi
 
 echo "browser-setup: $(/usr/bin/chromium --version 2>/dev/null | head -1 || echo 'chromium ?');" \

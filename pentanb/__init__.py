@@ -16,6 +16,8 @@ from __future__ import annotations
 from . import shapes, topology
 from .io import read, write
 from .mesh import Mesh, MeshError
+from .notation import conway
+from .positions import ConvergenceError, canonical, planarize
 from .schemes import (
     SCHEMES,
     Scheme,
@@ -63,13 +65,18 @@ __all__ = [
     "step_through",
     "export_html",
     "figures",
+    "analysis",
+    "conway",
+    "canonical",
+    "planarize",
+    "ConvergenceError",
 ]
 
 # drawing functions: imported on first use, so that `import pentanb` needs numpy only
 _LAZY = {
     "view": ("pentanb.viz.three", "view"),
-    "explore": ("pentanb.viz.three", "explore"),
-    "step_through": ("pentanb.viz.three", "step_through"),
+    "explore": ("pentanb.viz.explorer", "explore"),
+    "step_through": ("pentanb.viz.steps", "step_through"),
     "export_html": ("pentanb.viz.html", "export_html"),
 }
 
@@ -80,8 +87,8 @@ def __getattr__(name):
 
         module, attr = _LAZY[name]
         return getattr(importlib.import_module(module), attr)
-    if name == "figures":
+    if name in ("figures", "analysis"):
         import importlib
 
-        return importlib.import_module("pentanb.figures")
+        return importlib.import_module(f"pentanb.{name}")
     raise AttributeError(f"module 'pentanb' has no attribute {name!r}")

@@ -383,8 +383,8 @@ class Mesh:
         """
         if validate:
             v = _as_vertices(vertices)
-            c = np.array(corners, dtype=np.int64).ravel()  # copies: the caller's
-            o = np.array(offsets, dtype=np.int64).ravel()  # arrays stay theirs
+            c = _csr_part(corners, "corners")  # copies: the caller's
+            o = _csr_part(offsets, "offsets")  # arrays stay theirs
             if o.size == 0 or o[0] != 0 or o[-1] != c.size or np.any(np.diff(o) < 0):
                 raise MeshError("offsets must start at 0, rise, and end at len(corners)")
             self = cls._new(v, *_compact(c, o, v.shape[0]))
@@ -393,13 +393,9 @@ class Mesh:
         v = np.array(vertices, dtype=np.float64)
         if v.ndim != 2 or v.shape[1] != 3:
             raise MeshError(f"vertices must be an (n, 3) array, got shape {v.shape}")
-        c, o = _compact(
-            np.array(corners, dtype=np.int64).ravel(),
-            np.array(offsets, dtype=np.int64).ravel(),
-            v.shape[0],
-        )
+        c, o = _compact(_csr_part(corners, "corners"), _csr_part(offsets, "offsets"), v.shape[0])
         return cls._new(
-            v, c, o, twin=None if twin is None else np.array(twin, dtype=c.dtype).ravel()
+            v, c, o, twin=None if twin is None else _csr_part(twin, "twin").astype(c.dtype)
         )
 
     def with_vertices(self, vertices: ArrayLike) -> Mesh:
@@ -926,9 +922,11 @@ class Mesh:
                     f"{fid[faces].tolist()}: inconsistent orientation or "
                     "a non-manifold edge"
                 )
+            from ._boundary import describe_boundary
+
             raise MeshError(
                 f"edge ({u}, {w}) of face {int(fid[h])} has only one side "
-                "(a boundary): the mesh must be closed"
+                f"(a boundary): the mesh must be closed; it has {describe_boundary(c, head)}"
             )
         self._shared.values["twin"] = _readonly(twin)
         unused = np.flatnonzero(self.valences == 0)
@@ -965,6 +963,21 @@ class Mesh:
             # a vertex whose rotation orbit is shorter than its valence
             bad_v = _multi_fan_vertex(self.rotation, c, self.valences)
             raise MeshError(f"vertex {bad_v} is non-manifold: its faces form more than one fan")
+
+    # ------------------------------------------------------------------ other libraries
+    @classmethod
+    def from_trimesh(cls, tmesh: Any) -> Mesh:
+        """A mesh from a ``trimesh.Trimesh`` (see :func:`pentanb.io.from_trimesh`)."""
+        from .io.convert import from_trimesh
+
+        return from_trimesh(tmesh)
+
+    def to_trimesh(self) -> Any:
+        """This mesh as a ``trimesh.Trimesh``, polygons fanned into triangles
+        (see :func:`pentanb.io.to_trimesh`)."""
+        from .io.convert import to_trimesh
+
+        return to_trimesh(self)
 
 
 class _Faces:
@@ -1017,9 +1030,28 @@ del _name
 
 
 # ---------------------------------------------------------------------- helpers
-def _as_vertices(vertices: ArrayLike) -> FloatArray:
+_NOT_ARRAYS = (str, bytes, dict, set, frozenset)
+
+
+def _as_vertices(vertices: ArrayLike, copy: bool = True) -> FloatArray:
+    """``vertices`` as an (n, 3) float64 array of finite numbers (a copy unless ``copy=False``).
+
+    Raises
+    ------
+    TypeError
+        Not an array or a sequence (None, a string, a number, a dict), or
+        complex numbers.
+    MeshError
+        Not (n, 3), entries that are not numbers, or a non-finite coordinate.
+    """
+    if not _array_like(vertices):
+        raise TypeError(
+            f"vertices must be an (n, 3) array of numbers, got {type(vertices).__name__}"
+        )
+    if np.iscomplexobj(vertices):
+        raise TypeError("vertices must be real numbers, got complex numbers")
     try:
-        v = np.array(vertices, dtype=np.float64)
+        v = np.array(vertices, dtype=np.float64, copy=True if copy else None)
     except (TypeError, ValueError) as exc:
         raise MeshError(f"vertices must be an (n, 3) array of numbers: {exc}") from None
     if v.ndim != 2 or v.shape[1] != 3:
@@ -1030,30 +1062,95 @@ def _as_vertices(vertices: ArrayLike) -> FloatArray:
     return v
 
 
+def _array_like(x: Any) -> bool:
+    """Whether ``x`` could be an array: an array of rank >= 1, a sequence or an iterable
+    (not a string, bytes, dict or set)."""
+    if isinstance(x, np.ndarray):
+        return x.ndim > 0
+    if x is None or isinstance(x, (*_NOT_ARRAYS, np.generic)):
+        return False
+    return hasattr(x, "__iter__") or hasattr(x, "__array__")
+
+
+_INDEX_LIMIT = 1 << 63
+
+
+def _as_indices(values: Any, what: str) -> IntArray | str:
+    """``values`` as a flat int64 array (a new one), or what is wrong with them.
+
+    Whole numbers of any integer or float type are taken; anything else,
+    and integers int64 cannot hold (an index of 2**63 or more is out of
+    range for any mesh), is described in the returned message, which
+    starts with ``what`` (e.g. ``"face 3"`` or ``"corners"``).
+    """
+    a = np.asarray(values)
+    if a.dtype.kind == "O":  # Python ints too large for int64, or non-numbers
+        flat = a.ravel().tolist()
+        for x in flat:
+            if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, np.integer)):
+                if isinstance(x, (float, np.floating)) and float(x).is_integer():
+                    continue
+                return f"{what} has non-integer vertex indices {flat[:8]}"
+        huge = [x for x in flat if not -_INDEX_LIMIT <= int(x) < _INDEX_LIMIT]
+        if huge:
+            return f"{what} uses vertex index {int(huge[0])}, out of range (larger than any mesh)"
+        a = np.array([int(x) for x in flat], dtype=np.int64).reshape(a.shape)
+    if a.dtype.kind == "u":
+        if a.size and a.max() >= _INDEX_LIMIT:
+            return f"{what} uses vertex index {int(a.max())}, out of range (larger than any mesh)"
+    elif a.dtype.kind == "f":
+        with np.errstate(invalid="ignore"):
+            whole = np.isfinite(a) & (np.mod(a, 1) == 0)
+        if not whole.all():
+            return f"{what} has non-integer vertex indices {a.ravel()[:8].tolist()}"
+        big = np.flatnonzero(np.abs(a.ravel()) >= float(_INDEX_LIMIT))
+        if big.size:
+            value = int(a.ravel()[big[0]])
+            return f"{what} uses vertex index {value}, out of range (larger than any mesh)"
+    elif a.dtype.kind != "i":
+        return f"{what} has non-integer vertex indices {a.ravel()[:8].tolist()}"
+    return np.array(a, dtype=np.int64).ravel()
+
+
 def _as_csr(faces: Any) -> tuple[IntArray, IntArray]:
+    """``faces`` (a sequence of index sequences, or an (m, k) array) as CSR ``(corners, offsets)``.
+
+    Raises
+    ------
+    TypeError
+        ``faces`` is not a sequence or an array (None, a string, a number).
+    MeshError
+        No faces, a face that is not a flat sequence, non-integer indices,
+        or an index no mesh could have (2**63 or more).  Faces of fewer
+        than 3 vertices (empty ones too) pass here and are refused, by
+        number, when the mesh is validated.
+    """
+    if not _array_like(faces):
+        raise TypeError(
+            "faces must be a sequence of vertex-index sequences or an (m, k) int "
+            f"array, got {type(faces).__name__}"
+        )
+    if not isinstance(faces, np.ndarray) and not hasattr(faces, "__len__"):
+        faces = list(faces)  # an iterator or generator of faces
     if isinstance(faces, np.ndarray) and faces.ndim == 2:
-        if faces.dtype.kind not in "iu":
-            whole = (
-                np.equal(np.mod(faces, 1), 0).all(axis=1)
-                if faces.dtype.kind == "f"
-                else np.zeros(len(faces), dtype=bool)
-            )
-            if not whole.all():
-                f = int(np.flatnonzero(~whole)[0])
-                raise MeshError(
-                    f"face {f} has non-integer vertex indices "
-                    f"{faces[f].tolist()}: face indices must be integers"
-                )
-        arr = faces.astype(np.int64)
-        m, k = arr.shape
+        m, k = faces.shape
         if m == 0:
             raise MeshError("the mesh has no faces")
-        return arr.ravel().copy(), np.arange(0, (m + 1) * k, k, dtype=np.int64)[: m + 1]
+        indices = _as_indices(faces, "face")
+        if isinstance(indices, str):
+            rows = faces.reshape(m, -1)
+            for f in range(m):  # name the first face at fault
+                problem = _as_indices(rows[f], f"face {f}")
+                if isinstance(problem, str):
+                    integers = ": face indices must be integers" if "non-integer" in problem else ""
+                    raise MeshError(problem + integers)
+            raise MeshError(indices)  # pragma: no cover - a row is always at fault
+        return indices, np.arange(m + 1, dtype=np.int64) * k
     if isinstance(faces, np.ndarray) and faces.ndim != 1:
         raise MeshError(
             f"faces must be a list of index sequences or an (m, k) array, got shape {faces.shape}"
         )
-    if not isinstance(faces, np.ndarray) and len(faces) and len({len(f) for f in faces}) == 1:
+    if not isinstance(faces, np.ndarray) and len(faces) and len({_len(f) for f in faces}) == 1:
         # a list of faces of one size: one array conversion instead of one per face
         try:
             same = np.array(faces)
@@ -1071,11 +1168,11 @@ def _as_csr(faces: Any) -> tuple[IntArray, IntArray]:
             raise MeshError(f"face {f} is not a sequence of vertex indices") from None
         if a.ndim != 1:
             raise MeshError(f"face {f} is not a flat sequence of vertex indices")
-        if a.size and a.dtype.kind not in "iu":
-            if a.dtype.kind != "f" or not np.all(np.equal(np.mod(a, 1), 0)):
-                raise MeshError(f"face {f} has non-integer vertex indices {a.tolist()}")
-        sizes.append(a.size)
-        flat.append(a.astype(np.int64))
+        got = _as_indices(a, f"face {f}") if a.size else np.zeros(0, dtype=np.int64)
+        if isinstance(got, str):
+            raise MeshError(got)
+        sizes.append(got.size)
+        flat.append(got)
     if not sizes:
         raise MeshError("the mesh has no faces")
     offsets = np.zeros(len(sizes) + 1, dtype=np.int64)
@@ -1417,6 +1514,23 @@ def _scaled_newell(
     last = np.cumsum(sizes) - 1
     nxt[last] = last - sizes + 1
     return np.add.reduceat(np.cross(p, p[nxt]), np.cumsum(sizes) - sizes, axis=0)
+
+
+def _csr_part(values: Any, name: str) -> IntArray:
+    """A CSR array given to :meth:`Mesh.from_csr` as a new flat int64 array."""
+    if values is None or isinstance(values, _NOT_ARRAYS):
+        raise TypeError(f"{name} must be an array of integers, got {type(values).__name__}")
+    got = _as_indices(values, name)
+    if isinstance(got, str):
+        raise MeshError(got.replace("vertex indices", "values").replace("vertex index", "value"))
+    return got
+
+
+def _len(face: Any) -> int:
+    try:
+        return len(face)
+    except TypeError:
+        return -1
 
 
 def _match_twins(tail, head, n, check=False):

@@ -1,4 +1,4 @@
-"""Test shapes: the Platonic solids, tori, higher genus and a low-poly animal.
+"""Test shapes: the Platonic solids, boxes, tori, higher genus and two low-poly rabbits.
 
 Every function returns a closed, outward-oriented :class:`~pentanb.Mesh`.
 :data:`SHAPES` lists them by name (with their default sizes) for sliders,
@@ -29,6 +29,8 @@ __all__ = [
     "hexagonal_surface",
     "voxels",
     "hard_edged_cube",
+    "box",
+    "rabbit",
     "animal",
     "outward",
     "SHAPES",
@@ -134,8 +136,8 @@ def torus(rings: int = 12, sides: int = 8, radius: float = 1.0, tube: float = 0.
     around the tube, so face 0 is centred on the outer equator at +x.
     """
     rings, sides = _grid_size(rings, sides)
-    if not (0 < tube < radius):
-        raise ValueError(f"need 0 < tube < radius, got tube={tube}, radius={radius}")
+    _radii(radius, tube)
+    _check_size(f"torus({rings}, {sides})", rings * sides, 2 * rings * sides, rings * sides)
     i, j = np.meshgrid(np.arange(rings), np.arange(sides), indexing="ij")
     v = _torus_points((i - 0.5) / rings, (j - 0.5) / sides, radius, tube)
     idx = lambda a, b: (a % rings) * sides + (b % sides)  # noqa: E731
@@ -161,8 +163,9 @@ def hexagonal_torus(
         sides + j`` surrounds grid point (i, j), face 0 on the outer equator.
     """
     rings, sides = _grid_size(rings, sides)
-    if not (0 < tube < radius):
-        raise ValueError(f"need 0 < tube < radius, got tube={tube}, radius={radius}")
+    _radii(radius, tube)
+    n = rings * sides  # (the triangulated grid it is the dual of is about as large)
+    _check_size(f"hexagonal_torus({rings}, {sides})", 2 * n, 3 * n, n)
     i, j = np.meshgrid(np.arange(rings), np.arange(sides), indexing="ij")
     idx = lambda a, b: (a % rings) * sides + (b % sides)  # noqa: E731
     a, b, c, d = idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)
@@ -181,6 +184,32 @@ def _torus_points(u, v, radius, tube):
     t, p = 2 * np.pi * np.asarray(u), 2 * np.pi * np.asarray(v)
     r = radius + tube * np.cos(p)
     return np.stack([r * np.cos(t), r * np.sin(t), tube * np.sin(p)], axis=-1)
+
+
+def _radii(radius, tube) -> None:
+    for name, value in (("radius", radius), ("tube", tube)):
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+            raise TypeError(f"{name} must be a number, got {type(value).__name__}")
+    if not (0 < tube < radius):
+        raise ValueError(f"need 0 < tube < radius, got tube={tube}, radius={radius}")
+
+
+def _check_size(what: str, V: int, E: int, F: int, extra: int = 0) -> None:
+    """Refuse (MeshError) a shape whose mesh would need more than half the memory.
+
+    The bytes are :func:`pentanb.subdivision.estimate_bytes` of its counts
+    (plus ``extra``), the limit :func:`pentanb.subdivision.default_max_bytes`,
+    as for :func:`pentanb.subdivide`.
+    """
+    from .subdivision import default_max_bytes, estimate_bytes
+
+    limit = default_max_bytes()
+    need = estimate_bytes(V, E, F) + extra
+    if need > limit:
+        raise MeshError(
+            f"{what} would build a mesh of {F:,} faces ({V:,} vertices, {E:,} edges) needing "
+            f"about {need:,} bytes, over the limit of {limit:,} bytes (half the physical memory)"
+        )
 
 
 def _grid_size(rings, sides):
@@ -211,9 +240,27 @@ def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8, side
     """
     if isinstance(genus, bool) or not isinstance(genus, (int, np.integer)) or genus < 1:
         raise ValueError(f"genus must be an integer >= 1, got {genus!r}")
+    if base is not None and not isinstance(base, Mesh):
+        raise TypeError(f"base must be a pentanb.Mesh (a torus) or None, got {type(base).__name__}")
     if base is None:
         base = torus(rings, sides)
+    elif base.genus != 1 or base.n_components != 1:
+        raise ValueError(
+            f"base must be a connected torus (genus 1): a chain of {genus} copies of a mesh of "
+            f"genus {base.genus} with {base.n_components} component(s) does not have genus {genus}"
+        )
     genus = int(genus)
+    # each copy glued on drops two faces and shares the corners of one; the chain is
+    # built face by face in Python, about 500 bytes a face on top of the arrays
+    k = int(base.face_sizes[np.argmax(base.face_centroids[:, 0])])
+    V, E, F = base.n_vertices, base.n_edges, base.n_faces
+    _check_size(
+        f"genus_surface({genus})",
+        genus * V - (genus - 1) * k,
+        genus * E - (genus - 1) * k,
+        genus * F - 2 * (genus - 1),
+        extra=500 * genus * F,
+    )
     if genus == 1:
         return base
     faces = base.faces
@@ -313,28 +360,77 @@ def hard_edged_cube(inset: float = 0.8) -> Mesh:
     """A cube with hard edges: each face a 3x3 grid whose outer rows are thin.
 
     The planes ``+-inset`` cut every face into a big central quad, four
-    strips along the edges and four small corner squares (54 quads): with
-    the default inset, the sharp-edged cube of Figures 1 and 8, whose
-    4-valent grid vertices make the (4, 4) regions that become 4.3.3.4.3
-    after pentagonalization.  Figure 11 uses ``inset=1/3``: every face an
-    even 3x3 grid.
+    strips along the edges and four small corner squares (54 quads).  This
+    package's reading of the cube of Figures 1 and 8 (the paper does not
+    describe its cube): the thin strips keep the edges hard under the
+    duals, and the 4-valent grid vertices make the (4, 4) regions that
+    become 4.3.3.4.3 after pentagonalization.  ``inset=1/3`` gives
+    :func:`box` ``(3)``.
 
     Parameters
     ----------
     inset : float in (0, 1)
         Where the edge loops sit; closer to 1 keeps the edges harder.
     """
+    if isinstance(inset, bool) or not isinstance(inset, (int, float, np.integer, np.floating)):
+        raise TypeError(f"inset must be a number in (0, 1), got {type(inset).__name__}")
+    if not 0 < inset < 1:
+        raise ValueError(
+            f"inset must be in (0, 1), got {inset!r}: 0 and 1 give faces of no area with "
+            "doubled vertices, values outside fold faces inward"
+        )
     m = voxels(np.ones((3, 3, 3), dtype=bool))
     coord = np.array([-1.0, -inset, inset, 1.0])
     return m.with_vertices(coord[np.rint(m.vertices).astype(int)])
 
 
+def box(cells: int = 3) -> Mesh:
+    """The cube ``[-1, 1]^3`` with every face an even ``cells x cells`` grid of quads.
+
+    The boxes of the lateral-artifact study (Section 1; issue 8): their 12
+    edges are straight and every grid line meets them at the same spacing
+    ``2 / cells``.  ``box(1)`` is :func:`cube` (numbered differently).
+
+    Parameters
+    ----------
+    cells : int, >= 1
+
+    Returns
+    -------
+    Mesh
+        ``6 cells^2`` quads, ``6 cells^2 + 2`` vertices, genus 0.
+    """
+    if isinstance(cells, bool) or not isinstance(cells, (int, np.integer)) or cells < 1:
+        raise ValueError(f"cells must be an integer >= 1, got {cells!r}")
+    n = int(cells)
+    m = voxels(np.ones((n, n, n), dtype=bool))
+    return m.with_vertices(m.vertices * (2.0 / n) - 1.0)
+
+
+def rabbit() -> Mesh:
+    """An irregular low-polygon rabbit: the initial mesh of Figure 12.
+
+    172 vertices and 231 faces (136 triangles, 81 quadrilaterals, 14
+    pentagons), vertex valences 3 to 7, closed, genus 0, about 2.7 units
+    long.  The paper's model (by Esan Mandal) is not available; this one is
+    built by :mod:`pentanb.data.make_rabbit` (a star-shaped union of
+    ellipsoids, triangulated and partly merged into larger faces) and
+    shipped as ``pentanb/data/rabbit.obj`` (read here with numpy only).
+    """
+    from importlib import resources
+
+    from .io import read_obj
+
+    with resources.as_file(resources.files("pentanb.data") / "rabbit.obj") as path:
+        return read_obj(path)
+
+
 def animal() -> Mesh:
-    """A low-poly rabbit of unit cubes standing in for Figure 12's model.
+    """A voxel rabbit: 178 unit-cube quads (valences 3 to 5) scaled into [-1, 1]^3.
 
     Genus 0 with hard features: a body, four legs, a head with a snout, two
-    long ears and a tail (178 quads; valences 3 to 5), scaled into
-    [-1, 1]^3.
+    long ears and a tail.  Figure 12 used it before :func:`rabbit`; it stays
+    as a quads-only shape with hard edges.
     """
     occ = np.zeros((11, 5, 10), dtype=bool)
     occ[2:7, 1:4, 2:5] = True  # body
@@ -356,6 +452,7 @@ SHAPES: dict[str, Callable[[], Mesh]] = {
     "tetrahedron": tetrahedron,
     "cube": cube,
     "hard_cube": hard_edged_cube,
+    "box": box,
     "octahedron": octahedron,
     "dodecahedron": dodecahedron,
     "icosahedron": icosahedron,
@@ -364,6 +461,7 @@ SHAPES: dict[str, Callable[[], Mesh]] = {
     "double_torus": double_torus,
     "hexagonal_genus2": lambda: hexagonal_surface(2),
     "genus3": lambda: genus_surface(3),
+    "rabbit": rabbit,
     "animal": animal,
 }
 

@@ -30,10 +30,11 @@ built: the check takes microseconds whatever the number of iterations.
 from __future__ import annotations
 
 import math
-import numbers
 import os
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+
+import numpy as np
 
 from .mesh import Mesh, MeshError
 from .schemes._build import check_count, check_mesh
@@ -96,6 +97,8 @@ _AFTER: dict[str, Callable[[int, int], Kind]] = {
 
 def _kind_after(s: Scheme, kind: Kind, duals: int) -> Kind:
     """The kind of the mesh after one iteration (the duals swap faces and vertices)."""
+    if s.name not in _AFTER:  # a Conway string: its kind is not tracked
+        return (0, 0)
     k, d = _AFTER[s.name](*kind)
     return (d, k) if duals % 2 else (k, d)
 
@@ -232,7 +235,7 @@ def predict_counts(
     s = get_scheme(scheme)
     if not isinstance(s, Scheme):
         raise ValueError("counts can only be predicted for a registered scheme")
-    counts = _as_counts(counts)
+    counts = _as_counts(counts, "predict_counts")
     iterations = check_count(iterations, "iterations")
     duals = check_count(duals, "duals")
     _guard(counts, s, iterations, duals, _limit(max_bytes))
@@ -282,9 +285,9 @@ def max_iterations(
         0 when even one iteration would be too large.
     """
     counts = (
-        _as_counts(mesh_or_counts)
-        if isinstance(mesh_or_counts, tuple)
-        else _vef(check_mesh(mesh_or_counts, "max_iterations"))
+        _vef(mesh_or_counts)
+        if isinstance(mesh_or_counts, Mesh)
+        else _as_counts(mesh_or_counts, "max_iterations")
     )
     s = get_scheme(scheme)
     if not isinstance(s, Scheme):
@@ -293,7 +296,7 @@ def max_iterations(
     cap = check_count(cap, "cap")
     limit = _limit(max_bytes)
     V, E, F = counts
-    kind = (0, 0) if isinstance(mesh_or_counts, tuple) else _kind_of(mesh_or_counts)
+    kind = _kind_of(mesh_or_counts) if isinstance(mesh_or_counts, Mesh) else (0, 0)
     for k in range(cap):
         need = _iteration_bytes(s, (V, E, F), duals, later=k > 0, kind=kind)
         V2, E2, F2 = s.counts(V, E, F)
@@ -307,17 +310,46 @@ def max_iterations(
     return cap
 
 
+def _as_counts(counts: object, caller: str) -> Counts:
+    """``(V, E, F)`` from a tuple, list or array of three non-negative integers.
+
+    Raises
+    ------
+    TypeError
+        Neither a Mesh nor a sequence (the message names ``caller``).
+    ValueError
+        Not three non-negative integers.
+    """
+    if isinstance(counts, (str, bytes)) or not isinstance(counts, (Sequence, np.ndarray)):
+        what = "a pentanb.Mesh or its counts" if caller == "max_iterations" else "counts"
+        raise TypeError(f"{caller} expects {what} (V, E, F), got {type(counts).__name__}")
+    if len(counts) != 3:
+        raise ValueError(f"counts must be (V, E, F), three numbers; got {len(counts)}")
+    V, E, F = (check_count(x, name) for x, name in zip(counts, "VEF"))
+    return V, E, F
+
+
+def _as_limit(max_bytes: object) -> float:
+    """``max_bytes`` as a number of bytes (``float("inf")``: no limit).
+
+    Raises
+    ------
+    TypeError
+        Not a number.
+    ValueError
+        NaN or not positive.
+    """
+    if isinstance(max_bytes, bool) or not isinstance(
+        max_bytes, (int, float, np.integer, np.floating)
+    ):
+        raise TypeError(f"max_bytes must be a number of bytes, got {type(max_bytes).__name__}")
+    if not max_bytes > 0:  # NaN too
+        raise ValueError(f"max_bytes must be a positive number of bytes, got {max_bytes!r}")
+    return float(max_bytes) if np.isinf(max_bytes) else int(max_bytes)
+
+
 def _vef(mesh: Mesh) -> Counts:
     return mesh.n_vertices, mesh.n_edges, mesh.n_faces
-
-
-def _as_counts(counts: object) -> Counts:
-    if not isinstance(counts, tuple) or len(counts) != 3:
-        raise TypeError(f"counts must be a tuple (V, E, F), got {counts!r}")
-    for name, c in zip("VEF", counts):
-        if isinstance(c, bool) or not isinstance(c, numbers.Integral) or c < 0:
-            raise ValueError(f"{name} must be a non-negative integer, got {c!r}")
-    return int(counts[0]), int(counts[1]), int(counts[2])
 
 
 def estimate_bytes(
@@ -368,6 +400,12 @@ def _iteration_bytes(
 ) -> int:
     """Peak bytes of one iteration on a mesh of ``counts`` (``later``: built by this call)."""
     V, E, F = counts
+    if _model_name(s, counts) not in MEMORY_MODEL:
+        # a scheme written in Conway notation: no calibrated model, so the
+        # callable schemes' bound per output edge (their largest mesh)
+        V2, E2, _ = s.counts(V, E, F)
+        wide = 2 if _itemsize(max(V2, V), 2 * E2) == 8 else 1
+        return math.ceil(_FIXED + wide * CALLABLE_BYTES_PER_EDGE * max(E2, E))
     step, hold = MEMORY_MODEL[_model_name(s, counts)][min(duals, 2)]
     x = regressors(counts, s, kind)
     stepped = sum(a * b for a, b in zip(step, x))
@@ -409,18 +447,8 @@ def _model_name(s: Scheme, counts: Counts) -> str:
 
 
 def _limit(max_bytes: object) -> float:
-    """``max_bytes`` checked: None -> the default; inf -> no limit (any other float or int)."""
-    if max_bytes is None:
-        return float(default_max_bytes())
-    if isinstance(max_bytes, bool) or not isinstance(max_bytes, numbers.Real):
-        raise TypeError(
-            f"max_bytes must be a number of bytes (or None, or float('inf') for no limit), "
-            f"got {type(max_bytes).__name__}"
-        )
-    value = float(max_bytes)
-    if math.isnan(value) or value < 0:
-        raise ValueError(f"max_bytes must be a non-negative number of bytes, got {max_bytes!r}")
-    return value
+    """``max_bytes`` checked: None -> the default; ``float("inf")`` -> no limit."""
+    return float(default_max_bytes()) if max_bytes is None else float(_as_limit(max_bytes))
 
 
 def _readable(n: float) -> str:
@@ -573,7 +601,10 @@ def subdivide(
         before = _vef(mesh)
         out = s(mesh, **options)
         if not isinstance(out, Mesh):
-            raise TypeError(f"scheme {name!r} returned {type(out).__name__}, not a pentanb.Mesh")
+            raise TypeError(
+                f"scheme {name!r} returned {type(out).__name__}, not a pentanb.Mesh "
+                "(a callable scheme maps a Mesh to a Mesh)"
+            )
         mesh = out
         if i == 0 and not isinstance(s, Scheme) and iterations > 1:
             _guard_callable(name, before, _vef(mesh), iterations, duals, limit)

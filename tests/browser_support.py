@@ -132,10 +132,14 @@ class JupyterLab:
         Copied into the server's root folder (their kernelspec set to
         ``python3``, which is this Python); files beside them (helper
         modules) are copied too.
+    transform : callable, optional
+        Applied to each notebook's JSON (a dict) before it is written there,
+        e.g. to add cells.
     """
 
-    def __init__(self, notebooks, *, startup_timeout: float = 90.0):
+    def __init__(self, notebooks, *, transform=None, startup_timeout: float = 90.0):
         self.notebooks = [Path(p) for p in notebooks]
+        self.transform = transform
         self.startup_timeout = startup_timeout
         self.proc = None
         self.scratch = Path(tempfile.mkdtemp(prefix="pentanb-lab-"))
@@ -150,6 +154,8 @@ class JupyterLab:
                     shutil.copy2(f, self.root / f.name)
         for nb in self.notebooks:
             data = json.loads(nb.read_text())
+            if self.transform is not None:
+                data = self.transform(data)
             data.setdefault("metadata", {})["kernelspec"] = {
                 "name": "python3",
                 "display_name": "Python 3 (ipykernel)",

@@ -298,7 +298,10 @@ def handed_out_arrays(m: Mesh) -> dict[str, np.ndarray]:
                 for p in params
             ):
                 continue  # needs an argument (from_csr, with_vertices, face_means)
-            value = value()
+            try:
+                value = value()
+            except ImportError:
+                continue  # a conversion whose optional package is absent (to_trimesh)
             name += "()"
         collect(name, value)
     return found

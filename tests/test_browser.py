@@ -1,10 +1,14 @@
 """The notebooks and the exported pages in a real browser, as a reader uses them.
 
-* Every notebook of ``notebooks/`` (and the widget notebook of
-  ``tests/notebooks/``) is opened in JupyterLab (``?reset``), all its cells
-  are run, no cell may fail, a pythreejs picture must appear and not be
-  blank (where the notebook draws in 3D), and moving the first slider must
-  change the picture next to it.
+* Every notebook (:data:`notebook_support.NOTEBOOKS`: ``notebooks/`` and the
+  widget notebook of ``tests/notebooks/``) is opened in JupyterLab
+  (``?reset``) with the face guard added first and the control sweep last
+  (see :mod:`notebook_support`).  Its own cells are run: none may fail, no
+  widget may fail to display, a pythreejs picture must not be blank, and
+  moving a slider must change the picture next to it.  Then the sweep cell
+  moves every control to both ends in the same kernel.  This is the
+  notebook's one execution of the run (``tests/test_notebooks.py`` skips the
+  notebooks executed here).
 * A page written by :func:`pentanb.export_html` (offline) opens in Chromium
   with the network switched off, loads nothing but itself, shows the mesh,
   and its slider changes the picture without a kernel.
@@ -19,7 +23,6 @@ under CI (``CI=true``), where that is a failure.  Screenshots are saved in
 
 from __future__ import annotations
 
-import re
 import sys
 import time
 from pathlib import Path
@@ -28,18 +31,17 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import browser_support as bs
+import notebook_support as ns
+
+pytestmark = pytest.mark.browser
 
 ROOT = bs.ROOT
-NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb")) + sorted(
-    (ROOT / "tests" / "notebooks").glob("*.ipynb")
-)
+NOTEBOOKS = ns.NOTEBOOKS
 
-#: Seconds a notebook may take to run all its cells.
-RUN_TIMEOUT = 180
+#: Seconds a notebook may take to run its cells, and the sweep.
+RUN_TIMEOUT = 240
 #: Seconds to wait for a picture to appear or to change.
 DRAW_TIMEOUT = 45
-
-DRAWS_3D = re.compile(r"pentanb\.(view|explore|step_through)\(|pythreejs|\bview\(|explore\(")
 
 
 @pytest.fixture(scope="module")
@@ -60,7 +62,7 @@ def artifacts(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def lab(browser):
-    with bs.JupyterLab(NOTEBOOKS) as server:
+    with bs.JupyterLab(NOTEBOOKS, transform=ns.instrumented) as server:
         yield server
 
 
@@ -141,12 +143,14 @@ JS_READY = """() => {
             && w.content.widgets.length && w.context && w.context.isReady);
 }"""
 
-JS_RUN_ALL = """async () => {
+#: Run every cell above the last one (the sweep), or only the last one.
+JS_RUN = """async (last) => {
   const app = window.jupyterapp;
   const w = app.shell.currentWidget;
   await w.sessionContext.ready;
   window.__pentanbRun = null;
-  app.commands.execute('notebook:run-all-cells').then(
+  w.content.activeCellIndex = w.content.widgets.length - 1;
+  app.commands.execute(last ? 'notebook:run-cell' : 'notebook:run-all-above').then(
       ok => { window.__pentanbRun = {ok: ok}; },
       err => { window.__pentanbRun = {ok: false, error: String(err)}; });
   const k = w.sessionContext.session && w.sessionContext.session.kernel;
@@ -159,23 +163,56 @@ JS_DONE = """() => {
   return window.__pentanbRun !== null && k && k.status === 'idle';
 }"""
 
-JS_RESULT = """() => {
+#: Errors, cells not run (up to ``upto``), output types, and the last cell's stdout.
+JS_RESULT = """(upto) => {
   const w = window.jupyterapp.shell.currentWidget;
-  const errors = [], missing = [];
+  const errors = [], missing = [], mimetypes = new Set();
+  let last = '';
   w.content.widgets.forEach((c, i) => {
     if (c.model.type !== 'code') return;
-    if (c.model.sharedModel.getSource().trim() && c.model.executionCount === null)
+    if (i < upto && c.model.sharedModel.getSource().trim() && c.model.executionCount === null)
       missing.push(i);
-    for (const o of c.model.outputs.toJSON())
+    for (const o of c.model.outputs.toJSON()) {
       if (o.output_type === 'error') errors.push(`cell ${i}: ${o.ename}: ${o.evalue}`);
+      for (const m of Object.keys(o.data || {})) mimetypes.add(m);
+      if (i === w.content.widgets.length - 1 && o.output_type === 'stream'
+          && o.name === 'stdout')
+        last += Array.isArray(o.text) ? o.text.join('') : o.text;
+    }
   });
-  return {run: window.__pentanbRun, errors: errors, missing: missing};
+  return {run: window.__pentanbRun, errors: errors, missing: missing,
+          mimetypes: [...mimetypes], cells: w.content.widgets.length, last: last};
 }"""
 
 JS_SHUTDOWN = """async () => {
   const w = window.jupyterapp.shell.currentWidget;
   if (w && w.sessionContext) await w.sessionContext.shutdown();
 }"""
+
+#: What the notebook must have shown, by output type (as tests/test_notebooks.py).
+VISUAL_MIMETYPES = ("image/png", "image/svg+xml", "application/vnd.jupyter.widget-view+json")
+
+
+def _run(page, last: bool, name: str) -> dict:
+    kernel = page.evaluate(JS_RUN, last)
+    assert kernel, f"{name}: the notebook got no kernel"
+    page.wait_for_function(JS_DONE, timeout=RUN_TIMEOUT * 1000, polling=500)
+    cells = page.evaluate(JS_RESULT, 10**6)["cells"]
+    result = page.evaluate(JS_RESULT, cells if last else cells - 1)
+    assert not result["errors"], f"{name}: cells failed: {result['errors']}"
+    assert result["run"]["ok"], f"{name}: run failed: {result['run']}"
+    assert not result["missing"], f"{name}: cells not run: {result['missing']}"
+    return result
+
+
+def _movable_slider(cell):
+    """The first slider of a cell that is not pinned (min < max), or None."""
+    handles = cell.locator(".jp-OutputArea-output .widget-slider .noUi-handle")
+    for i in range(handles.count()):
+        h = handles.nth(i)
+        if h.get_attribute("aria-valuemin") != h.get_attribute("aria-valuemax"):
+            return h
+    return None
 
 
 @pytest.mark.parametrize("notebook", NOTEBOOKS, ids=[p.name for p in NOTEBOOKS])
@@ -187,18 +224,18 @@ def test_notebook_runs_and_draws_in_jupyterlab(notebook, browser, lab, artifacts
     try:
         page.goto(f"{lab.url}/lab/tree/{notebook.name}?reset")
         page.wait_for_function(JS_READY, timeout=90_000)
-        kernel = page.evaluate(JS_RUN_ALL)
-        assert kernel, "the notebook got no kernel"
-        page.wait_for_function(JS_DONE, timeout=RUN_TIMEOUT * 1000, polling=500)
-        result = page.evaluate(JS_RESULT)
+        result = _run(page, last=False, name=notebook.name)
         page.screenshot(path=str(artifacts / f"{stem}-run.png"), full_page=True)
-        assert not result["errors"], f"{notebook.name}: cells failed: {result['errors']}"
-        assert result["run"]["ok"], f"{notebook.name}: run-all failed: {result['run']}"
-        assert not result["missing"], f"{notebook.name}: cells not run: {result['missing']}"
         t_run = time.monotonic() - t0
+        drawn = set(result["mimetypes"]).intersection(VISUAL_MIMETYPES)
+        assert drawn, f"{notebook.name}: nothing drawn (output types {result['mimetypes']})"
+        failed = page.locator("text=Error displaying widget")
+        assert not failed.count(), f"{notebook.name}: a widget failed to display"
 
-        # a pythreejs picture, not blank
-        if DRAWS_3D.search(notebook.read_text()):
+        # every pythreejs picture shown: the first one is not blank
+        pictures = page.locator(".jupyter-threejs")
+        n_pictures = pictures.count()
+        if n_pictures:
             renderer = page.locator(".jupyter-threejs >> visible=true").first
             renderer.wait_for(timeout=DRAW_TIMEOUT * 1000)
             png, last = _wait_picture(renderer)
@@ -206,36 +243,49 @@ def test_notebook_runs_and_draws_in_jupyterlab(notebook, browser, lab, artifacts
                 (artifacts / f"{stem}-3d.png").write_bytes(last)
             assert png, f"{notebook.name}: the pythreejs picture stayed blank"
 
-        # move the first slider: the picture beside it changes
+        # move a slider: the picture beside it changes
         moved = False
         cells = page.locator(".jp-Cell").filter(
             has=page.locator(".jp-OutputArea-output .widget-slider")
         )
-        if cells.count():
-            cell = cells.first
-            slider = cell.locator(".jp-OutputArea-output .widget-slider").first
+        for c in range(cells.count()):
+            cell = cells.nth(c)
+            handle = _movable_slider(cell)
             target = None
             for selector in (
                 ".jupyter-threejs >> visible=true",
-                ".jupyter-widgets-output-area >> visible=true",
+                ".widget-output >> visible=true",  # an Output widget (ipywidgets 8)
             ):
                 candidate = cell.locator(selector).first
                 if candidate.count():
                     target = candidate
                     break
-            if target is not None:
-                target.scroll_into_view_if_needed()
-                png, _ = _wait_picture(target)
-                before = png or target.screenshot()
-                after = _move_slider(slider.locator(".noUi-handle").first, target, before)
-                (artifacts / f"{stem}-slider.png").write_bytes(target.screenshot())
-                assert after, f"{notebook.name}: moving the slider did not change the picture"
-                moved = True
-        if notebook.parent.name == "notebooks" and notebook.parent.parent.name == "tests":
-            assert moved, f"{notebook.name}: found no slider beside a picture"
+            if handle is None or target is None:
+                continue
+            target.scroll_into_view_if_needed()
+            png, _ = _wait_picture(target)
+            before = png or target.screenshot()
+            after = _move_slider(handle, target, before)
+            (artifacts / f"{stem}-slider.png").write_bytes(target.screenshot())
+            assert after, f"{notebook.name}: moving the slider did not change the picture"
+            moved = True
+            break
+        assert moved, f"{notebook.name}: found no slider beside a picture"
+
+        # the sweep, in the same kernel: every control to both ends
+        t_sweep = time.monotonic()
+        result = _run(page, last=True, name=notebook.name)
+        sweep = ns.sweep_result(result["last"])
+        summary = ns.check_sweep(notebook.name, sweep, result["last"])
+        assert n_pictures or not sweep["renderers"], (
+            f"{notebook.name}: the kernel made {sweep['renderers']} 3D views, the page shows none"
+        )
         bad = _bad_console(messages)
         assert not bad, f"{notebook.name}: console errors: {bad}"
-        print(f"\n{notebook.name}: ran in {t_run:.1f} s, checked in {time.monotonic() - t0:.1f} s")
+        print(
+            f"\n{summary}; ran in {t_run:.1f} s, swept in {time.monotonic() - t_sweep:.1f} s, "
+            f"checked in {time.monotonic() - t0:.1f} s"
+        )
     finally:
         try:
             page.evaluate(JS_SHUTDOWN)

@@ -120,3 +120,47 @@ def test_unknown_figure_number_is_refused(capsys, tmp_path):
 def test_cli_uses_only_public_names_of_figures():
     source = inspect.getsource(pentanb.cli)
     assert "figures._" not in source
+
+
+def _swap_claims(monkeypatch, name, claims):
+    import dataclasses
+
+    from pentanb import figures
+
+    spec = figures.FIGURES[name]
+    monkeypatch.setitem(
+        figures.FIGURES, name, dataclasses.replace(spec, claims=lambda meshes=None: claims)
+    )
+
+
+def test_a_finding_as_recorded_exits_0(monkeypatch, tmp_path, capsys):
+    from pentanb.figures import FAILS, claim
+
+    finding = claim.exact("fig02.finding", "Section 3", "words", "x", 1, 2, recorded=FAILS)
+    _swap_claims(monkeypatch, "fig02", [finding])
+    assert main(["figures", "--out", str(tmp_path), "--only", "2"]) == 0
+    out = capsys.readouterr().out
+    assert "[does not hold as stated] fig02.finding  FINDING" in out
+    assert out.splitlines()[-1].endswith("(findings); all as recorded")
+
+
+def test_a_regression_exits_1(monkeypatch, tmp_path, capsys):
+    from pentanb.figures import claim
+
+    regressed = claim.exact("fig02.regressed", "Section 3", "words", "x", 1, 2)
+    _swap_claims(monkeypatch, "fig02", [regressed])
+    assert main(["figures", "--out", str(tmp_path), "--only", "2"]) == 1
+    last = capsys.readouterr().out.splitlines()[-1]
+    assert (
+        "1 REGRESSIONS: fig02.regressed (recorded: holds, measured: does not hold as stated)"
+        in last
+    )
+
+
+def test_a_finding_that_starts_to_hold_is_a_regression_too(monkeypatch, tmp_path, capsys):
+    from pentanb.figures import FAILS, claim
+
+    now_holds = claim.exact("fig02.was_a_finding", "Section 3", "words", "x", 1, 1, recorded=FAILS)
+    _swap_claims(monkeypatch, "fig02", [now_holds])
+    assert main(["figures", "--out", str(tmp_path), "--only", "2"]) == 1
+    assert "REGRESSION (recorded: does not hold as stated)" in capsys.readouterr().out

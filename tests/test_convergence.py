@@ -1,7 +1,9 @@
-"""The convergence study (beyond the paper's "visually confirmed G1").
+"""The convergence study (beyond the paper's "visually confirmed G1") and the
+lateral-artifact study (Section 1).
 
-The measures it uses (radius spread, crease angles, edge waviness) are
-tested on exact inputs in :mod:`test_measures`.
+The measures they use (spreads, crease angles, edge profiles) are tested on
+exact inputs in :mod:`test_measures`; the claims built on them are
+falsified in :mod:`test_claims`.
 """
 
 from __future__ import annotations
@@ -12,23 +14,51 @@ import pytest
 import pentanb
 from pentanb import shapes
 from pentanb.analysis import convergence as cv
-from pentanb.analysis import edge_waviness
+from pentanb.analysis import lateral as lt
 
 
 def test_dual_convergence_shape_and_values():
     res = cv.dual_convergence(shapes.tetrahedron(), "pentagonalize", pairs=4)
-    assert list(res.steps) == [1, 2, 3, 4]
-    assert list(res.faces) == [12] * 4
+    assert list(res.steps) == [0, 1, 2, 3, 4]  # 0: the remeshing alone
+    assert list(res.faces) == [12] * 5
     # Figure 7: with every pair of duals the dodecahedron gets rounder
     assert np.all(np.diff(res.radius_spread) < 0)
-    assert res.max_normal_angle.shape == res.mean_normal_angle.shape == (4,)
+    assert np.all(np.diff(res.angle_spread) < 0)
+    # ... but the pentagonalized tetrahedron starts equilateral: edge spread 0
+    assert res.edge_spread[0] == pytest.approx(0.0, abs=1e-12) and res.edge_spread[1] > 0.02
+    for field in ("max_normal_angle", "mean_normal_angle", "crease_at", "crease_elsewhere"):
+        assert getattr(res, field).shape == (5,), field
     assert np.all(res.mean_normal_angle <= res.max_normal_angle)
+
+
+def test_pentagon_preservation_makes_the_tetrahedron_less_round_with_more_duals():
+    # the finding behind convergence.uniform.tetrahedron.preserve_pentagons
+    res = cv.dual_convergence(shapes.tetrahedron(), "preserve_pentagons", pairs=6)
+    assert res.radius_spread[1] < 0.11 and res.radius_spread[6] > 0.25
+    assert res.max_normal_angle[1] < 66 and res.max_normal_angle[6] > 98
 
 
 def test_subdivision_convergence_angles_fall():
     res = cv.subdivision_convergence(shapes.cube(), "pentagonalize", levels=3)
     assert list(res.faces) == [24, 120, 600]
     assert np.all(np.diff(res.max_normal_angle) < 0)
+    assert np.all(np.diff(res.crease_at) < 0) and np.all(np.diff(res.crease_elsewhere) < 0)
+    # the largest crease is the larger of the two
+    assert np.allclose(res.max_normal_angle, np.fmax(res.crease_at, res.crease_elsewhere))
+
+
+def test_extraordinary_vertices():
+    cube = shapes.cube()
+    m = pentanb.subdivide(cube, "pentagonalize", 1, 2)
+    marked = cv.extraordinary(m, cube)
+    assert np.flatnonzero(marked).tolist() == list(range(8))  # the cube's 3-valent corners
+    torus = shapes.torus(8, 6)  # 4-valent everywhere: none
+    assert not cv.extraordinary(pentanb.subdivide(torus, "pentagonalize", 1, 2), torus).any()
+    # pentagon preservation keeps the torus's quads: their corners are marked
+    q = pentanb.subdivide(torus, "preserve_pentagons", 1, 2)
+    marked = cv.extraordinary(q, torus)
+    quads = q.face_sizes[q.halfedge_face] == 4
+    assert np.array_equal(np.flatnonzero(marked), np.unique(q.corners[quads]))
 
 
 def test_options_reach_the_scheme():
@@ -48,15 +78,41 @@ def test_study_covers_both_schemes_on_every_mesh():
     data = cv.study()
     keys = {(m, s) for m in cv.STUDY_MESHES for s in cv.STUDY_SCHEMES}
     assert set(data["pairs"]) == keys and set(data["levels"]) == keys
-    for res in data["levels"].values():
-        assert np.all(np.diff(res.max_normal_angle) < 0)
+    assert cv.STUDY_MESHES["rabbit"] is shapes.rabbit
+    for (m, _), res in data["levels"].items():
+        assert len(res.steps) == (3 if m == "rabbit" else 4)
 
 
-def test_pentagonalization_makes_smaller_waves_than_honeycomb():
-    # Section 1: no lateral artifact on the hard-edged cube of Figure 1
-    from pentanb.shapes import hard_edged_cube
+# ---------------------------------------------------------------------- lateral artifact
+def test_lateral_study_small():
+    data = lt.study(2, ("3 cells",), ("vertex_insertion", "pentagonalize"))
+    assert set(data.amplitude) == {("3 cells", "vertex_insertion"), ("3 cells", "pentagonalize")}
+    vi = data.amplitude["3 cells", "vertex_insertion"]
+    assert vi.shape == (2, 12) and vi.max() < 1e-12  # vertex insertion keeps the edges straight
+    gyro = data.worst("3 cells", "pentagonalize")
+    assert np.all(gyro > 0.01)  # pentagonalization does not (see the lateral claims)
+    x, r = data.profile["3 cells", "pentagonalize"]
+    assert np.all(np.abs(x) <= 1 / 3 + 1e-12) and r.shape == x.shape
 
-    cube = hard_edged_cube()
-    ours = edge_waviness(pentanb.subdivide(cube, "pentagonalize", 1, 2))
-    theirs = edge_waviness(pentanb.subdivide(cube, "honeycomb", 1, 2))
-    assert ours < theirs / 2
+
+def test_lateral_wave_has_the_grid_period_on_every_edge():
+    data = lt.study(2, ("6 cells",), ("pentagonalize",))
+    amp = data.amplitude["6 cells", "pentagonalize"]
+    assert np.ptp(amp, axis=1).max() < 1e-12  # the same on all 12 edges (the cube's symmetry)
+    x, r = data.profile["6 cells", "pentagonalize"]  # level 2 (at level 1: half a cell)
+    assert lt.wavelength(x, r) == pytest.approx(2 / 6, rel=0.02)
+
+
+def test_wavelength_by_hand():
+    x = np.linspace(-1, 1, 401)
+    assert lt.wavelength(x, np.sin(2 * np.pi * x / 0.25)) == pytest.approx(0.25, rel=0.01)
+    assert np.isnan(lt.wavelength(x, np.ones_like(x)))
+
+
+def test_lateral_study_refuses_unknown_names():
+    with pytest.raises(ValueError, match="unknown box"):
+        lt.study(1, ("7 cells",))
+    with pytest.raises(ValueError, match="unknown scheme"):
+        lt.study(1, ("3 cells",), ("gyro",))
+    with pytest.raises(ValueError, match="levels"):
+        lt.study(0)

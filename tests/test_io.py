@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 from helpers import face_lists
 
+import pentanb.io.off
 from pentanb import MeshError, read, shapes, write
 from pentanb.io import read_obj, read_off, write_obj, write_off
 
@@ -105,11 +106,11 @@ def test_write_and_read_with_an_explicit_format(tmp_path, fmt):
         read(path, format=other)
 
 
-@pytest.mark.parametrize("name", ["model.v2", "model", "model.obj.bak", "model.stl"])
+@pytest.mark.parametrize("name", ["model.v2", "model", "model.obj.bak", "model.3mf"])
 def test_write_refuses_an_unknown_suffix_before_writing(tmp_path, name):
     suffix = pathlib.Path(name).suffix
     shown = repr(suffix) if suffix else "no suffix"
-    with pytest.raises(ValueError, match=re.escape(shown) + r".*\.obj, \.off"):
+    with pytest.raises(ValueError, match=re.escape(shown) + r".*\.obj, \.off, \.ply, \.stl"):
         write(shapes.cube(), tmp_path / name)
     assert list(tmp_path.iterdir()) == []
 
@@ -129,13 +130,14 @@ def test_write_refuses_a_format_that_contradicts_the_suffix(tmp_path, call):
     assert list(tmp_path.iterdir()) == []
 
 
-@pytest.mark.parametrize("fmt", ["stl", "", "objx", 3])
+@pytest.mark.parametrize("fmt", ["3mf", "", "objx", 3])
 def test_write_and_read_refuse_an_unknown_format(tmp_path, fmt):
-    with pytest.raises(ValueError, match=r"unknown mesh format .*known formats: obj, off"):
+    known = r"known formats: obj, off, ply, stl"
+    with pytest.raises(ValueError, match=r"unknown mesh format .*" + known):
         write(shapes.cube(), tmp_path / "x.obj", format=fmt)
     assert list(tmp_path.iterdir()) == []
     write(shapes.cube(), tmp_path / "x.obj")
-    with pytest.raises(ValueError, match=r"unknown mesh format .*known formats: obj, off"):
+    with pytest.raises(ValueError, match=r"unknown mesh format .*" + known):
         read(tmp_path / "x.obj", format=fmt)
 
 
@@ -391,7 +393,7 @@ def test_off_non_manifold_raises_the_mesh_message_prefixed_with_the_file(tmp_pat
 
 
 # ====================================================================== file names, failures
-@pytest.mark.parametrize("name", ["mesh.stl", "mesh", "mesh.obj.bak"])
+@pytest.mark.parametrize("name", ["mesh.3mf", "mesh", "mesh.obj.bak"])
 def test_unknown_extension(tmp_path, name):
     path = tmp_path / name
     path.write_text("")
@@ -422,13 +424,12 @@ def test_failed_write_keeps_the_old_file_and_leaves_no_part(tmp_path, monkeypatc
     target = tmp_path / "m.off"
     write(shapes.tetrahedron(), target)
     old = target.read_text()
-    real = pathlib.Path.write_text
 
-    def half_then_fail(self, text, *args, **kwargs):
-        real(self, text[: len(text) // 2], *args, **kwargs)
+    def half_then_fail(fh, vertices, prefix):
+        fh.write(b"1.0 2.0")
         raise OSError("disk full")
 
-    monkeypatch.setattr(pathlib.Path, "write_text", half_then_fail)
+    monkeypatch.setattr(pentanb.io.off, "write_vertices", half_then_fail)
     with pytest.raises(OSError, match="disk full"):
         write(shapes.cube(), target)
     monkeypatch.undo()
@@ -466,3 +467,300 @@ def test_obj_relative_index_before_first_vertex(tmp_path):
     path = write_text(tmp_path / "rel.obj", ["v 0 0 0", "f -1 -2 -3"])
     with pytest.raises(MeshError, match=rf"{esc(path)}:2: face index -2 out of range"):
         read(path)
+
+
+# ====================================================================== paths and options
+@pytest.mark.parametrize("bad", [None, 3, ["x.obj"]])
+def test_read_and_write_refuse_a_non_path(tmp_path, bad):
+    with pytest.raises(TypeError, match=r"read expects a file path \(str or os.PathLike\), got"):
+        read(bad)
+    with pytest.raises(TypeError, match=r"write expects a file path \(str or os.PathLike\), got"):
+        write(shapes.cube(), bad)
+
+
+def test_write_checks_the_mesh_before_the_path(tmp_path):
+    with pytest.raises(TypeError, match=r"write expects a pentanb\.Mesh, got NoneType"):
+        write(None, tmp_path / "x.obj")
+    with pytest.raises(TypeError, match=r"write expects a pentanb\.Mesh, got str"):
+        write("cube", None)
+
+
+def test_options_a_format_does_not_take_are_refused_before_writing(tmp_path):
+    with pytest.raises(TypeError, match=r"write: format 'obj' takes no options; got ascii"):
+        write(shapes.cube(), tmp_path / "x.obj", ascii=True)
+    with pytest.raises(TypeError, match=r"format 'ply' takes ascii, byteorder; got binary"):
+        write(shapes.cube(), tmp_path / "x.ply", binary=True)
+    assert list(tmp_path.iterdir()) == []
+    write(shapes.cube(), tmp_path / "x.obj")
+    with pytest.raises(TypeError, match=r"read: format 'obj' takes no options; got tolerance"):
+        read(tmp_path / "x.obj", tolerance=0.1)
+
+
+def test_a_read_mesh_pickles_and_deep_copies_sealed(tmp_path):
+    import copy
+    import pickle
+
+    from helpers import check_sealed
+
+    write(shapes.dodecahedron(), tmp_path / "d.off")
+    m = read(tmp_path / "d.off")
+    for back in (pickle.loads(pickle.dumps(m)), copy.deepcopy(m)):
+        assert back.vertices.tobytes() == m.vertices.tobytes()
+        assert face_lists(back) == face_lists(m)
+        check_sealed(back)
+
+
+# ====================================================================== encodings
+def test_obj_with_a_utf8_byte_order_mark_keeps_its_first_vertex(tmp_path):
+    # the BOM used to glue itself to the first "v", which was then skipped
+    path = tmp_path / "bom.obj"
+    path.write_bytes(b"\xef\xbb\xbf" + "\n".join(_cube_obj_lines()).encode() + b"\n")
+    m = read(path)
+    assert np.array_equal(m.vertices, shapes.cube().vertices)
+    assert face_lists(m) == face_lists(shapes.cube())
+
+
+def test_off_with_a_utf8_byte_order_mark(tmp_path):
+    path = tmp_path / "bom.off"
+    path.write_bytes(b"\xef\xbb\xbf" + "\n".join(_cube_off_lines()).encode())
+    assert face_lists(read(path)) == face_lists(shapes.cube())
+
+
+def test_latin1_bytes_in_comments_and_names_are_fine(tmp_path):
+    obj = b"# mod\xe8le \xe9t\xe9\no cub\xe9\ng gr\xfcn\nusemtl m\xe9tal\n"
+    obj += "\n".join(_cube_obj_lines()).encode() + b"  # fin \xff\n"
+    (tmp_path / "l.obj").write_bytes(obj)
+    off = b"OFF # \xe9\n" + "\n".join(_cube_off_lines()[1:]).encode() + b" # \xe9\xff\n"
+    (tmp_path / "l.off").write_bytes(off)
+    for name in ("l.obj", "l.off"):
+        assert face_lists(read(tmp_path / name)) == face_lists(shapes.cube())
+
+
+def test_undecodable_bytes_in_a_bad_line_are_shown_replaced(tmp_path):
+    lines = [l.encode() for l in _cube_obj_lines()]
+    lines[3] = b"v 1 \xff\xfe 3"
+    path = tmp_path / "bad.obj"
+    path.write_bytes(b"\n".join(lines) + b"\n")
+    with pytest.raises(MeshError, match=rf"^{esc(path)}:4: bad number in 'v 1 \ufffd\ufffd 3'$"):
+        read(path)
+
+
+@pytest.mark.parametrize("ext", [".obj", ".off"])
+def test_binary_garbage_names_the_file_and_line(tmp_path, ext):
+    path = tmp_path / f"garbage{ext}"
+    rng = np.random.default_rng(1)
+    junk = rng.integers(1, 256, 3000, dtype=np.uint8).tobytes().replace(b"\n", b" ")
+    head = b"OFF\n8 6 12\n" if ext == ".off" else b"# junk\nv 1 2 3\n"
+    path.write_bytes(head + junk + b"\x00\x01\x02\n" + junk)
+    kind = ext[1:].upper()
+    what = r"a NUL byte: a binary file \(or UTF-16 text\), not "
+    with pytest.raises(MeshError, match=rf"^{esc(path)}:3: {what}{kind} text$"):
+        read(path)
+
+
+def test_utf16_text_is_named_as_such(tmp_path):
+    path = tmp_path / "u16.obj"
+    path.write_bytes("\n".join(_cube_obj_lines()).encode("utf-16"))
+    with pytest.raises(MeshError, match=rf"^{esc(path)}:1: a NUL byte: .*UTF-16"):
+        read(path)
+
+
+def test_a_line_too_long_for_a_text_mesh_file(tmp_path, monkeypatch):
+    monkeypatch.setattr(pentanb.io._common, "MAX_LINE_BYTES", 10_000)
+    monkeypatch.setattr(pentanb.io._common, "BLOCK_BYTES", 4096)
+    path = tmp_path / "long.obj"
+    path.write_bytes(b"v 1 2 3\n" + b"v 1 2 3 " * 5000)
+    with pytest.raises(MeshError, match=rf"^{esc(path)}:2: a line longer than 10,000 bytes"):
+        read(path)
+
+
+@pytest.mark.parametrize("newline", [b"\r\n", b"\r", b"\n"])
+@pytest.mark.parametrize("ext", [".obj", ".off"])
+def test_line_endings(tmp_path, ext, newline):
+    lines = _cube_obj_lines() if ext == ".obj" else _cube_off_lines()
+    path = tmp_path / f"c{ext}"
+    path.write_bytes(newline.join(l.encode() for l in lines) + newline)
+    m = read(path)
+    assert face_lists(m) == face_lists(shapes.cube())
+    assert np.array_equal(m.vertices, shapes.cube().vertices)
+
+
+# ====================================================================== large and damaged files
+def _count_blocks(monkeypatch, module):
+    """Count the blocks ``module`` reads (its ``line_blocks`` wrapped)."""
+    seen = []
+    real = module.line_blocks
+
+    def counting(*args, **kwargs):
+        for item in real(*args, **kwargs):
+            seen.append(item[0])
+            yield item
+
+    monkeypatch.setattr(module, "line_blocks", counting)
+    return seen
+
+
+def test_off_with_more_data_than_its_header_fails_at_the_first_extra_line(tmp_path, monkeypatch):
+    # a tetrahedron announced as "4 4 6", followed by 8 MB of a larger mesh
+    lines = ["OFF", "4 4 6", "1 1 1", "1 -1 -1", "-1 1 -1", "-1 -1 1"]
+    lines += ["3 0 1 2", "3 0 3 1", "3 1 3 2", "3 0 2 3"]
+    path = tmp_path / "big.off"
+    with open(path, "wb") as fh:
+        fh.write(("\n".join(lines) + "\n").encode())
+        fh.write(b"3 0 1 2\n" * 1_000_000)
+    monkeypatch.setattr(pentanb.io._common, "BLOCK_BYTES", 1 << 16)
+    seen = _count_blocks(monkeypatch, pentanb.io.off)
+    with pytest.raises(
+        MeshError,
+        match=rf"^{esc(path)}:11: the header says 4 vertices and 4 faces \(8 lines\) but "
+        r"the file has more data lines, from this one on: '3 0 1 2'$",
+    ):
+        read(path)
+    assert len(seen) == 1  # of 123 blocks
+
+
+def test_off_counts_the_file_cannot_hold_fail_at_the_header(tmp_path):
+    path = write_text(tmp_path / "huge.off", ["OFF", "1000000000 2000000000 0", "0 0 0"])
+    with pytest.raises(
+        MeshError,
+        match=rf"^{esc(path)}:2: the header says 1,000,000,000 vertices and 2,000,000,000 "
+        r"faces, more than a file of 34 bytes can hold$",
+    ):
+        read(path)
+
+
+@pytest.mark.parametrize("counts", ["-8 6 12", "8 -6 12", "8", "8.0 6 12"])
+def test_off_bad_counts(tmp_path, counts):
+    lines = _cube_off_lines()
+    lines[1] = counts
+    path = write_text(tmp_path / "bad.off", lines)
+    with pytest.raises(MeshError, match=rf"^{esc(path)}:2: bad counts line '{re.escape(counts)}'$"):
+        read(path)
+
+
+def test_binary_off_is_refused_by_name(tmp_path):
+    path = tmp_path / "b.off"
+    path.write_bytes(b"OFF BINARY\n" + np.array([8, 6, 0], ">i4").tobytes())
+    with pytest.raises(MeshError, match=rf"^{esc(path)}:1: a binary OFF file; only text OFF"):
+        read(path)
+
+
+@pytest.mark.parametrize("block", [64, 200, 1000])
+@pytest.mark.parametrize("ext", [".obj", ".off"])
+def test_small_blocks_give_the_same_mesh(tmp_path, monkeypatch, corpus_mesh, ext, block):
+    path = tmp_path / f"m{ext}"
+    write(corpus_mesh, path)
+    monkeypatch.setattr(pentanb.io._common, "BLOCK_BYTES", block)
+    back = read(path)
+    assert back.vertices.tobytes() == corpus_mesh.vertices.tobytes()
+    assert face_lists(back) == face_lists(corpus_mesh)
+
+
+def test_obj_errors_in_later_blocks_name_their_line(tmp_path, monkeypatch):
+    monkeypatch.setattr(pentanb.io._common, "BLOCK_BYTES", 64)
+    lines = [f"# comment {i}" for i in range(40)] + _cube_obj_lines()
+    lines[45] = "v 1 1 one"
+    path = write_text(tmp_path / "bad.obj", lines)
+    with pytest.raises(MeshError, match=rf"^{esc(path)}:46: bad number in 'v 1 1 one'$"):
+        read(path)
+
+
+def test_obj_relative_and_forward_indices_across_blocks(tmp_path, monkeypatch):
+    monkeypatch.setattr(pentanb.io._common, "BLOCK_BYTES", 48)
+    v = [l for l in cube_v_lines()]
+    # faces first (forward references), then vertices, then relative faces
+    lines = ["f 1 2 4 3", "f 5 7 8 6", "f 1 5 6 2"] + v + ["f -6 -5 -1 -2", "f -8 -6 -2 -4"]
+    lines += ["f 2 6 8 4"]
+    m = read(write_text(tmp_path / "mixed.obj", lines))
+    assert face_lists(m) == [[i - 1 for i in f] for f in CUBE_OBJ_FACES]
+
+
+def test_obj_forward_index_beyond_the_file_names_its_line(tmp_path, monkeypatch):
+    monkeypatch.setattr(pentanb.io._common, "BLOCK_BYTES", 48)
+    lines = ["f 1 2 4 3", "f 5 7 8 6", "f 1 5 6 12"] + _cube_obj_lines()
+    path = write_text(tmp_path / "bad.obj", lines)
+    with pytest.raises(
+        MeshError, match=rf"^{esc(path)}:3: face index 12 out of range \(8 vertices in the file\)$"
+    ):
+        read(path)
+
+
+@pytest.mark.parametrize(
+    "token, message",
+    [
+        ("9223372036854775808", "face index 9223372036854775808 out of range"),
+        ("18446744073709551616", "face index 18446744073709551616 out of range"),
+        ("-9223372036854775809", "face index -9223372036854775809 out of range"),
+        ("1.5", "bad face index '1.5'"),
+        ("1e3", "bad face index '1e3'"),
+        ("/2/3", "bad face index '/2/3'"),
+    ],
+)
+def test_obj_face_indices_no_mesh_can_have(tmp_path, token, message):
+    lines = _cube_obj_lines()
+    lines[9] = f"f 1 3 {token} 5"
+    path = write_text(tmp_path / "bad.obj", lines)
+    with pytest.raises(MeshError, match=rf"^{esc(path)}:10: {re.escape(message)}"):
+        read(path)
+
+
+@pytest.mark.parametrize("token", ["9223372036854775808", "18446744073709551616", "-1"])
+def test_off_face_indices_out_of_range_are_reported_as_written(tmp_path, token):
+    lines = _cube_off_lines()
+    lines[12] = f"4 0 1 {token} 2"
+    path = write_text(tmp_path / "bad.off", lines)
+    with pytest.raises(
+        MeshError, match=rf"^{esc(path)}:13: face index {token} out of range \(8 vertices\)$"
+    ):
+        read(path)
+
+
+def _odd_but_valid_obj() -> list[str]:
+    v = [
+        "v\t-1 -1 -1",
+        "  v -1 -1 1",
+        "v -1 1 -1 1.0",  # w
+        "v -1 1 1 0.5 0.5 0.5",  # colour
+        "v +1e0 -1 -1",
+        "v 1. -1 1  # trailing",
+        "v 1 1 -1.000",
+        "v 1 1 1",
+    ]
+    f = [
+        "f 1/1/1 2/2/2 4/3/3 3/4/4",
+        "f\t5//1 7//1\t8//1 6//1",
+        "  f 1/1 5/2 6/3 2/4  # 1/2/3",
+        "f -6 -5 -1 -2",
+        "f 1 3 7 5",
+        "f 2 6 8 4",
+    ]
+    return ["# odd", "mtllib x.mtl", "vn 0 0 1", "vt 0.5 0.5"] + v + ["usemtl a", "s off"] + f
+
+
+def test_odd_but_valid_obj_lines_read_alike_on_the_fast_and_the_slow_path(tmp_path, monkeypatch):
+    path = write_text(tmp_path / "odd.obj", _odd_but_valid_obj())
+    fast = read(path)
+    monkeypatch.setattr(pentanb.io.obj, "_fast", lambda *args: None)
+    slow = read(path)
+    assert face_lists(fast) == face_lists(slow) == [[i - 1 for i in f] for f in CUBE_OBJ_FACES]
+    assert fast.vertices.tobytes() == slow.vertices.tobytes()
+    assert np.array_equal(fast.vertices, shapes.cube().vertices)
+
+
+def test_off_colour_columns_ints_and_floats(tmp_path):
+    lines = _cube_off_lines()
+    lines[0] = "COFF"
+    lines[2] += " 255 0 0 255"  # one vertex with a colour (the others without)
+    lines[10] += " 0.5 0.25 1.0"  # a face colour as floats
+    lines[11] += " 255 255 0"
+    m = read(write_text(tmp_path / "c.off", lines))
+    assert face_lists(m) == face_lists(shapes.cube())
+    assert np.array_equal(m.vertices, shapes.cube().vertices)
+
+
+def test_obj_vertices_with_and_without_colours(tmp_path):
+    lines = _cube_obj_lines()
+    lines[0] += " 1 0 0"
+    lines[5] += " 0.5 0.5 0.5"
+    m = read(write_text(tmp_path / "c.obj", lines))
+    assert np.array_equal(m.vertices, shapes.cube().vertices)

@@ -20,6 +20,19 @@ from pentanb.analysis import (
     ray_distances,
     vertex_configurations,
 )
+from pentanb.analysis.measures import (
+    BOX_EDGES,
+    angle_spread,
+    corner_angles,
+    crease_angles,
+    edge_length_spread,
+    edge_lengths,
+    edge_profile,
+    face_planarity,
+    lateral_amplitude,
+    region_geometry,
+    uniformity,
+)
 
 
 # ---------------------------------------------------------------------- small meshes
@@ -234,12 +247,169 @@ def test_edge_waviness_sees_a_bent_edge():
     assert edge_waviness(cube.with_vertices(v)) > 0.02
 
 
+#: The measures ``pentanb.analysis`` re-exports (the later ones are imported from
+#: :mod:`pentanb.analysis.measures`).
+REEXPORTED = (
+    "vertex_configurations",
+    "face_configurations",
+    "canonical_configuration",
+    "configuration_counts",
+    "radius_spread",
+    "normal_angles",
+    "ray_distances",
+    "edge_waviness",
+)
+
+
 def test_analysis_reexports_the_measures_and_old_paths_work():
     from pentanb.analysis import convergence as cv
     from pentanb.analysis import measures
 
-    for name in measures.__all__:
+    for name in REEXPORTED:
         assert getattr(analysis, name) is getattr(measures, name), name
+    for name in measures.__all__:
+        assert callable(getattr(measures, name)) or name == "BOX_EDGES", name
     # the notebooks' import path
     assert cv.radius_spread is radius_spread and cv.edge_waviness is edge_waviness
     assert cv.normal_angles is normal_angles and cv.ray_distances is ray_distances
+
+
+# ---------------------------------------------------------------------- uniformity
+def test_edge_lengths_and_spread_by_hand():
+    cube = shapes.cube()
+    assert np.allclose(edge_lengths(cube), 2.0)
+    assert edge_length_spread(cube) == pytest.approx(0.0, abs=1e-15)
+    # the prism: 6 triangle edges of sqrt(3) (unit circle), 3 vertical edges of 2
+    m = triangular_prism()
+    lengths = np.sort(edge_lengths(m))
+    assert np.allclose(lengths, [3**0.5] * 6 + [2.0] * 3)
+    x = np.array([3**0.5] * 6 + [2.0] * 3)
+    assert edge_length_spread(m) == pytest.approx(x.std() / x.mean(), rel=1e-12)
+    # only the edges of face 0 (a triangle): all equal
+    assert edge_length_spread(m, [0]) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_corner_angles_by_hand():
+    m = square_pyramid()
+    a = corner_angles(m)
+    assert a.shape == (m.n_halfedges,)
+    square = a[m.halfedge_face == 0]
+    assert np.allclose(square, 90.0)
+    # every planar face's angles add up to (n - 2) 180
+    sums = np.bincount(m.halfedge_face, weights=a)
+    assert np.allclose(sums, (m.face_sizes - 2) * 180.0)
+
+
+def test_angle_spread_groups_by_face_size_or_valence():
+    # the prism: triangles 60 degrees, squares 90: each group equal
+    m = triangular_prism()
+    assert angle_spread(m) == pytest.approx(0.0, abs=1e-12)
+    # grouped by valence (all 3-valent) they differ: 6 corners of 60, 12 of 90
+    ang = np.array([60.0] * 6 + [90.0] * 12)
+    assert angle_spread(m, by="valence") == pytest.approx(ang.std() / ang.mean(), rel=1e-9)
+    with pytest.raises(ValueError, match="by must be"):
+        angle_spread(m, by="colour")
+
+
+def test_uniformity_is_zero_on_platonic_solids_and_scale_free():
+    for name in ("tetrahedron", "cube", "dodecahedron", "icosahedron"):
+        u = uniformity(shapes.get(name))
+        assert max(u.values()) < 1e-12, (name, u)
+    m = pentanb.pentagonalize(shapes.cube())
+    big = m.with_vertices(3 * m.vertices + 1)
+    assert uniformity(big) == pytest.approx(uniformity(m))
+
+
+def test_face_planarity_by_hand():
+    cube = shapes.cube()
+    assert np.allclose(face_planarity(cube), 0.0)
+    v = cube.vertices.copy()
+    v[7, 2] += 0.4  # (1, 1, 1) lifted: only the top face bends (the sides hold z)
+    flat = face_planarity(cube.with_vertices(v), "face")
+    assert (flat > 1e-3).sum() == 1 and flat[flat > 1e-3][0] < 0.4 / 2
+    # a twisted square, corners alternately 0.1 above and below z = 0: its
+    # least-squares plane is z = 0, every corner 0.1 from it; its sides ~2 long
+    sq = np.array([[1, 1, 0.1], [-1, 1, -0.1], [-1, -1, 0.1], [1, -1, -0.1]], dtype=float)
+    pyramid = shapes.outward(
+        np.vstack([sq, [[0, 0, -2.0]]]), [[0, 1, 2, 3], [0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]]
+    )
+    got = face_planarity(pyramid, "face")[0]
+    assert got == pytest.approx(0.1 / np.mean(np.linalg.norm(sq - np.roll(sq, -1, 0), axis=1)))
+    with pytest.raises(ValueError, match="relative_to"):
+        face_planarity(cube, "edge")
+
+
+def test_region_geometry_of_a_cuboctahedron():
+    m = cuboctahedron()
+    squares = np.flatnonzero(m.face_sizes == 4)
+    g = region_geometry(m, squares)
+    assert g["faces"] == 6
+    assert g["angle_spread"] == pytest.approx(0.0, abs=1e-12)
+    assert g["planarity"] == pytest.approx(0.0, abs=1e-12)
+    assert g["edge_spread"] == pytest.approx(0.0, abs=1e-12)
+    assert g["angles"] == pytest.approx({4: 90.0})
+    with pytest.raises(ValueError, match="at least one face"):
+        region_geometry(m, [])
+
+
+# ---------------------------------------------------------------------- creases
+def test_crease_angles_at_marked_vertices_and_elsewhere():
+    m = triangular_prism()  # 90 between triangle and squares, 120 between squares
+    c = crease_angles(m, [0])  # vertex 0: one triangle edge pair (90) and a vertical edge (120)
+    assert c["at"] == pytest.approx(120.0) and c["elsewhere"] == pytest.approx(120.0)
+    top = crease_angles(m, np.isin(np.arange(6), [3, 4, 5]))  # the top triangle's corners
+    assert top["at"] == pytest.approx(120.0)
+    # the edges away from the top: the bottom triangle's sides only (90)
+    assert top["elsewhere"] == pytest.approx(90.0)
+    everything = crease_angles(m, np.ones(6, dtype=bool))
+    assert np.isnan(everything["elsewhere"])
+    with pytest.raises(ValueError, match="one entry per vertex"):
+        crease_angles(m, np.ones(3, dtype=bool))
+    with pytest.raises(ValueError, match="out of range"):
+        crease_angles(m, [6])
+
+
+# ---------------------------------------------------------------------- lateral artifact
+def test_edge_profile_of_a_plain_box_is_the_corner_distance():
+    box = shapes.box(4)
+    for edge in BOX_EDGES:
+        x, r = edge_profile(box, edge, 45.0)
+        assert np.all(np.diff(x) >= 0)
+        inside = np.abs(x) < 1 - 1e-9  # (at x = +-1 the plane also cuts the end faces)
+        assert np.allclose(r[inside], 2**0.5)  # the edge itself, sqrt(2) from the axis
+        assert x.min() == pytest.approx(-1.0) and x.max() == pytest.approx(1.0)
+    # at 40 degrees the plane meets the face y = 1 at 1 / cos(40) from the axis
+    x, r = edge_profile(box, (0, 1, 1), 40.0)
+    assert np.allclose(r[np.abs(x) < 1 - 1e-9], 1 / np.cos(np.radians(40)))
+
+
+def test_lateral_amplitude_by_hand():
+    box = shapes.box(6)
+    assert lateral_amplitude(box, 2 / 3).max() < 1e-12
+    # a box twice as big, measured with half = 2: still no wave
+    big = box.with_vertices(2 * box.vertices)
+    assert lateral_amplitude(big, 4 / 3, half=2.0).max() < 1e-12
+    # push the middle grid vertex of one edge inwards along the bisector by d:
+    # the profile at 45 degrees dips by d
+    v = box.vertices.copy()
+    k = int(np.flatnonzero(np.isclose(v, [0, -1, 1]).all(axis=1))[0])  # edge (0, -1, 1)
+    d = 0.01
+    v[k] += d * np.array([0, 1, -1]) / 2**0.5
+    amp = lateral_amplitude(box.with_vertices(v), 2 / 3, angles=(45.0,))
+    edge = BOX_EDGES.index((0, -1, 1))
+    assert amp[edge] == pytest.approx(d, rel=1e-9)
+    assert np.delete(amp, edge).max() < 1e-12
+
+
+def test_lateral_measures_refuse_bad_arguments():
+    box = shapes.box(3)
+    with pytest.raises(ValueError, match="window"):
+        lateral_amplitude(box, 1.5)
+    with pytest.raises(ValueError, match="from 35 to 55"):
+        lateral_amplitude(box, 0.3, angles=(20.0,))
+    with pytest.raises(ValueError, match="from 35 to 55"):
+        edge_profile(box, (0, 1, 1), 80.0)
+    with pytest.raises(ValueError, match="BOX_EDGES"):
+        edge_profile(box, (0, 2, 1))
+    with pytest.raises(ValueError, match="does not cross"):
+        lateral_amplitude(shapes.tetrahedron(), 0.3)

@@ -254,8 +254,9 @@ def test_genus_surface_with_odd_rings():
 
 
 def test_genus_surface_refuses_a_base_whose_end_faces_touch():
+    # a torus of 3 rings: its +x-most and -x-most faces are neighbours
     with pytest.raises(MeshError, match="share a vertex"):
-        shapes.genus_surface(2, base=shapes.tetrahedron())
+        shapes.genus_surface(2, base=shapes.torus(3, 3))
 
 
 # ====================================================================== voxels, animal
@@ -353,3 +354,59 @@ def test_hard_edged_cube_inset():
     assert coords.tolist() == [-1.0, -0.8, 0.8, 1.0]
     even = np.unique(shapes.hard_edged_cube(1 / 3).vertices)
     assert np.allclose(np.diff(even), 2 / 3)
+
+
+# ====================================================================== boxes and the rabbit
+@pytest.mark.parametrize("cells", [1, 2, 3, 6])
+def test_box_counts_and_grid(cells):
+    m = shapes.box(cells)
+    check_valid(m)
+    n = cells
+    assert (m.n_vertices, m.n_faces) == (6 * n * n + 2, 6 * n * n)
+    assert m.face_size_histogram() == {4: 6 * n * n}
+    assert np.allclose(np.unique(m.vertices), np.linspace(-1, 1, n + 1))
+    assert m.volume == pytest.approx(8.0)
+    # a 3-box is the hard-edged cube with inset 1/3
+    if n == 3:
+        assert np.allclose(
+            np.sort(m.vertices, axis=0), np.sort(shapes.hard_edged_cube(1 / 3).vertices, axis=0)
+        )
+
+
+@pytest.mark.parametrize("bad", [0, -2, 2.0, True, "3"])
+def test_box_refuses_bad_sizes(bad):
+    with pytest.raises(ValueError, match="cells must be an integer >= 1"):
+        shapes.box(bad)
+
+
+def test_rabbit_is_an_irregular_low_polygon_model():
+    # issue 8: closed, genus 0, a few hundred faces at most, triangles and
+    # quadrilaterals at least, valences from 3 to 7 or more
+    m = shapes.rabbit()
+    check_valid(m)
+    assert m.genus == 0 and m.n_components == 1 and m.volume > 0
+    assert (m.n_vertices, m.n_edges, m.n_faces) == (172, 401, 231)
+    assert m.face_size_histogram() == {3: 136, 4: 81, 5: 14}
+    assert min(m.valence_histogram()) == 3 and max(m.valence_histogram()) == 7
+    assert shapes.get("rabbit").n_faces == 231
+
+
+def test_rabbit_is_star_shaped_around_its_centre():
+    # every face seen from the centre the builder pushed the directions out from
+    from pentanb.data.make_rabbit import CENTRE
+
+    m = shapes.rabbit()
+    c = m.face_centroids - CENTRE
+    assert np.all(np.einsum("ij,ij->i", m.face_normals, c) > 0)
+
+
+def test_shipped_rabbit_is_what_the_builder_writes(tmp_path):
+    pytest.importorskip("scipy")
+    from importlib import resources
+
+    from pentanb.data import make_rabbit
+
+    out = tmp_path / "rabbit.obj"
+    assert make_rabbit.main([str(out)]) == 0
+    shipped = resources.files("pentanb.data").joinpath("rabbit.obj").read_text()
+    assert out.read_text() == shipped

@@ -340,8 +340,8 @@ def test_too_many_steps_are_refused_with_the_count():
 
 
 @pytest.mark.parametrize("bad", [-1, -0.5, float("nan")])
-def test_max_bytes_must_be_a_non_negative_number(bad):
-    with pytest.raises(ValueError, match="max_bytes must be a non-negative number"):
+def test_max_bytes_must_be_a_positive_number(bad):
+    with pytest.raises(ValueError, match="max_bytes must be a positive number"):
         subdivide(shapes.cube(), "pentagonalize", max_bytes=bad)
 
 
@@ -451,7 +451,7 @@ def test_subdivide_refuses_non_scheme_values(bad):
         lambda: subdivide([[0, 0, 0]]),
         lambda: subdivide("cube", "pentagonalize"),
         lambda: smooth(np.zeros((4, 3)), 0),
-        lambda: pentanb.max_iterations([8, 12, 6], "pentagonalize"),
+        lambda: pentanb.max_iterations("cube", "pentagonalize"),
     ],
 )
 def test_subdivide_smooth_and_max_iterations_refuse_a_non_mesh(call):
@@ -528,3 +528,27 @@ def test_the_memory_model_stays_sensible_far_beyond_its_calibration(name):
                             later,
                             per_edge,
                         )
+
+
+def test_conway_notation_is_a_scheme_name():
+    """Issue 10 item 5: wherever a scheme name is taken, Conway operators are too."""
+    from pentanb.schemes.registry import get_scheme
+
+    s = get_scheme("dg")
+    assert s.name == "dg" and s.formula == "(2E, 5E, V+2E+F)"
+    snub = subdivide(shapes.cube(), "dg", iterations=1, duals=0)
+    assert (snub.n_vertices, snub.n_edges, snub.n_faces) == (24, 60, 38)  # snub cube sC
+    assert get_scheme("k4").formula.endswith(" at most")
+    with pytest.raises(ValueError, match=r"unknown scheme 'pentagonalise'.*Conway operators"):
+        get_scheme("pentagonalise")
+
+
+def test_a_scheme_in_conway_notation_is_guarded_too():
+    # no calibrated model for "dg": the callable schemes' bound per output edge
+    from pentanb import subdivision
+
+    with pytest.raises(MeshError, match=r"^dg iteration \d+ of 1,000,000,000 would build"):
+        subdivide(shapes.cube(), "dg", iterations=10**9)
+    need = subdivision.estimate_bytes(8, 12, 6, "dg", duals=0)
+    assert need >= subdivision.CALLABLE_BYTES_PER_EDGE * 60  # sC has 60 edges
+    assert pentanb.max_iterations(shapes.cube(), "dg", duals=0, max_bytes=need) == 1

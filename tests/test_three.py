@@ -1,13 +1,20 @@
-"""The pythreejs widgets as Python models: buffers, in-place updates, camera, export.
+"""The 3D widgets as Python models: drawings, buffers, in-place updates, camera,
+the explorer, the step-through, the notebooks' panel, export, and the layout of
+``pentanb.viz``.
 
 What the browser shows is checked by ``tests/test_browser.py``; here the
-widget models are checked against the mesh arrays they must carry.
+widget models are checked against the mesh arrays they must carry, and the
+widgets' arguments against what :func:`pentanb.subdivide` refuses.
 """
 
 from __future__ import annotations
 
+import ast
 import json
 import re
+import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -15,10 +22,16 @@ import pytest
 pytest.importorskip("ipywidgets")
 pytest.importorskip("pythreejs")
 
+from helpers import face_lists
+
 import pentanb
 from pentanb import shapes
-from pentanb.viz import html, steps, three
-from pentanb.viz.colors import EDGE_COLOR, _hex_to_rgb, face_rgb
+from pentanb.viz import drawing as drawing_module
+from pentanb.viz import explorer, html, stages, steps, three, widgets
+from pentanb.viz.colors import EDGE_COLOR, face_rgb, hex_to_rgb
+
+ROOT = Path(__file__).resolve().parent.parent
+VIZ = ROOT / "pentanb" / "viz"
 
 
 def arr(attribute):
@@ -26,8 +39,7 @@ def arr(attribute):
 
 
 def mixed_mesh():
-    """Triangles, quads and pentagons in one mesh (a pentagon preservation of a
-    pyramid-like mix)."""
+    """Triangles and pentagons in one mesh (pentagon preservation of a tetrahedron)."""
     return pentanb.preserve_pentagons(shapes.tetrahedron())
 
 
@@ -37,31 +49,49 @@ MESHES = {
     "dodecahedron": shapes.dodecahedron,
     "torus": shapes.torus,
     "mixed": mixed_mesh,
-    "pentagonalized cube": lambda: pentanb.schemes.pentagonalize(shapes.cube()),
+    "pentagonalized cube": lambda: pentanb.pentagonalize(shapes.cube()),
 }
+
+
+def fan(mesh):
+    """Fan triangles and their faces, in plain Python from the face lists."""
+    tris, owner = [], []
+    for f, face in enumerate(face_lists(mesh)):
+        for k in range(len(face) - 2):
+            tris.append([face[0], face[k + 1], face[k + 2]])
+            owner.append(f)
+    return np.array(tris), np.array(owner)
 
 
 def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
     pos = arr(v.face_geometry.attributes["position"])
-    col = arr(v.face_geometry.attributes["color"])
-    index = arr(v.face_geometry.index)
-    assert pos.dtype == np.float32 and col.dtype == np.float32 and index.dtype == np.uint32
-    # one row per corner, face after face
-    np.testing.assert_allclose(pos, mesh.vertices[mesh.corners], rtol=1e-6, atol=1e-6)
-    # the index triangulates every polygon face: the fan of Mesh.fan_triangles
-    tris, tri_face = mesh.fan_triangles()
-    assert index.size == 3 * len(tris)
-    np.testing.assert_allclose(pos[index.reshape(-1, 3)], mesh.vertices[tris], atol=1e-6)
-    # every triangle's corners belong to the face the triangle comes from
-    corner_face = np.repeat(np.arange(mesh.n_faces), mesh.face_sizes)
-    assert (corner_face[index.reshape(-1, 3)] == tri_face[:, None]).all()
-    # each face has the colour of its size, on all its corners
-    np.testing.assert_allclose(col, face_rgb(mesh.face_sizes)[corner_face], atol=1e-6)
+    col = arr(v.face_geometry.attributes["color"]) / 255
+    assert pos.dtype == np.float32 and arr(v.face_geometry.attributes["color"]).dtype == np.uint8
+    assert v.face_geometry.attributes["color"].normalized  # bytes read as [0, 1]
+    assert v.face_geometry.index is None  # three rows per triangle, no index
+    tris, owner = fan(mesh)
+    # every polygon is the fan of triangles from its first corner
+    assert len(pos) == len(col) == 3 * len(tris) == 3 * (len(mesh.corners) - 2 * mesh.n_faces)
+    np.testing.assert_allclose(pos, mesh.vertices[tris].reshape(-1, 3), atol=1e-6)
+    # each triangle has the colour of its face's size, on its three corners
+    sizes = np.array([len(f) for f in face_lists(mesh)])
+    np.testing.assert_array_equal(col, np.repeat(face_rgb(sizes[owner]), 3, axis=0))  # exact
     # edges: both ends of every edge, in the edge colour
     seg = arr(v.edge_geometry.attributes["position"]).reshape(-1, 2, 3)
-    np.testing.assert_allclose(seg, mesh.vertices[mesh.edges], atol=1e-6)
-    ecol = arr(v.edge_geometry.attributes["color"])
-    np.testing.assert_allclose(ecol, np.tile(_hex_to_rgb(EDGE_COLOR), (len(ecol), 1)), atol=1e-6)
+    expected = {
+        tuple(sorted((f[i], f[(i + 1) % len(f)]))) for f in face_lists(mesh) for i in range(len(f))
+    }
+    assert len(seg) == len(expected) == mesh.n_edges
+    np.testing.assert_allclose(
+        np.sort(seg.reshape(len(seg), -1), axis=0),
+        np.sort(mesh.vertices[np.array(sorted(expected))].reshape(len(seg), -1), axis=0),
+        atol=1e-6,
+    )
+    ecol = arr(v.edge_geometry.attributes["color"]) / 255
+    np.testing.assert_array_equal(ecol, np.tile(hex_to_rgb(EDGE_COLOR), (len(ecol), 1)))
+
+
+# -- the view -------------------------------------------------------------------------
 
 
 @pytest.mark.parametrize("name", list(MESHES))
@@ -73,6 +103,15 @@ def test_view_buffers_match_mesh(name):
     assert v.faces.material.flatShading
     assert v.faces.material.vertexColors == "VertexColors"
     assert v.edges.visible and v.wireframe.value
+
+
+def test_check_buffers_fails_on_a_wrong_mesh():
+    v = pentanb.view(shapes.cube())
+    with pytest.raises(AssertionError):
+        check_buffers(v, shapes.tetrahedron())
+    moved = shapes.cube().with_vertices(shapes.cube().vertices * 2)
+    with pytest.raises(AssertionError):
+        check_buffers(v, moved)
 
 
 def test_view_legend_lists_face_sizes_with_their_colours():
@@ -101,6 +140,16 @@ def test_view_camera_sees_the_whole_mesh():
     assert v.camera.near < distance - radius and v.camera.far > distance + radius
 
 
+def test_camera_looks_at_its_target():
+    eye, target = np.array([3.0, -2.0, 1.5]), np.array([0.5, 0.2, -0.1])
+    x, y, z, w = drawing_module.look_at_quaternion(eye, target)
+    # rotate the camera's -z axis by the quaternion: it must point at the target
+    q = np.array([x, y, z])
+    d = np.array([0.0, 0.0, -1.0])
+    rotated = d + 2 * np.cross(q, np.cross(q, d) + w * d)
+    np.testing.assert_allclose(rotated, (target - eye) / np.linalg.norm(target - eye), atol=1e-12)
+
+
 def _scene_objects(obj):
     yield obj
     for child in getattr(obj, "children", ()):
@@ -122,13 +171,34 @@ def test_update_bumps_buffer_versions():
     v = pentanb.view(shapes.cube())
     attrs = [
         v.face_geometry.attributes["position"],
-        v.face_geometry.index,
+        v.face_geometry.attributes["color"],
         v.edge_geometry.attributes["position"],
     ]
     before = [a.version for a in attrs]
     v.update(shapes.tetrahedron())
     after = [a.version for a in attrs]
     assert all(b > a + 1000 for a, b in zip(before, after))
+
+
+@pytest.mark.parametrize(
+    "first, second", [("tetrahedron", "dodecahedron"), ("dodecahedron", "tetrahedron")]
+)
+def test_update_never_leaves_positions_longer_than_colours(first, second):
+    """The position buffer sets how many vertices WebGL reads: growing, the
+    colours are replaced first; shrinking, the positions."""
+    v = pentanb.view(shapes.get(first))
+    attributes = v.face_geometry.attributes
+    lengths = {kind: len(attributes[kind].array) for kind in ("position", "color")}
+    order = []
+    for kind in ("position", "color"):
+        attributes[kind].observe(
+            lambda change, kind=kind: order.append((kind, len(change["new"]))), names="array"
+        )
+    v.update(shapes.get(second))
+    assert sorted(kind for kind, _ in order) == ["color", "position"]
+    for kind, n in order:  # replay the replacements: positions never outnumber colours
+        lengths[kind] = n
+        assert lengths["position"] <= lengths["color"], order
 
 
 def test_edges_can_be_switched_off():
@@ -143,27 +213,26 @@ def test_update_writes_into_the_same_buffers_and_keeps_the_camera():
     a, b = shapes.cube(), pentanb.subdivide(shapes.cube(), "pentagonalize", 1)
     v = pentanb.view(a)
     geometry, position = v.face_geometry, v.face_geometry.attributes["position"]
-    index, renderer = v.face_geometry.index, v.renderer
+    renderer = v.renderer
     v.camera.position = (5.0, -1.0, 2.0)  # the reader orbited
     camera_before = tuple(v.camera.position)
     v.update(b)
     assert v.face_geometry is geometry and v.renderer is renderer
     assert v.face_geometry.attributes["position"] is position
-    assert v.face_geometry.index is index
     assert tuple(v.camera.position) == camera_before
     check_buffers(v, b)
     v.update(a)  # smaller again
     check_buffers(v, a)
 
 
-def test_fan_corner_triangles_matches_mesh_fan_triangles():
-    mesh = mixed_mesh()
-    corner_tris = three.fan_corner_triangles(mesh.offsets)
-    tris, _ = mesh.fan_triangles()
-    np.testing.assert_array_equal(mesh.corners[corner_tris], tris)
+def test_drawing_refuses_what_is_not_a_mesh():
+    with pytest.raises(TypeError, match=r"pentanb\.Mesh or a Drawing, got list"):
+        pentanb.view([[0, 0, 0]])
+    with pytest.raises(TypeError, match=r"drawing\(\) expects a pentanb\.Mesh, got str"):
+        drawing_module.drawing("cube")
 
 
-# -- explorer ----------------------------------------------------------------
+# -- the explorer ------------------------------------------------------------------------
 
 
 def test_explorer_slider_updates_geometry_in_place():
@@ -209,16 +278,14 @@ def test_explorer_accepts_a_mesh_and_refits_on_a_new_shape():
 
 
 def test_explorer_caches_what_a_slider_revisits(monkeypatch):
-    import pentanb.subdivision as sub
-
     calls = []
-    real = sub.subdivide
+    real = explorer.subdivide
 
     def counting(*args, **kwargs):
         calls.append(args[2] if len(args) > 2 else kwargs.get("iterations"))
         return real(*args, **kwargs)
 
-    monkeypatch.setattr(sub, "subdivide", counting)
+    monkeypatch.setattr(explorer, "subdivide", counting)
     e = pentanb.explore("tetrahedron", iterations=2)
     n = len(calls)
     assert n == 2  # level 2 built one iteration at a time, level 1 kept
@@ -228,13 +295,32 @@ def test_explorer_caches_what_a_slider_revisits(monkeypatch):
     assert len(calls) == n + 1  # only level 3 was new, built from level 2
 
 
-def test_explorer_refuses_too_large_with_the_size(monkeypatch):
+def test_explorer_refuses_too_large_with_the_size():
     e = pentanb.explore("cube", iterations=1, max_faces=1000)
     geometry_before = arr(e.view.face_geometry.attributes["position"]).copy()
-    e.iterations.value = 4  # 24 * 5**3 = 3000 faces > 1000
-    assert "3,000 faces" in e.status.value
+    # level 3: 600 pentagons, 1,500 edges, 902 vertices; level 4: 3,000
+    # pentagons with 902 + 3,000 + 600 = 4,502 vertices, so its first dual
+    # has 4,502 faces, the largest step
+    e.iterations.value = 4
+    assert "4,502 faces" in e.status.value and "at iteration 4" in e.status.value
     np.testing.assert_array_equal(arr(e.view.face_geometry.attributes["position"]), geometry_before)
     assert e.progress.layout.visibility == "hidden"
+
+
+def test_explorer_counts_every_step_not_only_the_last():
+    """Pentagonalizing the cube makes 24 pentagons, whose dual has 38 faces,
+    whose dual has 24 again: with 30 faces allowed, the middle step is too
+    large although the result is not."""
+    e = pentanb.explore("cube", iterations=0, max_faces=30)
+    e.iterations.value = 1
+    assert "38 faces" in e.status.value and "at iteration 1" in e.status.value
+    assert e.mesh.n_faces == 6  # still the cube
+
+
+def test_explorer_refuses_a_huge_level_at_once():
+    e = pentanb.explore("cube", iterations=0, max_iterations=10**6, max_faces=1000)
+    with pytest.raises(pentanb.MeshError, match="at iteration 4"):
+        e.mesh_at(10**6)  # stops at the first level too large, builds nothing
 
 
 def test_explorer_shows_subdivides_memory_error():
@@ -252,7 +338,70 @@ def test_explorer_drives_the_progress_bar():
     assert e.progress.layout.visibility == "hidden"
 
 
-# -- step-through --------------------------------------------------------------
+#: (arguments of explore, exception, message): what subdivide refuses, the
+#: explorer refuses too, naming the argument and its range (issue 12, item 7).
+EXPLORE_REFUSALS = [
+    ({"iterations": -1}, ValueError, r"iterations must be an integer in \[0, 5\], got -1"),
+    (
+        {"iterations": 10**9},
+        ValueError,
+        r"iterations must be an integer in \[0, 5\], got 1000000000",
+    ),
+    ({"iterations": 1.5}, TypeError, r"iterations must be an integer in \[0, 5\], got float 1.5"),
+    ({"iterations": 2.0}, TypeError, r"iterations must be an integer in \[0, 5\], got float 2.0"),
+    ({"iterations": "2"}, TypeError, r"iterations must be an integer in \[0, 5\], got str '2'"),
+    ({"iterations": True}, TypeError, r"iterations must be an integer in \[0, 5\], got bool"),
+    ({"duals": -1}, ValueError, r"duals must be an integer in \[0, 4\], got -1"),
+    ({"duals": 5}, ValueError, r"duals must be an integer in \[0, 4\], got 5"),
+    ({"scale": 2}, ValueError, r"scale must be a number in \[0.05, 0.95\], got 2"),
+    ({"scale": 0.0}, ValueError, r"scale must be a number in \[0.05, 0.95\], got 0.0"),
+    ({"scale": "0.5"}, TypeError, r"scale must be a number in \[0.05, 0.95\], got str"),
+    ({"max_iterations": -1}, ValueError, r"max_iterations must be an integer >= 0, got -1"),
+    ({"max_iterations": 2}, ValueError, r"iterations must be an integer in \[0, 2\], got 3"),
+    ({"max_faces": 0}, ValueError, r"max_faces must be an integer >= 1, got 0"),
+    ({"scheme": "pentagonalise"}, ValueError, r"unknown scheme 'pentagonalise'; known schemes"),
+    ({"scheme": pentanb.dual}, TypeError, r"scheme must be the name of a scheme"),
+    ({"mesh": None}, TypeError, r"mesh must be a pentanb.Mesh or a shape name"),
+    ({"mesh": "sphere"}, ValueError, r"unknown shape 'sphere'"),
+]
+
+
+@pytest.mark.parametrize(
+    "kwargs, error, message", EXPLORE_REFUSALS, ids=[str(k) for k, _, _ in EXPLORE_REFUSALS]
+)
+def test_explore_refuses_what_its_controls_cannot_show(kwargs, error, message):
+    kwargs = {"mesh": "cube", **kwargs}
+    if "max_iterations" in kwargs and kwargs["max_iterations"] == 2:
+        kwargs["iterations"] = 3
+    mesh = kwargs.pop("mesh")
+    with pytest.raises(error, match=message):
+        pentanb.explore(mesh, **kwargs)
+
+
+@pytest.mark.parametrize(
+    "call, error, message",
+    [
+        (lambda e: e.mesh_at(-1), ValueError, r"iterations must be an integer in \[0, 5\], got -1"),
+        (lambda e: e.mesh_at(6), ValueError, r"iterations must be an integer in \[0, 5\], got 6"),
+        (lambda e: e.mesh_at(1.0), TypeError, r"iterations must be an integer in \[0, 5\]"),
+        (lambda e: e.static_copy(levels=-1), ValueError, r"levels must be an integer in \[0, 5\]"),
+        (lambda e: e.static_copy(levels="1"), TypeError, r"levels must be an integer in \[0, 5\]"),
+    ],
+    ids=["mesh_at(-1)", "mesh_at(6)", "mesh_at(1.0)", "static_copy(-1)", "static_copy('1')"],
+)
+def test_explorer_methods_refuse_levels_the_slider_cannot_show(call, error, message):
+    e = pentanb.explore("cube", iterations=0)
+    with pytest.raises(error, match=message):
+        call(e)
+
+
+def test_explorer_accepts_its_range_ends():
+    e = pentanb.explore("cube", iterations=0, duals=4, scale=0.95, max_iterations=0)
+    assert (e.iterations.value, e.duals.value, e.scale.value) == (0, 4, 0.95)
+    assert e.mesh_at(0) is e.mesh_at(np.int64(0))
+
+
+# -- the step-through ------------------------------------------------------------
 
 
 @pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
@@ -264,44 +413,53 @@ def test_step_through_stages(scheme, name):
     pre = 3  # input, new points, point sphere / inner copies
     assert len(st.stages) == pre + n_groups + 3
     first, last_group = st.stages[0][1], st.stages[pre + n_groups - 1][1]
-    # the pieces tile the same surface from the first stage on
-    assert first.n_faces == last_group.n_faces
-    # the input's edges only, then all inserted edges at the last group
-    assert len(first.segments) == mesh.n_edges
     result = st.stages[pre + n_groups][1]
     expected = pentanb.SCHEMES[scheme](mesh)
+    E, F, H = mesh.n_edges, mesh.n_faces, len(mesh.corners)
+    # the pieces are the result's faces from the first stage on
+    assert (
+        first.n_faces == last_group.n_faces == (2 * E if scheme == "pentagonalize" else F + 2 * E)
+    )
+    np.testing.assert_allclose(first.vertices, expected.vertices)
+    np.testing.assert_array_equal(first.triangles, fan(expected)[0])
     assert result.n_faces == expected.n_faces
-    inserted = len(last_group.segments) - mesh.n_edges
+    # the input's edges only, then all inserted edges at the last group
+    assert len(first.segments) == E
+    inserted = len(last_group.segments) - E
     if scheme == "pentagonalize":
-        assert inserted == len(mesh.corners)  # one spoke per corner
+        assert inserted == H  # one spoke per corner
         assert last_group.legend == {5: expected.n_faces}
     else:
-        assert inserted == 2 * len(mesh.corners)  # copy edges and spokes
-    # after every group, all pieces are pentagon-coloured at the end
-    np.testing.assert_allclose(
-        last_group.face_colors[-len(mesh.corners) :], face_rgb(np.full(len(mesh.corners), 5))
-    )
+        assert inserted == 2 * H  # copy edges and spokes
+    # every inserted segment is an edge of the result (before its duals)
 
-    # the geometric pieces cover the result's area
-    def area(p, o):
-        return sum(
-            np.linalg.norm(
-                np.cross(
-                    p[o[f] + 1 : o[f + 1] - 1] - p[o[f]],
-                    p[o[f] + 2 : o[f + 1]] - p[o[f]],
-                ),
-                axis=1,
-            ).sum()
-            for f in range(len(o) - 1)
-        )
+    def keys(segments):
+        return {tuple(sorted(map(tuple, np.round(seg, 9)))) for seg in segments}
 
-    expected_area = area(expected.vertices[expected.corners], expected.offsets)
-    assert (
-        abs(area(last_group.positions, last_group.offsets) - expected_area)
-        < 1e-9 * max(expected_area, 1) + 1e-9
-        or scheme == "preserve_pentagons"
-        or name == "mixed"
-    )
+    assert keys(last_group.segments[E:]) <= keys(expected.vertices[expected.edges])
+    assert not keys(last_group.segments[:E]) & keys(expected.vertices[expected.edges])
+    # after the last group, every piece around a corner is a pentagon
+    np.testing.assert_allclose(last_group.face_colors[-H:], face_rgb(np.full(H, 5)))
+    # at first, the pieces of a non-pentagon are not pentagon-coloured
+    parent_sizes = np.repeat(mesh.face_sizes, mesh.face_sizes)
+    green = np.isclose(first.face_colors[-H:], face_rgb(np.full(H, 5))).all(axis=1)
+    assert (parent_sizes != 5).any()
+    assert not green[parent_sizes != 5].any()
+
+
+def test_pentagonalize_step_one_marks_the_trisection_points():
+    mesh = shapes.cube()
+    st = pentanb.step_through(mesh)
+    caption, d = st.stages[1]
+    assert "three equal parts" in caption
+    expected = []
+    for face in face_lists(mesh):
+        for i, u in enumerate(face):
+            w = face[(i + 1) % len(face)]
+            if u < w:
+                a, b = mesh.vertices[u], mesh.vertices[w]
+                expected += [a + (b - a) / 3, a + 2 * (b - a) / 3]
+    np.testing.assert_allclose(np.sort(d.points, axis=0), np.sort(expected, axis=0), atol=1e-12)
 
 
 def test_step_slider_updates_the_view_in_place():
@@ -322,16 +480,199 @@ def test_step_through_other_schemes_show_input_result_duals():
     assert len(st.stages) == 4
 
 
+def test_step_through_preservation_honours_scale():
+    cube = shapes.cube()
+    st = pentanb.step_through(cube, "preserve_pentagons", scale=0.5, duals=0)
+    result = st.stages[-1][1]
+    np.testing.assert_allclose(
+        result.vertices, pentanb.preserve_pentagons(cube, scale=0.5).vertices
+    )
+    assert "scaled by 0.5" in st.stages[2][0]
+    default = pentanb.step_through(cube, "preserve_pentagons", duals=0).stages[-1][1]
+    assert not np.allclose(default.vertices, result.vertices)
+
+
+STEP_REFUSALS = [
+    ((None,), {}, TypeError, r"mesh must be a pentanb.Mesh, got NoneType"),
+    (("cube",), {}, TypeError, r"mesh must be a pentanb.Mesh, got str \(for a shape by name"),
+    ((shapes.cube(),), {"duals": -1}, ValueError, r"duals must be an integer in \[0, 12\], got -1"),
+    ((shapes.cube(),), {"duals": 13}, ValueError, r"duals must be an integer in \[0, 12\], got 13"),
+    ((shapes.cube(),), {"duals": 1.0}, TypeError, r"duals must be an integer in \[0, 12\]"),
+    (
+        (shapes.cube(), "pentagonalize"),
+        {"scale": 0.5},
+        ValueError,
+        r"scheme 'pentagonalize' takes no options; got scale",
+    ),
+    ((shapes.cube(), "quintify"), {}, ValueError, r"unknown scheme 'quintify'"),
+    ((shapes.cube(), "preserve_pentagons"), {"scale": 1.5}, ValueError, r"scale must be in"),
+]
+
+
+@pytest.mark.parametrize(
+    "args, kwargs, error, message",
+    STEP_REFUSALS,
+    ids=["None", "'cube'", "duals=-1", "duals=13", "duals=1.0", "scale", "unknown", "scale=1.5"],
+)
+def test_step_through_refuses_bad_arguments(args, kwargs, error, message):
+    with pytest.raises(error, match=message):
+        pentanb.step_through(*args, **kwargs)
+
+
+# -- the notebooks' panel -------------------------------------------------------------
+
+
+def test_panel_calls_the_function_with_the_controls_values():
+    calls = []
+
+    def draw(scheme="pentagonalize", dual_passes=2, scale=0.75):
+        calls.append((scheme, dual_passes, scale))
+        return pentanb.subdivide(shapes.tetrahedron(), scheme, 1, dual_passes)
+
+    p = widgets.panel(
+        draw,
+        scheme=["pentagonalize", "honeycomb"],
+        dual_passes=(0, 4),
+        scale=(0.1, 0.9, 0.05),
+    )
+    import ipywidgets as W
+
+    assert isinstance(p.controls["scheme"], W.Dropdown)
+    assert isinstance(p.controls["dual_passes"], W.IntSlider)
+    assert isinstance(p.controls["scale"], W.FloatSlider)
+    assert p.controls["dual_passes"].description == "dual passes"
+    assert calls == [("pentagonalize", 2, 0.75)]  # the function's defaults come first
+    check_buffers(p.view, p.mesh)
+    view = p.view
+    p.controls["dual_passes"].value = 1
+    assert calls[-1] == ("pentagonalize", 1, 0.75)
+    assert p.view is view and p.mesh.n_faces == 20  # the dual: an icosahedral mesh
+    check_buffers(p.view, p.mesh)
+
+
+def test_panel_limits_active_and_refit():
+    def draw(shape="cube", iterations=1, scale=0.5):
+        return pentanb.subdivide(shapes.get(shape), "pentagonalize", iterations, 0)
+
+    p = widgets.panel(
+        draw,
+        shape=["cube", "tetrahedron"],
+        iterations=(0, 5),
+        scale=(0.1, 0.9),
+        limits={"iterations": lambda v: 2 if v["shape"] == "cube" else 3},
+        active={"scale": lambda v: v["iterations"] > 1},
+        refit=["shape"],
+    )
+    assert p.controls["iterations"].max == 2
+    assert p.controls["scale"].disabled and p.values["scale"] is None
+    p.controls["iterations"].value = 2
+    assert not p.controls["scale"].disabled and p.values["scale"] == 0.5
+    p.view.camera.position = (50.0, 0.0, 0.0)
+    p.controls["iterations"].value = 1
+    assert tuple(p.view.camera.position) == (50.0, 0.0, 0.0)  # kept
+    p.controls["shape"].value = "tetrahedron"
+    assert p.controls["iterations"].max == 3
+    assert tuple(p.view.camera.position) != (50.0, 0.0, 0.0)  # refitted
+
+
+def test_panel_without_a_mesh_has_no_view():
+    seen = []
+    p = widgets.panel(lambda n=5: seen.append(n), n=(3, 10))
+    p.controls["n"].value = 10
+    assert seen == [5, 10] and p.view is None
+
+
+def test_panel_passes_on_the_functions_errors():
+    def draw(n=1):
+        if n > 1:
+            raise RuntimeError("no such mesh")
+
+    p = widgets.panel(draw, n=(1, 3))
+    with pytest.raises(RuntimeError, match="no such mesh"):
+        p.controls["n"].value = 2
+
+
+@pytest.mark.parametrize(
+    "draw, controls, error, message",
+    [
+        (
+            lambda n=11: None,
+            {"n": (3, 10)},
+            ValueError,
+            r"n must be an integer in \[3, 10\], got 11",
+        ),
+        (lambda s="x": None, {"s": ["a", "b"]}, ValueError, r"s must be one of \['a', 'b'\]"),
+        (lambda n: None, {"m": (1, 2)}, TypeError, r"takes no argument m"),
+        (lambda n, m=1: None, {"m": (1, 2)}, TypeError, r"no control for the argument n"),
+        (lambda n=1: None, {"n": "1 to 3"}, TypeError, r"control 'n': expected \(low, high"),
+        (lambda n=1: None, {"n": (3, 1)}, ValueError, r"need low <= high"),
+    ],
+    ids=["default out of range", "default not an option", "unknown", "missing", "spec", "range"],
+)
+def test_panel_refuses_bad_controls(draw, controls, error, message):
+    with pytest.raises(error, match=message):
+        widgets.panel(draw, **controls)
+
+
 # -- export ----------------------------------------------------------------------
 
 
 def test_export_online_page_references_the_cdn(tmp_path):
     path = html.export_html(shapes.cube(), tmp_path / "cube.html", offline=False)
     text = path.read_text()
-    assert "cdn.jsdelivr.net/npm/@jupyter-widgets/html-manager" in text
+    versions = json.loads((VIZ / "js_versions.json").read_text())
+    assert (
+        "cdn.jsdelivr.net/npm/@jupyter-widgets/html-manager@"
+        + versions["@jupyter-widgets/html-manager"]
+    ) in text
+    assert f"requirejs@{versions['requirejs']}/require.js" in text
     state = _state(text)
     names = {s["model_name"] for s in state["state"].values()}
     assert {"RendererModel", "BufferGeometryModel", "BufferAttributeModel"} <= names
+
+
+def test_export_escapes_the_title(tmp_path):
+    path = html.export_html(shapes.cube(), tmp_path / "c.html", offline=False, title="<b>&")
+    text = path.read_text()
+    assert "<title>&lt;b&gt;&amp;</title>" in text and "<h3>&lt;b&gt;&amp;</h3>" in text
+
+
+def test_npm_versions_are_written_once():
+    """pentanb/viz/js_versions.json is the one place: html.py and
+    .ci/browser-setup.sh read it and write no version of their own."""
+    versions = json.loads((VIZ / "js_versions.json").read_text())
+    assert set(versions) == {"@jupyter-widgets/html-manager", "requirejs"}
+    assert html.js_versions() == versions
+    assert html.HTML_MANAGER_VERSION == versions["@jupyter-widgets/html-manager"]
+    assert html.REQUIREJS_VERSION == versions["requirejs"]
+    script = (ROOT / ".ci" / "browser-setup.sh").read_text()
+    assert "pentanb/viz/js_versions.json" in script
+    source = (VIZ / "html.py").read_text()
+    for version in versions.values():
+        pattern = re.escape(version)
+        assert not re.search(pattern, script), f".ci/browser-setup.sh writes {version} itself"
+        assert not re.search(rf"=\s*['\"]{pattern}['\"]", source), f"html.py assigns {version}"
+
+
+def test_browser_setup_reads_the_versions_file(tmp_path):
+    """The script's version reader, run on a cache missing one package, asks for it."""
+    script = (ROOT / ".ci" / "browser-setup.sh").read_text()
+    reader = script[script.index("<<'PYTHON'\n") + len("<<'PYTHON'\n") : script.index("\nPYTHON\n")]
+    cache = tmp_path / "js"
+    (cache / "node_modules" / "requirejs").mkdir(parents=True)
+    versions = json.loads((VIZ / "js_versions.json").read_text())
+    (cache / "node_modules" / "requirejs" / "package.json").write_text(
+        json.dumps({"version": versions["requirejs"]})
+    )
+    out = subprocess.run(
+        [sys.executable, "-", str(VIZ / "js_versions.json"), str(cache)],
+        input=reader,
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.split()
+    manager = "@jupyter-widgets/html-manager"
+    assert out == [f"{manager}@{versions[manager]}"]
 
 
 def _state(text):
@@ -369,7 +710,7 @@ def test_export_offline_page_loads_no_script_from_the_network(tmp_path):
 
 
 def test_export_refuses_unknown_objects(tmp_path):
-    with pytest.raises(TypeError):
+    with pytest.raises(TypeError, match=r"takes a pentanb\.Mesh or a widget, not int"):
         html.export_html(42, tmp_path / "x.html", offline=False)
 
 
@@ -379,10 +720,88 @@ def test_offline_without_cache_says_how_to_fill_it(tmp_path, monkeypatch):
         html.export_html(shapes.cube(), tmp_path / "x.html")
 
 
-def test_import_pentanb_does_not_import_the_widget_libraries():
-    import subprocess
-    import sys
+# -- the layout of pentanb.viz -------------------------------------------------------
 
+#: pentanb.viz from the bottom up: a module imports only modules before it.
+LAYERS = [
+    "colors",
+    "drawing",
+    "stages",
+    "mpl",
+    "spectra",
+    "three",
+    "widgets",
+    "explorer",
+    "steps",
+    "html",
+]
+#: What each module may import besides the standard library, numpy and pentanb's core.
+THIRD_PARTY = {
+    "colors": set(),
+    "drawing": set(),
+    "stages": set(),
+    "mpl": {"matplotlib", "mpl_toolkits"},
+    "spectra": {"matplotlib"},
+    "three": {"ipywidgets", "pythreejs"},
+    "widgets": {"ipywidgets", "IPython"},
+    "explorer": {"ipywidgets"},
+    "steps": {"ipywidgets"},
+    "html": {"ipywidgets", "pythreejs"},
+}
+
+
+def _imports(module: str):
+    """(sibling modules, names taken from siblings, third-party packages) of a viz module."""
+    tree = ast.parse((VIZ / f"{module}.py").read_text())
+    siblings, names, packages = set(), [], set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.level == 1:
+            siblings.add(node.module)
+            names += [(node.module, a.name) for a in node.names]
+        elif isinstance(node, ast.ImportFrom) and node.level == 0:
+            packages.add(node.module.split(".")[0])
+        elif isinstance(node, ast.Import):
+            packages.update(a.name.split(".")[0] for a in node.names)
+    return siblings, names, packages - set(sys.stdlib_module_names) - {"numpy", "pentanb"}
+
+
+def test_viz_modules_are_the_listed_ones():
+    present = {p.stem for p in VIZ.glob("*.py")} - {"__init__"}
+    assert present == set(LAYERS)
+
+
+@pytest.mark.parametrize("module", LAYERS)
+def test_viz_modules_import_one_way_and_no_private_names(module):
+    siblings, names, packages = _imports(module)
+    below = set(LAYERS[: LAYERS.index(module)])
+    assert siblings <= below, f"viz.{module} imports {sorted(siblings - below)} (not below it)"
+    private = [f"{m}.{n}" for m, n in names if n.startswith("_")]
+    assert not private, f"viz.{module} takes private names {private}"
+    assert packages <= THIRD_PARTY[module], f"viz.{module} imports {sorted(packages)}"
+
+
+def test_layout_check_fails_on_an_upward_import(tmp_path, monkeypatch):
+    fake = tmp_path / "viz"
+    fake.mkdir()
+    for name in LAYERS:
+        (fake / f"{name}.py").write_text((VIZ / f"{name}.py").read_text())
+    (fake / "three.py").write_text("from .steps import StepThrough\nfrom .colors import _x\n")
+    monkeypatch.setattr(sys.modules[__name__], "VIZ", fake)
+    with pytest.raises(AssertionError, match="imports \\['steps'\\]"):
+        test_viz_modules_import_one_way_and_no_private_names("three")
+
+
+def test_drawing_data_needs_numpy_only():
+    code = (
+        "import sys, pentanb.viz.stages, pentanb.viz.drawing, pentanb.viz.colors; "
+        "bad = [m for m in ('matplotlib', 'ipywidgets', 'pythreejs', 'IPython') "
+        "if m in sys.modules]; print(bad); sys.exit(1 if bad else 0)"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+def test_import_pentanb_does_not_import_the_widget_libraries():
     code = (
         "import sys, pentanb; bad = [m for m in ('pythreejs', 'ipywidgets') "
         "if m in sys.modules]; print(bad); sys.exit(1 if bad else 0)"
@@ -393,7 +812,18 @@ def test_import_pentanb_does_not_import_the_widget_libraries():
 
 def test_lazy_names_are_exposed():
     assert pentanb.view is three.view
-    assert pentanb.explore is three.explore
+    assert pentanb.explore is explorer.explore
+    assert pentanb.step_through is steps.step_through
     assert pentanb.export_html is html.export_html
-    assert callable(pentanb.step_through)
-    assert steps.step_through is not None
+    assert stages.stages is not None
+
+
+def test_explore_accepts_conway_notation():
+    """Issue 10 item 5: a notation string wherever a scheme name is taken."""
+    e = pentanb.explore("cube", "dg", iterations=1, duals=0)
+    assert e.scheme.value == "dg"
+    m = e.mesh_at(1)
+    assert (m.n_vertices, m.n_edges, m.n_faces) == (24, 60, 38)  # the snub cube, sC
+    assert m.face_size_histogram() == {3: 32, 4: 6}
+    with pytest.raises(ValueError, match="Conway operators"):
+        pentanb.explore("cube", "dgX")

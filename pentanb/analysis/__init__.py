@@ -2,10 +2,16 @@
 
 * :mod:`~pentanb.analysis.measures`: measures that the figures, the
   convergence study and the notebooks share (vertex and face
-  configurations, radius spread, crease angles, edge waviness); re-exported
+  configurations, radius spread, crease angles, edge waviness, spreads,
+  planarity); re-exported
   here, so ``from pentanb.analysis import vertex_configurations`` works.
 * :mod:`~pentanb.analysis.convergence`: how fast dual smoothing converges
   (Section 7's "visually confirmed" G1 continuity, measured).
+* :mod:`~pentanb.analysis.subdivision_matrix`: one step of "remesh, then k
+  duals" as a sparse linear map of positions, ``S @ V``.
+* :mod:`~pentanb.analysis.spectral`: Section 7's open question answered with
+  subdivision theory: local subdivision matrices around extraordinary
+  vertices and faces, their spectra, characteristic maps, the results table.
 
 Everything here needs only numpy.  (Analyses that need scipy import it
 inside the functions that use it, so that ``import pentanb.analysis``
@@ -15,17 +21,49 @@ stays numpy-only.)
 from __future__ import annotations
 
 from .measures import (
+    angle_spread,
+    best_fit_planes,
     canonical_configuration,
     configuration_counts,
+    corner_angles,
+    crease_angles,
+    edge_length_spread,
+    edge_lengths,
+    edge_profile,
     edge_waviness,
     face_configurations,
+    face_planarity,
+    lateral_amplitude,
     normal_angles,
+    planarity,
     radius_spread,
     ray_distances,
+    region_geometry,
+    uniformity,
     vertex_configurations,
 )
+from .spectral import (
+    CharacteristicMap,
+    ContinuityRow,
+    LocalSpectrum,
+    characteristic_map,
+    continuity_table,
+    local_spectrum,
+    ring_contraction,
+    table_markdown,
+)
+from .subdivision_matrix import subdivision_matrix
 
 __all__ = [
+    "subdivision_matrix",
+    "local_spectrum",
+    "LocalSpectrum",
+    "characteristic_map",
+    "CharacteristicMap",
+    "continuity_table",
+    "ContinuityRow",
+    "table_markdown",
+    "ring_contraction",
     "vertex_configurations",
     "face_configurations",
     "canonical_configuration",
@@ -34,4 +72,16 @@ __all__ = [
     "normal_angles",
     "ray_distances",
     "edge_waviness",
+    "edge_lengths",
+    "edge_length_spread",
+    "corner_angles",
+    "angle_spread",
+    "uniformity",
+    "face_planarity",
+    "planarity",
+    "best_fit_planes",
+    "region_geometry",
+    "crease_angles",
+    "edge_profile",
+    "lateral_amplitude",
 ]

@@ -4,14 +4,19 @@ Section 7: "we have visually confirmed that the algorithms converge with G1
 continuity".  Two studies turn that into numbers, with the measures of
 :mod:`pentanb.analysis.measures`:
 
-* :func:`dual_convergence`: one remeshing, then pairs of duals; after each
-  pair, how round the mesh is (:func:`~pentanb.analysis.measures.radius_spread`)
-  and how sharp its sharpest crease is (the largest of
-  :func:`~pentanb.analysis.measures.normal_angles`).
+* :func:`dual_convergence`: one remeshing, then pairs of duals; after the
+  remeshing and after each pair, how round the mesh is
+  (:func:`~pentanb.analysis.measures.radius_spread`), how uniform (the
+  spreads of its edge lengths and face angles) and how sharp its sharpest
+  crease is (the largest of :func:`~pentanb.analysis.measures.normal_angles`).
+  Section 5.1 says of Figure 7 that the shape "becomes more and more uniform
+  with each application of dual operation".
 * :func:`subdivision_convergence`: the same after every subdivision level
-  (one remeshing and two duals).  On a G1 (tangent-continuous) limit
-  surface the largest crease angle must fall towards 0 as the mesh refines;
-  a falling angle is necessary for G1, not a proof of it.
+  (one remeshing and two duals), with the largest crease angle measured
+  separately at the extraordinary vertices and elsewhere.  On a G1
+  (tangent-continuous) limit surface the largest crease angle must fall
+  towards 0 as the mesh refines; a falling angle is necessary for G1, not a
+  proof of it.
 
 :func:`study` runs both on :data:`STUDY_MESHES` for the paper's two schemes
 (the convergence figure).  numpy only.
@@ -33,8 +38,8 @@ from .. import shapes
 from ..mesh import Mesh
 from ..schemes.smoothing import dual
 from ..subdivision import get_scheme, subdivide
+from .measures import angle_spread, crease_angles, edge_length_spread, normal_angles, radius_spread
 from .measures import edge_waviness as edge_waviness  # the old import path
-from .measures import normal_angles, radius_spread
 from .measures import ray_distances as ray_distances  # the old import path
 
 __all__ = [
@@ -45,6 +50,7 @@ __all__ = [
     "STUDY_MESHES",
     "STUDY_SCHEMES",
     "ROUND_MESHES",
+    "extraordinary",
 ]
 
 
@@ -56,35 +62,83 @@ class Convergence:
     ----------
     scheme : str
     steps : (k,) int
-        1, 2, ...: pairs of duals (:func:`dual_convergence`) or subdivision
-        levels (:func:`subdivision_convergence`).
+        0, 1, 2, ...: pairs of duals after the remeshing (:func:`dual_convergence`;
+        0 is the remeshing alone) or 1, 2, ...: subdivision levels
+        (:func:`subdivision_convergence`).
     faces : (k,) int
         Number of faces after each step.
     radius_spread : (k,) float
         :func:`~pentanb.analysis.measures.radius_spread` after each step.
+    edge_spread : (k,) float
+        :func:`~pentanb.analysis.measures.edge_length_spread`.
+    angle_spread : (k,) float
+        :func:`~pentanb.analysis.measures.angle_spread` (corners grouped by face size).
     max_normal_angle : (k,) float
         Largest angle between neighbouring face normals, in degrees.
     mean_normal_angle : (k,) float
         Mean of those angles, in degrees.
+    crease_at : (k,) float
+        Largest crease angle at the extraordinary vertices (:func:`extraordinary`;
+        NaN where there are none).
+    crease_elsewhere : (k,) float
+        Largest crease angle everywhere else (NaN where every edge is at one).
     """
 
     scheme: str
     steps: NDArray[np.int64]
     faces: NDArray[np.int64]
     radius_spread: NDArray[np.float64]
+    edge_spread: NDArray[np.float64]
+    angle_spread: NDArray[np.float64]
     max_normal_angle: NDArray[np.float64]
     mean_normal_angle: NDArray[np.float64]
+    crease_at: NDArray[np.float64]
+    crease_elsewhere: NDArray[np.float64]
 
 
-def _measure(meshes, scheme_name):
+def extraordinary(mesh: Mesh, source: Mesh) -> NDArray[np.bool_]:
+    """The extraordinary vertices of a mesh made from ``source`` by the paper's schemes.
+
+    The vertices of ``source`` whose valence is not 4 (both of the paper's
+    schemes keep the input's vertices, numbered first, and so does a pair
+    of duals) and the corners of the faces that are not pentagons (pentagon
+    preservation keeps a copy of every input face, with its size).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        ``source`` after remeshings by :func:`pentanb.pentagonalize` or
+        :func:`pentanb.preserve_pentagons` and pairs of duals.
+    source : Mesh
+
+    Returns
+    -------
+    (V,) bool
+    """
+    marked = np.zeros(mesh.n_vertices, dtype=bool)
+    marked[: source.n_vertices] = source.valences != 4
+    odd = mesh.face_sizes[mesh.halfedge_face] != 5
+    marked[mesh.corners[odd]] = True
+    return marked
+
+
+def _measure(meshes, scheme_name, steps, source=None):
     angles = [normal_angles(m) for m in meshes]
+    if source is None:
+        creases = [{"at": np.nan, "elsewhere": float(a.max())} for a in angles]
+    else:
+        creases = [crease_angles(m, extraordinary(m, source)) for m in meshes]
     return Convergence(
         scheme=scheme_name,
-        steps=np.arange(1, len(meshes) + 1, dtype=np.int64),
+        steps=np.asarray(steps, dtype=np.int64),
         faces=np.array([m.n_faces for m in meshes], dtype=np.int64),
         radius_spread=np.array([radius_spread(m) for m in meshes]),
+        edge_spread=np.array([edge_length_spread(m) for m in meshes]),
+        angle_spread=np.array([angle_spread(m) for m in meshes]),
         max_normal_angle=np.array([a.max() for a in angles]),
         mean_normal_angle=np.array([a.mean() for a in angles]),
+        crease_at=np.array([c["at"] for c in creases]),
+        crease_elsewhere=np.array([c["elsewhere"] for c in creases]),
     )
 
 
@@ -94,7 +148,8 @@ def _name(scheme) -> str:
 
 
 def dual_convergence(mesh: Mesh, scheme="pentagonalize", pairs: int = 6, **options) -> Convergence:
-    """Remesh once, then apply ``pairs`` pairs of duals, measuring after each pair.
+    """Remesh once, then apply ``pairs`` pairs of duals, measuring after the remeshing
+    and after each pair.
 
     Parameters
     ----------
@@ -108,22 +163,25 @@ def dual_convergence(mesh: Mesh, scheme="pentagonalize", pairs: int = 6, **optio
     Returns
     -------
     Convergence
-        ``steps`` = 1 .. pairs.
+        ``steps`` = 0 .. pairs (0: the remeshing alone).
     """
     if pairs < 1:
         raise ValueError(f"pairs must be >= 1, got {pairs}")
     m = subdivide(mesh, scheme, 1, 0, **options)
-    out = []
+    out = [m]
     for _ in range(pairs):
         m = dual(dual(m))
         out.append(m)
-    return _measure(out, _name(scheme))
+    return _measure(out, _name(scheme), np.arange(pairs + 1))
 
 
 def subdivision_convergence(
     mesh: Mesh, scheme="pentagonalize", levels: int = 4, duals: int = 2, **options
 ) -> Convergence:
     """Subdivide ``levels`` times (remesh + ``duals`` duals), measuring after each level.
+
+    The crease angle is measured at the extraordinary vertices
+    (:func:`extraordinary`; meaningful for the paper's two schemes) and elsewhere.
 
     Returns
     -------
@@ -137,7 +195,9 @@ def subdivision_convergence(
     for _ in range(levels):
         m = subdivide(m, scheme, 1, duals, **options)
         out.append(m)
-    return _measure(out, _name(scheme))
+    name = _name(scheme)
+    source = mesh if name in ("pentagonalize", "preserve_pentagons") and duals % 2 == 0 else None
+    return _measure(out, name, np.arange(1, levels + 1), source)
 
 
 #: Meshes of the convergence study (name -> builder).
@@ -145,7 +205,7 @@ STUDY_MESHES = {
     "cube": shapes.cube,
     "tetrahedron": shapes.tetrahedron,
     "torus": lambda: shapes.torus(8, 6),
-    "rabbit": shapes.animal,
+    "rabbit": shapes.rabbit,
 }
 #: Meshes of the study around a centre, for which the radius spread measures roundness.
 ROUND_MESHES = ("cube", "tetrahedron")
@@ -164,7 +224,7 @@ def study(pairs: int = 6, levels: int = 4) -> dict:
         ``{(mesh name, scheme): Convergence}`` from :func:`dual_convergence`
         and :func:`subdivision_convergence`.  (Meshes of more than 50 faces,
         here the rabbit, are refined at most three levels, to keep the study
-        to a few seconds.)
+        to a few seconds.)  The torus is 8 x 6 quads.
 
     Notes
     -----

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 from .. import shapes
 from ..mesh import Mesh
 from ..subdivision import subdivide
-from .claim import Claim, counts_claims, eq
+from .claim import Claim, counts_claim, exact
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -63,24 +63,54 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
 
 
 def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
-    """What the paper says of Figure 5, measured on :func:`panels` and Figure 4's meshes."""
+    """What the paper says of Figure 5, measured on :func:`panels` and Figure 4's meshes
+    (``meshes["source A"]``, ``meshes["source B"]`` replace them)."""
     p = panels() if meshes is None else meshes
-    src_a, src_b = _sources()
+    srcs = dict(zip("AB", _sources()))
+    if meshes is not None:
+        srcs.update({k: meshes[f"source {k}"] for k in "AB" if f"source {k}" in meshes})
 
-    def extra(x: Mesh) -> int:
-        return int((x.valences != 3).sum())
+    def irregular(x: Mesh) -> tuple[int, int]:
+        return int((x.face_sizes != 6).sum()), int((x.valences != 3).sum())
 
     out = []
-    for panel, src, m in (("(A)", src_a, p["A"]), ("(B)", src_b, p["B"])):
-        out += counts_claims(panel, src, m, "preserve_hexagons", 2)
+    for k in "AB":
+        src, m, panel = srcs[k], p[k], f"({k})"
         out.append(
-            eq(
-                f"{panel} hexagonal meshes stay hexagonal, genus kept",
+            counts_claim(
+                f"fig05.{k}.counts",
+                "Figure 5",
+                "Two iterations of an hexagon preserving scheme applied to the hexagonal "
+                "meshes shown in Figure 4.",
+                panel,
+                src,
+                m,
+                "preserve_hexagons",
+                2,
+            )
+        )
+        out.append(
+            exact(
+                f"fig05.{k}.hexagons",
+                "Section 4",
+                "it is possible to develop an hexagonal preservation scheme since hexagonal "
+                "meshes exist for g > 0",
+                f"{panel} face sizes and genus, against Figure 4's",
                 ([6], src.genus),
                 (sorted(m.face_size_histogram()), m.genus),
             )
         )
         out.append(
-            eq(f"{panel} the number of non-3-valent vertices stays constant", extra(src), extra(m))
+            exact(
+                f"fig05.{k}.irregular",
+                "Section 3",
+                "(6, 3) The schemes that are the dual of sqrt(3) [5, 8, 19, 6] and dual of Loop "
+                "subdivision [12] create regular regions that consist 3-valent vertices and "
+                "6-sided faces. In this case, the number of non-6-sided faces remains constant "
+                "after the first refinement.",
+                f"{panel} (non-hexagons, non-3-valent vertices), against Figure 4's",
+                irregular(src),
+                irregular(m),
+            )
         )
     return out

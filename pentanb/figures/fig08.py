@@ -1,9 +1,12 @@
 """Figure 8: the 4.3.3.4.3 semi-regular tiling from pentagonalizing a cube.
 
 (A) the hard-edged cube pentagonalized once with two duals (the same mesh
-as Figure 1.B), (B) its dual.  The claims count the pentagons of (A) by the
-valences of their corners and the vertices of (B) by the sizes of their
-faces (Section 5.1).
+as Figure 1.B), (B) its dual.  The claims: the pentagons of (A) counted by
+the valences of their corners (Section 5.1's 4.3.3.4.3 regions), and the
+geometry of those regions against the classical tile.  (That the vertices
+of (B) have (A)'s face configurations is the definition of the dual, not a
+claim.)  The regions exist after the first pentagonalization of a (4, 4)
+region only: a second one makes 3.3.3.3.5 and 3.3.4.3.5 faces.
 """
 
 from __future__ import annotations
@@ -15,7 +18,7 @@ from .. import shapes
 from ..mesh import Mesh
 from ..schemes.smoothing import dual
 from ..subdivision import subdivide
-from .claim import Claim, configuration_claims
+from .claim import FAILS, Claim, configuration_claim, region_claim, take
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -56,13 +59,34 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
     )
 
 
+REGIONS = (
+    "If this subdivision is applied to a mesh that includes either (4, 4) or (6, 3) "
+    "regular regions, the resulting mesh [...] will have classical (or geometrical) "
+    "semi-regular "
+    "regions 4.3.3.4.3 (see Figure 8.A) or 6.3.3.3.3 (see Figures 9.A)"
+)
+
+
 def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
     """What the paper says of Figure 8, measured on :func:`panels` and the cube they
-    come from."""
+    come from (``meshes["source"]`` replaces it)."""
     p = panels() if meshes is None else meshes
-    a, b, src = p["A"], p["B"], shapes.hard_edged_cube()
+    a = p["A"]
+    src = take(meshes, "source", shapes.hard_edged_cube)
     # every pentagon belongs to a half-edge (u, w) of the cube and has w as a
     # corner: 4.3.3.4.3 when w is a 4-valent grid vertex, 4.3.3.3.3 at the 8 corners
     corners3 = int(src.valences[src.valences == 3].sum())
-    expected = {"3.3.4.3.4": a.n_faces - corners3, "3.3.3.3.4": corners3}
-    return configuration_claims(a, b, "4.3.3.4.3", expected, "semi-regular")
+    expected = {"3.3.4.3.4": 2 * src.n_edges - corners3, "3.3.3.3.4": corners3}
+    return [
+        configuration_claim(
+            "fig08.A.regions", "Section 5.1, Figure 8.A", REGIONS, a, expected, "4.3.3.4.3"
+        ),
+        region_claim(
+            "fig08.A.geometry",
+            "Section 5.1, Figure 8.A",
+            REGIONS,
+            [("level 1 (A)", a)],
+            "4.3.3.4.3",
+            FAILS,
+        ),
+    ]

@@ -2,6 +2,8 @@
 
 (A) Figure 4.A's hexagonal torus pentagonalized once with two duals, (B) its
 dual; every pentagon of (A) has corner valences 6.3.3.3.3 (Section 5.1).
+The claims: that count, and the geometry of the regions against the
+classical tile.
 """
 
 from __future__ import annotations
@@ -13,7 +15,8 @@ from .. import shapes
 from ..mesh import Mesh
 from ..schemes.smoothing import dual
 from ..subdivision import subdivide
-from .claim import Claim, configuration_claims
+from .claim import FAILS, Claim, configuration_claim, region_claim
+from .fig08 import REGIONS
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -59,5 +62,22 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
 def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
     """What the paper says of Figure 9, measured on :func:`panels`."""
     p = panels() if meshes is None else meshes
-    a, b = p["A"], p["B"]
-    return configuration_claims(a, b, "6.3.3.3.3", {"3.3.3.3.6": a.n_faces}, "semi-regular")
+    a = p["A"]
+    return [
+        configuration_claim(
+            "fig09.A.regions",
+            "Section 5.1, Figure 9.A",
+            REGIONS,
+            a,
+            {"3.3.3.3.6": a.n_faces},
+            "6.3.3.3.3",
+        ),
+        region_claim(
+            "fig09.A.geometry",
+            "Section 5.1, Figure 9.A",
+            REGIONS,
+            [("level 1 (A)", a)],
+            "6.3.3.3.3",
+            FAILS,
+        ),
+    ]

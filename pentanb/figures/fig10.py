@@ -18,7 +18,7 @@ import numpy as np
 from ..mesh import Mesh
 from ..schemes.pentagonal import preserve_pentagons
 from ._flat import pillow
-from .claim import Claim, check, eq
+from .claim import Claim, bounded, exact
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -113,26 +113,45 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
     front = _front(src)
     n = int(src.face_sizes[0])
     pts = out.vertices
-    mids = pts[n : n + src.n_edges]
+    mids = pts[n : n + src.n_edges][:n]  # the front face's edges are edges 0 .. n - 1
     c = mids.mean(axis=0)
-    err = float(np.abs(pts[out.faces[0]] - (c + SCALE * (mids - c))).max())
-    sizes = out.face_sizes[front]
+    inner = pts[out.faces[0]]
+    err = (
+        float(np.abs(inner - (c + SCALE * (mids - c))).max())
+        if inner.shape == mids.shape
+        else float("inf")
+    )
+    sizes = out.face_sizes[front[front < out.n_faces]]
     return [
-        eq(
-            f"a {n}-gon becomes {n} pentagons plus a central {n}-gon: only pentagons",
+        exact(
+            "fig10.pentagons",
+            "Section 5.2, Figure 10",
+            "Each face in the original mesh would now have been split into as many pentagons "
+            "as the number of edges (or vertices) in the original face plus one central face "
+            "with the same number of sides as the original face.",
+            f"faces by size that fill the {n}-gon of (A)",
             {5: n + 1},
             {int(k): int(v) for k, v in zip(*np.unique(sizes, return_counts=True))},
         ),
-        check(
-            f"the central face is the edge midpoints scaled by {SCALE} "
-            "about their centroid (largest error)",
-            "0",
+        bounded(
+            "fig10.scaled",
+            "Section 5.2, Figure 10",
+            "Scale the points in Pi around their centroid by a specified amount. The scale "
+            "factor should be less than 1.",
+            f"largest distance of a corner of the central face from the edge midpoints "
+            f"scaled by {SCALE} (this package's default) about their centroid",
             err,
-            err < 1e-12,
         ),
-        eq(
-            "every vertex of the central face is joined to its midpoint (3-valent)",
+        exact(
+            "fig10.joined",
+            "Section 5.2, Figure 10",
+            "For each vertex vi,j in fi, insert an edge between vi,j and the point in Vs "
+            "corresponding to vi,j.",
+            "corners of the central face by valence (each joined to its midpoint: 3)",
             {3: n},
-            {3: int((out.valences[out.faces[0]] == 3).sum())},
+            {
+                int(k): int(v)
+                for k, v in zip(*np.unique(out.valences[out.faces[0]], return_counts=True))
+            },
         ),
     ]

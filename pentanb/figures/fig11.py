@@ -1,9 +1,10 @@
 """Figure 11: a semi-regular tiling from pentagon preservation of a cube.
 
-(A) pentagon preservation (scale 0.75) with two duals of a cube whose faces
-are even 3x3 grids (:func:`pentanb.shapes.hard_edged_cube` with inset 1/3),
-(B) its dual.  The claims: the count formula, the semi-regular regions by
-corner valences, and the number of non-pentagons staying constant.
+(A) pentagon preservation (scale 0.75, this package's default) of the plain
+cube with two duals: 6 quadrilaterals and 24 pentagons whose corners make
+4.3.3.4.3; (B) its dual.  The claims: the counts, the number of
+non-pentagons staying constant, the regions counted by corner valences and
+their geometry against the classical tile, level by level.
 """
 
 from __future__ import annotations
@@ -12,15 +13,10 @@ from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from .. import shapes
-from ..analysis.measures import (
-    configuration_counts,
-    face_configurations,
-    vertex_configurations,
-)
 from ..mesh import Mesh
 from ..schemes.smoothing import dual
 from ..subdivision import subdivide
-from .claim import Claim, counts_claims, eq
+from .claim import FAILS, Claim, configuration_claim, counts_claim, exact, region_claim, take
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -33,21 +29,16 @@ CAPTION = (
 LABELS = ("A", "B")
 
 
-def _source() -> Mesh:
-    """The cube of Figure 11: every face an even 3x3 grid of quads."""
-    return shapes.hard_edged_cube(1 / 3)
-
-
 def panels() -> dict[str, Mesh]:
-    """The meshes of Figure 11: the 3x3-grid cube after pentagon preservation with two
-    duals (A) and its dual (B)."""
-    a = subdivide(_source(), "preserve_pentagons", 1, 2)
+    """The meshes of Figure 11: the cube after pentagon preservation with two duals (A)
+    and its dual (B)."""
+    a = subdivide(shapes.cube(), "preserve_pentagons", 1, 2)
     return {"A": a, "B": dual(a)}
 
 
 def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
-    """Figure 11: pentagon preservation (scale 0.75) of a cube whose faces are 3x3 grids,
-    with two duals (A), and its dual (B).
+    """Figure 11: pentagon preservation (scale 0.75) of a cube with two duals (A), and
+    its dual (B).
 
     Parameters
     ----------
@@ -59,7 +50,7 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
     p = panels() if meshes is None else meshes
     return mesh_figure(
         [
-            (p["A"], "3x3-grid cube: one iteration, two duals", {}),
+            (p["A"], "cube: one iteration, two duals", {}),
             (p["B"], "dual of (A)", {}),
         ],
         suptitle="Figure 11. A semi-regular tiling from pentagon preservation of a cube",
@@ -67,41 +58,63 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
     )
 
 
+SPLIT = (
+    "Each face in the original mesh would now have been split into as many pentagons as "
+    "the number of edges (or vertices) in the original face plus one central face with "
+    "the same number of sides as the original face."
+)
+
+
 def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
     """What the paper says of Figure 11, measured on :func:`panels`, the cube they come
-    from and (A) refined once more."""
+    from and (A) refined once and twice more (``meshes["source"]``,
+    ``meshes["level 2"]`` and ``meshes["level 3"]`` replace them)."""
     p = panels() if meshes is None else meshes
-    src, a, b = _source(), p["A"], p["B"]
-    a2 = subdivide(a, "preserve_pentagons", 1, 2)
+    a = p["A"]
+    src = take(meshes, "source", shapes.cube)
+    a2 = take(meshes, "level 2", lambda: subdivide(a, "preserve_pentagons", 1, 2))
+    a3 = take(meshes, "level 3", lambda: subdivide(a2, "preserve_pentagons", 1, 2))
 
     def non5(m: Mesh) -> int:
         return int((m.face_sizes != 5).sum())
 
-    corners3 = int(src.valences[src.valences == 3].sum())
-    out = counts_claims("(A)", src, a, "preserve_pentagons")
-    fa = configuration_counts(face_configurations(a))
-    vb = configuration_counts(vertex_configurations(b))
-    out += [
-        eq(
-            "(A) every n-gon gives n pentagons and a central n-gon",
+    return [
+        counts_claim(
+            "fig11.A.counts", "Section 5.2, Figure 11", SPLIT, "(A)", src, a, "preserve_pentagons"
+        ),
+        exact(
+            "fig11.A.faces",
+            "Section 5.2, Figure 11",
+            SPLIT,
+            "(A) faces by size, against the cube's 6 quads kept and 2E = 24 pentagons",
             {4: src.n_faces, 5: 2 * src.n_edges},
             a.face_size_histogram(),
         ),
-        eq(
-            "the number of non-pentagons stays constant after the first refinement",
-            non5(a),
-            non5(a2),
+        exact(
+            "fig11.non_pentagons",
+            "Section 1",
+            "creates only pentagons and the number of non-pentagonal faces remains constant "
+            "after the first refinement",
+            "non-pentagons at levels 1, 2, 3",
+            (src.n_faces,) * 3,
+            (non5(a), non5(a2), non5(a3)),
         ),
-        eq(
-            "(A) semi-regular regions: pentagons with corner valences 3.3.4.4.4 (grid) "
-            "or 3.3.4.3.4 (at the cube's corners), centre quads 3.3.3.3",
-            {
-                "3.3.4.4.4": 2 * src.n_edges - corners3,
-                "3.3.3.3": src.n_faces,
-                "3.3.4.3.4": corners3,
-            },
-            fa,
+        configuration_claim(
+            "fig11.A.regions",
+            "Figure 11",
+            "A semi-regular tiling created by pentagon preserving scheme that is applied to a "
+            "cube.",
+            a,
+            {"3.3.4.3.4": 2 * src.n_edges, "3.3.3.3": src.n_faces},
+            "4.3.3.4.3",
         ),
-        eq("(B) the dual: vertex configurations are (A)'s face configurations", fa, vb),
+        region_claim(
+            "fig11.A.geometry",
+            "Figure 11, read with Section 5.1's 'classical (or geometrical)' regions",
+            "A semi-regular tiling created by pentagon preserving scheme that is applied to a "
+            "cube.",
+            [("level 1 (A)", a), ("level 2", a2), ("level 3", a3)],
+            "4.3.3.4.3",
+            FAILS,
+        ),
     ]
-    return out

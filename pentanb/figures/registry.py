@@ -5,7 +5,10 @@ built from the figure's module (:mod:`~pentanb.figures.fig07`): its title
 and caption, the panel labels, and three functions: ``panels()`` builds
 the meshes the figure draws, ``draw(meshes)`` and ``claims(meshes)`` take
 them.  :func:`render` and :func:`claims` build a figure's meshes once per
-call and pass them on; nothing is cached between calls.
+call and pass them on; no mesh is cached between calls.  The one thing kept
+is the continuity table that ``spectra`` and ``characteristic_maps`` draw
+and check (:func:`pentanb.figures._continuity.table`, about 6-10 s): it is
+computed once per process, so a figures run computes it once.
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ import numpy as np
 
 from ..mesh import Mesh
 from . import (
+    characteristic_maps,
     convergence,
     fig01,
     fig02,
@@ -36,7 +40,9 @@ from . import (
     fig12,
     fig13,
     formulas,
+    lateral,
     section4,
+    spectra,
 )
 from .claim import Claim, format_report
 
@@ -122,7 +128,10 @@ FIGURES: dict[str, FigureSpec] = {
     "fig12": _spec("fig12", fig12),
     "fig13": _spec("fig13", fig13),
     "equation1": _spec("equation1", section4),
+    "lateral": _spec("lateral", lateral),
     "convergence": _spec("convergence", convergence),
+    "spectra": _spec("spectra", spectra),
+    "characteristic_maps": _spec("characteristic_maps", characteristic_maps),
 }
 
 
@@ -142,7 +151,8 @@ def get(name: int | str) -> FigureSpec:
             f"a figure is named by its number or a name such as 'fig07', got "
             f"{type(name).__name__} {name!r}"
         )
-    key = f"fig{int(name):02d}" if not isinstance(name, str) or name.isdigit() else name
+    numeric = not isinstance(name, str) or (name.isascii() and name.isdecimal())
+    key = f"fig{int(name):02d}" if numeric else str(name)
     try:
         return FIGURES[key]
     except KeyError:
@@ -153,7 +163,8 @@ def panels(name: int | str) -> dict[str, Mesh]:
     """The meshes a figure draws, by panel label: ``panels(11)["A"]``.
 
     Built afresh on every call (nothing is cached).  Figures whose panels are
-    charts (``"equation1"``, ``"convergence"``) have no meshes: ``{}``.  The
+    charts (``"equation1"``, ``"lateral"``, ``"convergence"``, ``"spectra"``,
+    ``"characteristic_maps"``) have no meshes: ``{}``.  The
     flat diagrams (Figures 6 and 10) start from a two-faced "pillow": their
     meshes are closed, but keep its 2-valent corners, which the
     :class:`~pentanb.Mesh` constructor refuses: draw and measure them, but
@@ -182,7 +193,16 @@ def claims(name: int | str, meshes: Mapping[str, Mesh] | None = None) -> list[Cl
     name : int or str
         As for :func:`get`.
     meshes : dict, optional
-        The figure's :func:`panels`, if already built (they are built here otherwise).
+        The figure's :func:`panels`, if already built (they are built here
+        otherwise); a claims function also takes, under their own names, the
+        source meshes it compares with (e.g. ``"source"``), so that a test can
+        give it a wrong one.
+
+    Returns
+    -------
+    list of Claim
+        Each with the paper's words, the measurement and a verdict
+        (:data:`~pentanb.figures.claim.VERDICTS`).
     """
     return get(name).claims(meshes)
 
@@ -257,7 +277,8 @@ def check_all(names: Iterable[int | str] | None = None) -> dict[str, list[Claim]
 
 
 def report(results: Mapping[str, list[Claim]]) -> str:
-    """The claims as text: one block per figure, one line per claim, then a total.
+    """The claims as text: one block per figure, four lines per claim, the findings,
+    then the totals (:func:`~pentanb.figures.claim.format_report`).
 
     Parameters
     ----------

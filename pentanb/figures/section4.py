@@ -5,12 +5,18 @@ against its number of vertices v for genus 0, 1, 2 (panels A-C, with dots
 for meshes of this package) and the chart of the limits ``(n, 2n/(n-2))``
 (panel D).  Its panels are charts, not meshes: :func:`panels` is empty.
 
+The claims measure equation (1) on meshes, with the genus each mesh was
+built with (never the genus computed from V - E + F, which would make the
+equation an identity): ``claims({name: mesh})`` replaces a sample by name
+(:data:`SAMPLES`, :func:`samples`).
+
 (The module is called ``section4`` so that ``pentanb.figures.equation1``
 stays the drawing function.)
 """
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Mapping
 from fractions import Fraction
 from typing import TYPE_CHECKING
@@ -20,7 +26,7 @@ import numpy as np
 from .. import shapes, topology
 from ..mesh import Mesh
 from ..subdivision import subdivide
-from .claim import Claim, eq
+from .claim import FAILS, HOLDS, Claim, exact, fmt, judged
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -158,92 +164,178 @@ def _frac(x: Fraction) -> str:
     return str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"
 
 
+EQ1 = "m = 2n/(n-2) (1 + (2g-2)/v) (1)"
+
+
+def _gyro(mesh: Mesh, k: int = 1) -> Mesh:
+    return subdivide(mesh, "pentagonalize", k, 2)
+
+
+#: The meshes the claims measure, by name: (builder, genus it is built with, role).
+#: Roles: "simplest" (Section 4's simplest n-gonal meshes), "n-gonal" (equation
+#: (1) with the built genus), "3-valent g0" (honeycombs of genus-0 shapes),
+#: "pentagonal g0", "limit" (pentagonal meshes growing), "g1" (pentagonal, genus 1).
+SAMPLES: dict[str, tuple] = {
+    "tetrahedron": (shapes.tetrahedron, 0, "simplest"),
+    "cube": (shapes.cube, 0, "simplest"),
+    "dodecahedron": (shapes.dodecahedron, 0, "simplest"),
+    "gyro(hard cube)": (lambda: _gyro(shapes.hard_edged_cube()), 0, "n-gonal"),
+    "gyro(rabbit) x2": (lambda: _gyro(shapes.rabbit(), 2), 0, "n-gonal"),
+    "torus": (shapes.torus, 1, "n-gonal"),
+    "hexagonal genus 2": (lambda: shapes.hexagonal_surface(2), 2, "n-gonal"),
+    "genus 3": (lambda: shapes.genus_surface(3), 3, "n-gonal"),
+    "honeycomb(tetrahedron)": (lambda: _zip(shapes.tetrahedron()), 0, "3-valent g0"),
+    "honeycomb(cube)": (lambda: _zip(shapes.cube()), 0, "3-valent g0"),
+    "honeycomb(rabbit)": (lambda: _zip(shapes.rabbit()), 0, "3-valent g0"),
+    "gyro(tetrahedron)": (lambda: _gyro(shapes.tetrahedron()), 0, "pentagonal g0"),
+    "gyro(cube)": (lambda: _gyro(shapes.cube()), 0, "pentagonal g0"),
+    "gyro(cube) x2": (lambda: _gyro(shapes.cube(), 2), 0, "pentagonal g0"),
+    "gyro(cube) x3": (lambda: _gyro(shapes.cube(), 3), 0, "pentagonal g0"),
+    "gyro(hexagonal torus)": (lambda: _gyro(shapes.hexagonal_torus()), 1, "g1"),
+}
+
+
+def _zip(mesh: Mesh) -> Mesh:
+    return subdivide(mesh, "honeycomb", 1, 2)
+
+
+def samples(meshes: Mapping[str, Mesh] | None = None) -> dict[str, Mesh]:
+    """Every mesh of :data:`SAMPLES`, built (``meshes`` replaces some by name)."""
+    return {
+        name: (meshes[name] if meshes is not None and name in meshes else build())
+        for name, (build, _, _) in SAMPLES.items()
+    }
+
+
+def _n(mesh: Mesh) -> int | None:
+    """The face size of an n-gonal mesh (None for mixed faces)."""
+    sizes = np.unique(mesh.face_sizes)
+    return int(sizes[0]) if sizes.size == 1 else None
+
+
+def _eq1(mesh: Mesh, g: int) -> Fraction | None:
+    n = _n(mesh)
+    if n is None:
+        return None
+    return Fraction(2 * n, n - 2) * (1 + Fraction(2 * g - 2, mesh.n_vertices))
+
+
+def _m(mesh: Mesh) -> Fraction:
+    return Fraction(2 * mesh.n_edges, mesh.n_vertices)
+
+
 def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
-    """What Section 4 says, computed by :mod:`pentanb.topology` and measured on meshes.
+    """What Section 4 says, measured on the meshes of :data:`SAMPLES`.
 
     Parameters
     ----------
     meshes : dict, optional
-        Ignored (the figure has no mesh panels).
+        ``{sample name: Mesh}`` replacing samples (a wrong input for the tests).
     """
-    av = topology.average_valence
+    m = samples(meshes)
+    genus = {name: g for name, (_, g, _) in SAMPLES.items()}
+
+    def role(r: str) -> list[str]:
+        return [name for name, (_, _, rr) in SAMPLES.items() if rr == r]
+
     out = []
-    for name, n, g, v in (("tetrahedron", 3, 0, 4), ("cube", 4, 0, 8), ("dodecahedron", 5, 0, 20)):
-        out.append(
-            eq(
-                f"n = {n}, g = 0: the simplest mesh ({name}) has v = {v} and m = 3 by equation (1)",
-                (v, 3.0),
-                (topology.min_vertices(n, 0), av(n, g, v)),
-            )
-        )
-    big = np.arange(3, 100000)
+    simplest = role("simplest")
     out.append(
-        eq(
-            "n = 6, g = 0: m = 3 (1 - 2/v) < 3 for every v: no hexagonalization "
-            "(values of v < 100000 with m >= 3)",
-            0,
-            int(np.sum(av(6, 0, big) >= 3)),
+        exact(
+            "eq1.simplest",
+            "Section 4",
+            "Note that v = 20 corresponds to a dodecahedron (simplest pentagonal mesh with 12 "
+            "pentagons). [...] In the case of n = 4, we find that v must be larger than 8 and "
+            "the simplest case v = 8 corresponds to an hexahedron [...] In the case of n = 3, v "
+            "must be larger than 4 and the simplest case v = 4 corresponds to a tetrahedron",
+            "(n, v, average valence m = 2E/V) of the " + ", ".join(simplest),
+            [(3, 4, Fraction(3)), (4, 8, Fraction(3)), (5, 20, Fraction(3))],
+            [(_n(m[k]), m[k].n_vertices, _m(m[k])) for k in simplest],
         )
     )
+    ngonal = role("n-gonal")
     out.append(
-        eq(
-            "n = 5, g = 0: m = 10/3 (1 - 2/v) >= 3 exactly when v >= 20",
-            20,
-            int(big[np.argmax(av(5, 0, big) >= 3)]),
+        exact(
+            "eq1.meshes",
+            "Section 4",
+            EQ1,
+            "average valence 2E/V of the "
+            + ", ".join(f"{k} (built with g = {genus[k]})" for k in ngonal)
+            + ", against equation (1) with that g",
+            {k: _eq1(m[k], genus[k]) for k in ngonal},
+            {k: _m(m[k]) for k in ngonal},
         )
     )
-    lim = {n: topology.limit_valence(n) for n in range(3, 9)}
+    honey = role("3-valent g0")
     out.append(
-        eq(
-            "limit of m as v -> inf: 2n/(n-2) for n = 3..8",
-            {n: Fraction(2 * n, n - 2) for n in range(3, 9)},
-            lim,
+        exact(
+            "eq1.no_hexagons_g0",
+            "Section 4",
+            "For g = 0 and n = 6 the equation 1 becomes [...] m = 3 (1 - 2/v) In this equation m "
+            "is always smaller than 3 regardless of the value of v. This shows that it is not "
+            "possible to create a hexagonal mesh for g = 0.",
+            "sum over faces of (6 - sides) and smallest and largest valence of the "
+            + ", ".join(honey)
+            + " (built with g = 0); equation (1) for 3-valent meshes of genus 0 gives 12: "
+            "never 0, never all hexagons",
+            {k: (12, 3, 3) for k in honey},
+            {
+                k: (
+                    int((6 - m[k].face_sizes).sum()),
+                    int(m[k].valences.min()),
+                    int(m[k].valences.max()),
+                )
+                for k in honey
+            },
         )
     )
+    pent = role("pentagonal g0") + ["dodecahedron"]
+    rows = {k: (_n(m[k]), m[k].n_vertices, int(m[k].valences.min())) for k in pent}
+    ok = all(n == 5 and v >= 20 and lo >= 3 for n, v, lo in rows.values())
     out.append(
-        eq(
-            "2n/(n-2) < 3 exactly for n > 6 (no n-gonal schemes)",
-            [7, 8],
-            [n for n, x in lim.items() if x < 3],
+        judged(
+            "eq1.pentagons_g0",
+            "Section 4",
+            "For g = 0 and n = 5 the equation 1 becomes m = 10/3 (1 - 2/v). Here, for values "
+            "of v larger than 20, we can create pentagonal mesh.",
+            "(n, v, smallest valence) of the pentagonal genus-0 meshes: " + fmt(rows),
+            "holds if every one is pentagonal with v >= 20 and no vertex below valence 3",
+            HOLDS if ok else FAILS,
         )
     )
+    grow = ["gyro(cube)", "gyro(cube) x2", "gyro(cube) x3"]
+    gaps = [abs(_m(m[k]) - Fraction(10, 3)) for k in grow]
+    torus_m = _m(m["gyro(hexagonal torus)"])
+    falls = all(b < a for a, b in itertools.pairwise(gaps))
     out.append(
-        eq(
-            "the limit valence of pentagonal meshes is not an integer (10/3); "
-            "of triangles, quads, hexagons it is",
-            {3: True, 4: True, 5: False, 6: True},
-            {n: lim[n].denominator == 1 for n in (3, 4, 5, 6)},
+        judged(
+            "eq1.limit",
+            "Section 4",
+            "Another insteresting case occurs when v goes to infinity. [...] This is the same as "
+            "the value of the m for g = 1",
+            "|2E/V - 10/3| of " + ", ".join(grow) + f": {fmt([float(x) for x in gaps])}; 2E/V "
+            f"of the gyro(hexagonal torus) (g = 1): {fmt(torus_m)}",
+            "holds if the distance to 10/3 falls as v grows and the genus-1 mesh has exactly 10/3",
+            HOLDS if falls and torus_m == Fraction(10, 3) else FAILS,
         )
     )
-    chart = [(r.n, r.m) for r in topology.SCHLAFLI_CHART]
+    pent_all = role("pentagonal g0") + ["dodecahedron", "gyro(hard cube)", "gyro(rabbit) x2"]
+    integer = [k for k in pent_all if _m(m[k]).denominator == 1]
     out.append(
-        eq(
-            "the (n, m) chart",
-            [
-                (Fraction(6), Fraction(3)),
-                (Fraction(5), Fraction(10, 3)),
-                (Fraction(4), Fraction(4)),
-                (Fraction(10, 3), Fraction(5)),
-                (Fraction(3), Fraction(6)),
-            ],
-            chart,
+        judged(
+            "eq1.non_integer",
+            "Section 2 (main results)",
+            "The average valence of vertices (vertex degree) in a pentagonal meshes is "
+            "necessarily rational, while triangular and quadrilateral meshes can have integer "
+            "vertex degree.",
+            "2E/V of the pentagonal meshes: "
+            + fmt({k: _m(m[k]) for k in pent_all})
+            + (f"; an integer for {', '.join(integer)}" if integer else "; none an integer"),
+            "read as 'never an integer' (every 2E/V is rational): holds if no pentagonal "
+            "mesh has an integer average valence (equation (1): 10/3 (1 - 2/v) is the "
+            "integer 3 exactly when v = 20)",
+            FAILS if integer else HOLDS,
+            FAILS,
         )
     )
-    # equation (1) on real meshes: measured 2E/V against the formula
-    for name, m in (
-        ("pentagonalized hard cube", subdivide(shapes.hard_edged_cube(), "pentagonalize", 1, 2)),
-        ("rabbit x2", subdivide(shapes.animal(), "pentagonalize", 2, 2)),
-        ("hexagonal genus 2", shapes.hexagonal_surface(2)),
-        ("gyro(hex. torus)", subdivide(shapes.hexagonal_torus(), "pentagonalize", 1, 2)),
-    ):
-        n = int(m.face_sizes[0])
-        eq1 = Fraction(2 * n, n - 2) * (1 + Fraction(2 * m.genus - 2, m.n_vertices))
-        out.append(
-            eq(
-                f"equation (1) = measured 2E/V on the {name} (n={n}, "
-                f"g={m.genus}, v={m.n_vertices})",
-                eq1,
-                Fraction(2 * m.n_edges, m.n_vertices),
-            )
-        )
     return out

@@ -48,7 +48,10 @@ class Scheme:
         ``"pentagonal"`` for the paper's schemes, ``"comparison"`` otherwise.
     exact_counts : bool
         False when ``counts`` is only an upper bound (``triangulate``, which
-        leaves triangles alone).
+        leaves triangles alone; Conway strings with ``kN`` or ``tN``).
+    bound : str
+        When the upper bound is reached, printed after "at most" by
+        :attr:`formula` (e.g. ``"when no face is a triangle"``).
     """
 
     name: str
@@ -60,6 +63,7 @@ class Scheme:
     options: Mapping[str, float] = field(default_factory=dict)
     family: str = "comparison"
     exact_counts: bool = True
+    bound: str = ""
 
     def __call__(self, mesh: Mesh, **options) -> Mesh:
         return self.func(mesh, **options)
@@ -73,7 +77,9 @@ class Scheme:
         symbols: list[Any] = [_Linear((1, 0, 0)), _Linear((0, 1, 0)), _Linear((0, 0, 1))]
         out = self.counts(*symbols)
         text = "(" + ", ".join(str(x) for x in out) + ")"
-        return text if self.exact_counts else text + " at most (when no face is a triangle)"
+        if self.exact_counts:
+            return text
+        return text + " at most" + (f" ({self.bound})" if self.bound else "")
 
 
 class _Linear:
@@ -131,6 +137,7 @@ _LIST = [
         # without triangles)
         lambda V, E, F: (V, E, F) if 2 * E == 3 * F else (V + F, 3 * E, 2 * E),
         exact_counts=False,
+        bound="when no face is a triangle",
     ),
     Scheme(
         "loop_remesh",
@@ -191,16 +198,31 @@ SCHEMES: dict[str, Scheme] = {s.name: s for s in _LIST}
 def get_scheme(scheme: str | Scheme | Callable) -> Scheme | Callable:
     """Look a scheme up by name; a :class:`Scheme` or callable passes through.
 
+    A name that is not in :data:`SCHEMES` is read as Conway notation
+    (operators only, no seed: ``"dg"``, ``"k4t"``), resolved by
+    :func:`pentanb.notation.resolve`, so the explorer, :func:`pentanb.subdivide`
+    and the step counts accept ``"gC"``-style strings wherever they take a
+    scheme name.
+
     Raises
     ------
     ValueError
-        For an unknown name; the message lists the known ones.
+        For an unknown name that is not Conway notation either; the message
+        lists the known names and says why the notation was refused.
     """
     if isinstance(scheme, Scheme) or (callable(scheme) and not isinstance(scheme, str)):
         return scheme
-    try:
-        return SCHEMES[scheme]
-    except (KeyError, TypeError):
-        raise ValueError(
-            f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}"
-        ) from None
+    if isinstance(scheme, str):
+        if scheme in SCHEMES:
+            return SCHEMES[scheme]
+        from ..notation import resolve
+
+        try:
+            return resolve(scheme)
+        except ValueError as exc:
+            why = str(exc).splitlines()[0] if str(exc) else "not Conway notation"
+            raise ValueError(
+                f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}, "
+                f"or Conway operators such as 'dg' ({why})"
+            ) from None
+    raise ValueError(f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}")

@@ -2,12 +2,23 @@
 
 The matplotlib figures (:mod:`pentanb.viz.mpl`) and the pythreejs views
 (:mod:`pentanb.viz.three`) both colour a face by its number of sides with
-:func:`face_color`, so a pentagon has the same colour everywhere.
+:func:`face_color`, so a pentagon has the same colour everywhere.  Needs
+numpy only.
 """
 
 from __future__ import annotations
 
 import numpy as np
+
+__all__ = [
+    "FACE_COLORS",
+    "LARGE_FACE_COLOR",
+    "EDGE_COLOR",
+    "face_color",
+    "face_label",
+    "face_rgb",
+    "hex_to_rgb",
+]
 
 #: Colour of an n-gon, for n = 3 .. 8 (hex strings, colour-blind friendly
 #: Okabe-Ito palette).  Larger faces share :data:`LARGE_FACE_COLOR`.
@@ -57,12 +68,13 @@ def face_rgb(sizes) -> np.ndarray:
     (m, 3) float
     """
     sizes = np.asarray(sizes, dtype=np.int64)
-    table = np.tile(_hex_to_rgb(LARGE_FACE_COLOR), (max(int(sizes.max(initial=8)), 8) + 1, 1))
+    table = np.tile(hex_to_rgb(LARGE_FACE_COLOR), (max(int(sizes.max(initial=8)), 8) + 1, 1))
     for n, c in FACE_COLORS.items():
-        table[n] = _hex_to_rgb(c)
+        table[n] = hex_to_rgb(c)
     return table[sizes]
 
 
-def _hex_to_rgb(color: str) -> np.ndarray:
+def hex_to_rgb(color: str) -> np.ndarray:
+    """(3,) float in [0, 1]: the RGB of a ``"#rrggbb"`` colour."""
     color = color.lstrip("#")
     return np.array([int(color[i : i + 2], 16) / 255.0 for i in (0, 2, 4)])

@@ -18,7 +18,9 @@ fill it once with::
     npm install --prefix ~/.cache/pentanb/js @jupyter-widgets/html-manager@1.0.15 requirejs@2.3.8
 
 (``.ci/browser-setup.sh`` does this).  Online pages (``offline=False``) are
-small and load those scripts from the jsDelivr CDN instead.
+small and load those scripts from the jsDelivr CDN instead.  The two npm
+versions are written once, in ``pentanb/viz/js_versions.json``, which
+``.ci/browser-setup.sh`` reads too.
 """
 
 from __future__ import annotations
@@ -26,18 +28,38 @@ from __future__ import annotations
 import base64
 import json
 import os
+from html import escape
 from pathlib import Path
 
 import ipywidgets as W
 from ipywidgets.embed import dependency_state, escape_script
 
 from ..mesh import Mesh
+from .explorer import Explorer
+from .steps import StepThrough
+from .three import MeshView, view
 
-__all__ = ["export_html", "js_dir", "offline_scripts", "HTML_MANAGER_VERSION", "REQUIREJS_VERSION"]
+__all__ = [
+    "export_html",
+    "js_dir",
+    "offline_scripts",
+    "js_versions",
+    "HTML_MANAGER_VERSION",
+    "REQUIREJS_VERSION",
+]
+
+#: The file naming the npm packages offline pages inline and their versions.
+JS_VERSIONS_FILE = Path(__file__).with_name("js_versions.json")
+
+
+def js_versions() -> dict[str, str]:
+    """The npm packages of exported pages and their versions (from ``js_versions.json``)."""
+    return dict(json.loads(JS_VERSIONS_FILE.read_text(encoding="utf-8")))
+
 
 #: Versions fetched by ``.ci/browser-setup.sh`` and used by online pages.
-HTML_MANAGER_VERSION = "1.0.15"
-REQUIREJS_VERSION = "2.3.8"
+HTML_MANAGER_VERSION = js_versions()["@jupyter-widgets/html-manager"]
+REQUIREJS_VERSION = js_versions()["requirejs"]
 
 _CDN = "https://cdn.jsdelivr.net/npm"
 
@@ -136,9 +158,6 @@ def _script_block(offline: bool) -> str:
 
 
 def _exportable(obj) -> W.Widget:
-    from .steps import StepThrough
-    from .three import Explorer, MeshView, view
-
     if isinstance(obj, Mesh):
         return view(obj)
     if isinstance(obj, (Explorer, StepThrough)):
@@ -184,9 +203,9 @@ def export_html(obj, path, offline: bool = True, *, title: str = "pentanb") -> P
     manager_state["state"] = state
     spec = widget.get_view_spec()
     page = _PAGE.format(
-        title=_html_escape(title),
+        title=escape(str(title)),
         scripts=scripts,
-        heading=f"<h3>{_html_escape(title)}</h3>" if title else "",
+        heading=f"<h3>{escape(str(title))}</h3>" if title else "",
         state=escape_script(json.dumps(manager_state)),
         views='<script type="application/vnd.jupyter.widget-view+json">\n'
         + escape_script(json.dumps(spec))
@@ -195,7 +214,3 @@ def export_html(obj, path, offline: bool = True, *, title: str = "pentanb") -> P
     path = Path(path)
     path.write_text(page, encoding="utf-8")
     return path
-
-
-def _html_escape(text: str) -> str:
-    return str(text).replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")

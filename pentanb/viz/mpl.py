@@ -2,7 +2,7 @@
 
 Every face is one polygon of a :class:`~mpl_toolkits.mplot3d.art3d.Poly3DCollection`
 (no triangulation), coloured by its number of sides with
-:func:`pentanb.colors.face_rgb` and shaded with a Lambert term from its
+:func:`pentanb.viz.colors.face_rgb` and shaded with a Lambert term from its
 normal, so that a pentagon is the same green here as in the pythreejs views.
 Polygons are built with whole-array indexing (``vertices[corners]``), so a
 mesh of ten thousand faces draws in well under a second.
@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Mapping, Sequence
+from typing import Any
 
 import matplotlib
 import numpy as np
@@ -33,6 +34,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+from numpy.typing import ArrayLike
 
 from ..mesh import Mesh
 from .colors import EDGE_COLOR, face_color, face_label, face_rgb
@@ -92,7 +94,7 @@ def style():
 
 
 # ---------------------------------------------------------------------- geometry
-def face_polygons(mesh: Mesh, faces: np.ndarray | None = None):
+def face_polygons(mesh: Mesh, faces: ArrayLike | None = None):
     """The corner positions of every face, for a polygon collection.
 
     Parameters
@@ -112,10 +114,10 @@ def face_polygons(mesh: Mesh, faces: np.ndarray | None = None):
         corners = mesh.corners
         sel_sizes = sizes
     else:
-        faces = np.asarray(faces, dtype=np.int64)
-        sel_sizes = sizes[faces]
+        chosen = np.asarray(faces, dtype=np.int64)
+        sel_sizes = sizes[chosen]
         # corner indices of the chosen faces, still in CSR order
-        start = np.repeat(offsets[faces], sel_sizes)
+        start = np.repeat(offsets[chosen], sel_sizes)
         local = np.arange(sel_sizes.sum()) - np.repeat(np.cumsum(sel_sizes) - sel_sizes, sel_sizes)
         corners = mesh.corners[start + local]
     pts = mesh.vertices[corners]
@@ -238,7 +240,7 @@ def draw_mesh(
     ax : mpl_toolkits.mplot3d.Axes3D
     mesh : Mesh
     wireframe : bool
-        Draw the edges (in :data:`pentanb.colors.EDGE_COLOR`).
+        Draw the edges (in :data:`pentanb.viz.colors.EDGE_COLOR`).
     shade : bool
         Lambert shading from the face normals (:func:`shaded_colors`).
     title : str, optional
@@ -294,7 +296,7 @@ def label_panel(ax, text: str) -> None:
 def draw_flat(
     ax,
     mesh: Mesh,
-    faces: np.ndarray | None = None,
+    faces: ArrayLike | None = None,
     *,
     wireframe: bool = True,
     alpha: float = 1.0,
@@ -322,9 +324,9 @@ def draw_flat(
     return coll
 
 
-def draw_segments(ax, segments: np.ndarray, **kwargs) -> LineCollection:
+def draw_segments(ax, segments: ArrayLike, **kwargs) -> LineCollection:
     """Draw 2-D segments ((k, 2, 2) float) into a 2-D axes."""
-    coll = LineCollection(np.asarray(segments)[..., :2], **kwargs)
+    coll = LineCollection(list(np.asarray(segments)[..., :2]), **kwargs)
     ax.add_collection(coll)
     return coll
 
@@ -434,25 +436,17 @@ def add_face_legend(
         )
         for n in present
     ]
-    ncol = len(handles) if ncol is None else ncol
+    options: dict[str, Any] = {
+        "ncol": len(handles) if ncol is None else ncol,
+        "frameon": False,
+        "title": title,
+        "title_fontsize": 8.5,
+    }
     if isinstance(fig_or_ax, Figure):
-        return fig_or_ax.legend(
-            handles=handles,
-            loc=loc or "lower center",
-            ncol=ncol,
-            frameon=False,
-            title=title,
-            title_fontsize=8.5,
-            bbox_to_anchor=(0.5, 0.0),
-        )
-    return fig_or_ax.legend(
-        handles=handles,
-        loc=loc or "best",
-        ncol=ncol,
-        frameon=False,
-        title=title,
-        title_fontsize=8.5,
-    )
+        options.update(loc=loc or "lower center", bbox_to_anchor=(0.5, 0.0))
+    else:
+        options.update(loc=loc or "best")
+    return fig_or_ax.legend(handles=handles, **options)
 
 
 def plot_mesh(
@@ -504,14 +498,14 @@ def plot_meshes(
         Go to :func:`draw_mesh` for every panel.
     """
     meshes = list(meshes)
-    titles = [None] * len(meshes) if titles is None else list(titles)
-    if len(titles) != len(meshes):
-        raise ValueError(f"{len(meshes)} meshes but {len(titles)} titles")
+    labels: list[str | None] = [None] * len(meshes) if titles is None else list(titles)
+    if len(labels) != len(meshes):
+        raise ValueError(f"{len(meshes)} meshes but {len(labels)} titles")
     with style():
         fig, axes = panel_figure(
             len(meshes), ncols, panel_size=panel_size, suptitle=suptitle, legend_space=0.5
         )
-        for ax, mesh, title in zip(axes, meshes, titles):
+        for ax, mesh, title in zip(axes, meshes, labels):
             draw_mesh(ax, mesh, title=title, **kwargs)
         add_face_legend(fig, meshes)
     return fig

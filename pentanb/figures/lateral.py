@@ -1,0 +1,221 @@
+"""Beyond the paper's figures: Section 1's "lateral artifact", measured along every edge.
+
+Section 1: "Although, the edge is straight, the first iteration can create a
+wave pattern that does not exist in the original data and the final smooth
+surface include a smooth wave pattern (see [15, 5]). As shown in Figure
+1.C, the new subdivision does not create any lateral artifact."  Section 6
+repeats it for "Figures 1 and 8".
+
+The figure ``lateral`` draws :func:`pentanb.analysis.lateral.study`: (A)
+the profile along an edge of the 10-cell box at level 4, (B) the wave's
+peak-to-peak height level by level on that box, (C) at level 4 against the
+number of cells per edge.  Its panels are charts: :func:`panels` is empty.
+The finding: pentagonalization and pentagon preservation (with two duals)
+leave a wave with the grid's period along a straight edge, about 1.8 % and
+2.3 % of a grid cell high, which does not shrink with the levels;
+honeycomb's is larger and shrinks; vertex insertion leaves none.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from ..analysis import lateral as lt
+from ..mesh import Mesh
+from ..schemes import SCHEMES
+from .claim import FAILS, HOLDS, Claim, fmt, judged
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+TITLE = "Lateral artifact along straight edges (beyond the paper's figures)"
+CAPTION = (
+    "Section 1: 'the new subdivision does not create any lateral artifact'. Here the "
+    "wave along every straight edge of boxes of 3, 6 and 10 cells per edge (and of "
+    "Figure 1's cube) is measured, level by level, for every scheme with two duals."
+)
+LABELS = ("A", "B", "C")
+
+#: The box whose profiles and levels panels (A) and (B) draw.
+BOX = "10 cells"
+#: Schemes drawn in panel (A).
+PROFILED = ("pentagonalize", "preserve_pentagons", "honeycomb", "vertex_insertion")
+#: Colours and line styles of the schemes (the paper's two first).
+STYLE = {
+    "pentagonalize": ("#009E73", "-"),
+    "preserve_pentagons": ("#0072B2", "-"),
+    "honeycomb": ("#D55E00", "--"),
+    "preserve_hexagons": ("#CC79A7", "--"),
+    "loop_remesh": ("#E69F00", ":"),
+    "sqrt3_remesh": ("#56B4E9", ":"),
+    "vertex_insertion": ("#444444", "-."),
+    "corner_cutting": ("#999999", "-."),
+}
+#: What counts as no wave at all (peak-to-peak, box size 2).
+ZERO = 1e-6
+
+
+def panels() -> dict[str, Mesh]:
+    """No mesh panels: every panel of this figure is a chart (``{}``)."""
+    return {}
+
+
+def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
+    """The lateral-artifact study: profiles (A), level by level (B), box by box (C).
+
+    Parameters
+    ----------
+    meshes : dict, optional
+        Ignored (the figure has no mesh panels); accepted like every figure's.
+    """
+    from matplotlib.figure import Figure
+    from matplotlib.lines import Line2D
+
+    from ..viz import mpl as vz
+
+    data = lt.study()
+    levels = np.arange(1, lt.LEVELS + 1)
+    with vz.style():
+        fig = Figure(figsize=(11.0, 4.8), dpi=vz.DPI)
+        axes = list(fig.subplots(1, 3))
+        fig.subplots_adjust(left=0.05, right=0.99, bottom=0.36, top=0.9, wspace=0.3)
+        fig.suptitle(
+            "Lateral artifact: the wave along a straight edge, measured (box size 2)",
+            fontsize=10.5,
+        )
+        # (A) profiles along the edge y = z = 1 of the 10-cell box, level 4
+        ax = axes[0]
+        window, cell = lt.BOXES[BOX][1], lt.BOXES[BOX][2]
+        for i, s in enumerate(PROFILED):
+            x, r = data.profile[BOX, s]
+            color, ls = STYLE[s]
+            ax.plot(x, (r - r.mean()) * 1000 + 8 * (len(PROFILED) - 1 - i), color=color, lw=1.2)
+            ax.text(-window, 8 * (len(PROFILED) - 1 - i) + 2.2, SCHEMES[s].label, fontsize=7)
+        for k in np.arange(-window, window + 1e-9, cell):
+            ax.axvline(k, color="#bbbbbb", lw=0.5, zorder=0)
+        ax.plot([window * 1.04] * 2, [0, 5], color="#333333", lw=1.5, clip_on=False)
+        ax.text(window * 1.06, 2.5, "0.005", fontsize=7, va="center", rotation=90)
+        ax.set_xlabel("position along the edge (grey: grid lines)")
+        ax.set_ylabel("distance from the edge's axis, mean removed")
+        ax.set_yticks([])
+        vz.label_panel(ax, f"(A) profiles, {BOX} per edge, level {lt.LEVELS}")
+        # (B) level by level on the 10-cell box
+        ax = axes[1]
+        for s in lt.LATERAL_SCHEMES:
+            color, ls = STYLE[s]
+            y = np.maximum(data.worst(BOX, s), ZERO)
+            ax.semilogy(levels, y, ls, color=color, marker="o", ms=3)
+        ax.axhline(ZERO, color="#777777", lw=0.6)
+        ax.text(1.02, ZERO * 1.4, "no wave (< 1e-6)", fontsize=7, color="#555555")
+        ax.set_xticks(levels)
+        ax.set_xlabel("subdivision level (remesh + 2 duals)")
+        ax.set_ylabel("wave height, peak to peak (12 edges' largest)")
+        vz.label_panel(ax, f"(B) level by level, {BOX} per edge")
+        # (C) level 4 against the cells per edge
+        ax = axes[2]
+        boxes = [b for b in lt.BOXES if b.endswith("cells")]
+        cells = [int(b.split()[0]) for b in boxes]
+        for s in lt.LATERAL_SCHEMES:
+            color, ls = STYLE[s]
+            last = [max(float(data.worst(b, s)[-1]), ZERO) for b in boxes]
+            ax.loglog(cells, last, ls, color=color, marker="o", ms=3)
+        ax.axhline(ZERO, color="#777777", lw=0.6)
+        ax.set_xticks(cells)
+        ax.set_xticklabels([str(c) for c in cells])
+        ax.minorticks_off()
+        ax.set_xlabel("cells per edge")
+        ax.set_ylabel(f"wave height at level {lt.LEVELS}")
+        vz.label_panel(ax, f"(C) level {lt.LEVELS}, box by box")
+        for ax in axes:
+            ax.grid(alpha=0.25)
+            ax.title.set_y(-0.3)
+        handles = [
+            Line2D([], [], color=STYLE[s][0], ls=STYLE[s][1], label=SCHEMES[s].label)
+            for s in lt.LATERAL_SCHEMES
+        ]
+        fig.legend(handles=handles, loc="lower center", ncol=4, frameon=False, fontsize=7.5)
+    return fig
+
+
+NO_ARTIFACT = "As shown in Figure 1.C, the new subdivision does not create any lateral artifact."
+WAVE = (
+    "if a non-quadrilateral or non-triangular subdivision is applied to such a cube, it is "
+    "hard to represent boundary edges. Although, the edge is straight, the first iteration "
+    "can create a wave pattern that does not exist in the original data and the final "
+    "smooth surface include a smooth wave pattern (see [15, 5])."
+)
+
+
+def _boxes(data: lt.Lateral) -> list[str]:
+    """The boxes of a study, in the order of :data:`~pentanb.analysis.lateral.BOXES`."""
+    have = {b for b, _ in data.amplitude}
+    return [b for b in lt.BOXES if b in have]
+
+
+def _table(data: lt.Lateral, scheme: str) -> str:
+    rows = []
+    for b in _boxes(data):
+        w = data.worst(b, scheme)
+        cell = lt.BOXES[b][2]
+        rows.append(
+            f"{b}: " + ", ".join(f"{v:.4f}" for v in w) + f" ({w[-1] / cell:.1%} of a cell)"
+        )
+    return "; ".join(rows)
+
+
+def _period(data: lt.Lateral, scheme: str) -> str:
+    box = BOX if BOX in _boxes(data) else _boxes(data)[-1]
+    x, r = data.profile[box, scheme]
+    wl = lt.wavelength(x, r)
+    cell = lt.BOXES[box][2]
+    where = f"{box}, last level"
+    return (
+        f"{where}: no wave" if np.isnan(wl) else f"{where}: period {wl:.3f} = {wl / cell:.2f} cells"
+    )
+
+
+def claims(meshes: Mapping[str, Mesh] | None = None, data: lt.Lateral | None = None) -> list[Claim]:
+    """Section 1's lateral artifact, measured on every box of the study.
+
+    Parameters
+    ----------
+    meshes : dict, optional
+        Ignored (the figure has no mesh panels).
+    data : Lateral, optional
+        The study (default: :func:`pentanb.analysis.lateral.study`); the tests
+        pass a wrong one.
+    """
+    data = lt.study() if data is None else data
+    out = []
+    for s in ("pentagonalize", "preserve_pentagons"):
+        peak = max(float(data.worst(b, s).max()) for b in _boxes(data))
+        out.append(
+            judged(
+                f"lateral.{s}",
+                "Section 1, Figure 1.C; Section 6",
+                NO_ARTIFACT,
+                f"{SCHEMES[s].label} + two duals, peak-to-peak height of the wave along the 12 "
+                f"straight edges (largest), levels 1-{lt.LEVELS}, box size 2: "
+                f"{_table(data, s)}; {_period(data, s)}",
+                f"holds if every height is below {ZERO:g} (no wave) on every box at every level",
+                HOLDS if peak <= ZERO else FAILS,
+                FAILS,
+            )
+        )
+    s = "honeycomb"
+    low = min(float(data.worst(b, s).min()) for b in _boxes(data))
+    out.append(
+        judged(
+            "lateral.honeycomb",
+            "Section 1",
+            WAVE,
+            f"{SCHEMES[s].label} ([5]) + two duals, peak-to-peak height along the 12 edges "
+            f"(largest), levels 1-{lt.LEVELS}: {_table(data, s)}; smallest {fmt(low)}",
+            f"holds if there is a wave (height above {ZERO:g}) on every box at every level",
+            HOLDS if low > ZERO else FAILS,
+        )
+    )
+    return out

@@ -1,0 +1,161 @@
+"""Meshes from files and other libraries, and back.
+
+``read(path)`` and ``write(mesh, path)`` choose the format by the file's
+ending (any case) or by ``format=``:
+
+========  =====================================  ==========================
+format    read                                   write
+========  =====================================  ==========================
+``obj``   ``v`` and ``f`` lines, polygons kept    exact (``repr`` precision)
+``off``   OFF, COFF, NOFF; polygons kept          exact (``repr`` precision)
+``ply``   ASCII and binary (both byte orders);   binary little-endian
+          polygons kept                          (``ascii=True``,
+                                                 ``byteorder="big"``); exact
+``stl``   ASCII and binary; coincident corners   binary (float32; polygons
+          welded into shared vertices            fanned into triangles) or
+                                                 ``ascii=True`` (exact)
+========  =====================================  ==========================
+
+``write`` writes exactly the path it is given, or refuses before writing
+anything; a failure leaves no half-written file.  Every reader reads its
+file as bytes in blocks, checks counts as it goes (a damaged file fails at
+its first inconsistency) and names the file and line of what it refuses.
+
+Other libraries (imported only when these are called; ``pip install
+pentanb[convert]``): :func:`from_trimesh`, :func:`to_trimesh`,
+:func:`from_meshio`, :func:`to_meshio`.
+"""
+
+from __future__ import annotations
+
+import os
+from functools import partial
+from typing import Any
+
+from ..mesh import Mesh
+from . import obj, off, ply, stl
+from ._common import FORMATS, IgnoredDataWarning, as_path, check_mesh, format_of, write_atomically
+from .convert import from_meshio, from_trimesh, to_meshio, to_trimesh
+from .obj import read_obj, write_obj
+from .off import read_off, write_off
+from .ply import read_ply, write_ply
+from .stl import read_stl, write_stl
+
+__all__ = [
+    "read",
+    "write",
+    "read_obj",
+    "read_off",
+    "read_ply",
+    "read_stl",
+    "write_obj",
+    "write_off",
+    "write_ply",
+    "write_stl",
+    "from_trimesh",
+    "to_trimesh",
+    "from_meshio",
+    "to_meshio",
+    "FORMATS",
+    "IgnoredDataWarning",
+]
+
+_READERS = {"obj": read_obj, "off": read_off, "ply": read_ply, "stl": read_stl}
+_WRITERS = {"obj": obj._write, "off": off._write, "ply": ply._write, "stl": stl._write}
+#: The keyword options of every format's reader and writer.
+READ_OPTIONS: dict[str, tuple[str, ...]] = {
+    "obj": (),
+    "off": (),
+    "ply": (),
+    "stl": ("tolerance",),
+}
+WRITE_OPTIONS: dict[str, tuple[str, ...]] = {
+    "obj": (),
+    "off": (),
+    "ply": ("ascii", "byteorder"),
+    "stl": ("ascii",),
+}
+
+
+def _check_options(caller: str, format: str, options: dict[str, Any], known: tuple[str, ...]):
+    unknown = sorted(set(options) - set(known))
+    if unknown:
+        takes = ", ".join(known) if known else "no options"
+        raise TypeError(f"{caller}: format {format!r} takes {takes}; got {', '.join(unknown)}")
+
+
+def read(path: str | os.PathLike, format: str | None = None, **options: Any) -> Mesh:
+    """Read a mesh from an OBJ, OFF, PLY or STL file.
+
+    Parameters
+    ----------
+    path : str or path-like
+    format : {"obj", "off", "ply", "stl"}, optional
+        The file's format; default: from the suffix of ``path`` (any case).
+    **options
+        Options of the format's reader: ``tolerance`` for STL (see
+        :func:`read_stl`).
+
+    Returns
+    -------
+    Mesh
+
+    Raises
+    ------
+    MeshError
+        A malformed file (a bad number, a face index out of range, counts
+        that do not match); the message names the file and line.  A file
+        whose mesh is not a closed manifold raises the mesh's own error,
+        prefixed with the file name.
+    ValueError
+        An unknown suffix (without ``format``) or format.
+    TypeError
+        ``path`` is not a path, or an option the format does not take.
+    """
+    path = as_path(path, "read")
+    fmt = format_of(path, format)
+    _check_options("read", fmt, options, READ_OPTIONS[fmt])
+    return _READERS[fmt](path, **options)
+
+
+def write(mesh: Mesh, path: str | os.PathLike, format: str | None = None, **options: Any) -> None:
+    """Write ``mesh`` to exactly ``path``, as OBJ, OFF, PLY or STL.
+
+    Parameters
+    ----------
+    mesh : Mesh
+    path : str or path-like
+        The file to write; its name is used as given.
+    format : {"obj", "off", "ply", "stl"}, optional
+        The format; default: from the suffix of ``path`` (any case).  Needed
+        for any other name (``model.v2``).
+    **options
+        Options of the format's writer: ``ascii`` and ``byteorder`` for PLY
+        (:func:`write_ply`), ``ascii`` for STL (:func:`write_stl`).
+
+    Raises
+    ------
+    ValueError
+        Before anything is written: a suffix that names no format and no
+        ``format`` (the message names the suffix and the known ones), an
+        unknown ``format``, a ``format`` that contradicts the suffix, or a
+        bad option value.
+    TypeError
+        ``mesh`` is not a :class:`~pentanb.Mesh`, ``path`` not a path, or an
+        option the format does not take.
+
+    Notes
+    -----
+    The file is written to a temporary name first and renamed, so a failure
+    leaves nothing half-written (and an existing file as it was).
+    """
+    check_mesh(mesh, "write")
+    path = as_path(path, "write")
+    fmt = format_of(path, format)
+    _check_options("write", fmt, options, WRITE_OPTIONS[fmt])
+    writer = _WRITERS[fmt]
+    if fmt == "ply":
+        ply.check_write_options(**options)
+    elif fmt == "stl":
+        stl.check_write_options(**options)
+    write_atomically(path, partial(writer, mesh, **options))

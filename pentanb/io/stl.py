@@ -1,0 +1,341 @@
+"""STL: triangles as loose corner triples, welded into a mesh with shared vertices.
+
+An STL file lists every triangle with its own three corners (and a normal,
+ignored here); a corner shared by six triangles is written six times.
+:func:`read_stl` *welds* the corners: corners at the same point become one
+vertex.  By default "the same point" means equal coordinates (after
+``-0.0`` is taken as ``0.0``), which is what every STL writer produces for a
+shared corner; with ``tolerance > 0`` corners closer than that are merged
+too.  The welded triangles must form a closed, consistently oriented
+manifold (the paper's meshes), or a :class:`~pentanb.MeshError` says why.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import IO, Any
+
+import numpy as np
+
+from ..mesh import Mesh, MeshError
+from ._common import as_path, check_mesh, line_blocks, parse_floats, scan, show
+from .obj import WRITE_ROWS
+
+__all__ = ["read_stl", "write_stl", "weld"]
+
+_BINARY = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)), ("attribute", "<u2")])
+
+# the keywords of an ASCII STL, by code
+_KEYWORDS = [b"solid", b"facet", b"outer", b"vertex", b"endloop", b"endfacet", b"endsolid"]
+SOLID, FACET, OUTER, VERTEX, ENDLOOP, ENDFACET, ENDSOLID = range(7)
+_FACET_PATTERN = np.array([FACET, OUTER, VERTEX, VERTEX, VERTEX, ENDLOOP, ENDFACET])
+
+
+def read_stl(path: str | os.PathLike, tolerance: float = 0.0) -> Mesh:
+    """Read an STL file (binary or ASCII) and weld its corners into shared vertices.
+
+    Parameters
+    ----------
+    path : str or path-like
+    tolerance : float, >= 0
+        Corners at exactly equal coordinates are always one vertex.  With
+        ``tolerance > 0``, corners closer than ``tolerance`` (Euclidean
+        distance, in the file's units) are merged too, transitively: a
+        chain of corners each within ``tolerance`` of the next becomes one
+        vertex, at the position of its first corner in the file.  Needs
+        scipy.
+
+    Returns
+    -------
+    Mesh
+        Triangles in the file's order; vertices in the order their first
+        corner appears.
+
+    Raises
+    ------
+    MeshError
+        A damaged file (a size that does not match a binary file's count, a
+        bad ASCII line, a facet that is not a triangle), a facet whose
+        corners weld into fewer than three vertices, or welded triangles
+        that are not a closed manifold (the mesh's message, e.g. the first
+        boundary edge and the number of boundary loops).
+    """
+    path = as_path(path, "read_stl")
+    tolerance = _check_tolerance(tolerance)
+    with open(path, "rb") as fh:
+        size = os.fstat(fh.fileno()).st_size
+        head = fh.read(84)
+        count = int(np.frombuffer(head, "<u4", 1, 80)[0]) if len(head) == 84 else -1
+        if count >= 0 and size == 84 + 50 * count:
+            corners = _read_binary(fh, count)
+            lines = None
+        elif head.lstrip().startswith(b"solid"):
+            fh.seek(0)
+            corners, lines = _read_text(fh, path)
+        elif count >= 0 and all(9 <= b < 127 for b in head):
+            raise MeshError(
+                f"{path}:1: text that does not start with 'solid': not an ASCII STL file (and "
+                "not a binary one: its size does not match)"
+            )
+        elif count >= 0:
+            raise MeshError(
+                f"{path}: a binary STL whose header says {count:,} triangles "
+                f"({84 + 50 * count:,} bytes) but the file has {size:,} bytes"
+            )
+        else:
+            raise MeshError(f"{path}: not an STL file (no 'solid' line, too short for binary STL)")
+    if corners.shape[0] == 0:
+        raise MeshError(f"{path}: no triangles")
+    bad = np.flatnonzero(~np.isfinite(corners).all(axis=1))
+    if bad.size:
+        raise MeshError(
+            f"{path}: facet {int(bad[0]) // 3}{_at(lines, int(bad[0]) // 3)} has a non-finite "
+            f"coordinate {corners[bad[0]].tolist()}"
+        )
+    vertices, index = weld(corners, tolerance)
+    tri = index.reshape(-1, 3)
+    flat = np.flatnonzero(
+        (tri[:, 0] == tri[:, 1]) | (tri[:, 1] == tri[:, 2]) | (tri[:, 0] == tri[:, 2])
+    )
+    if flat.size:
+        f = int(flat[0])
+        raise MeshError(
+            f"{path}: facet {f}{_at(lines, f)} has two corners at the same point after welding "
+            f"{corners[3 * f : 3 * f + 3].tolist()} ({flat.size:,} such facets): a facet of no "
+            "area cannot be part of a closed manifold"
+        )
+    try:
+        mesh = Mesh._new(vertices, index, np.arange(0, index.size + 1, 3, dtype=np.int64))
+        mesh._validate()
+    except MeshError as exc:
+        raise MeshError(
+            f"{path}: the {tri.shape[0]:,} facets, welded into {vertices.shape[0]:,} vertices "
+            f"(tolerance {tolerance}), are not a closed manifold: {exc}"
+        ) from None
+    return mesh
+
+
+def _at(lines: np.ndarray | None, facet: int) -> str:
+    return "" if lines is None else f" (line {int(lines[facet])})"
+
+
+def _check_tolerance(tolerance: Any) -> float:
+    if isinstance(tolerance, bool) or not isinstance(tolerance, (int, float, np.number)):
+        raise TypeError(f"tolerance must be a number >= 0, got {type(tolerance).__name__}")
+    if not np.isfinite(tolerance) or tolerance < 0:
+        raise ValueError(f"tolerance must be a finite number >= 0, got {tolerance!r}")
+    return float(tolerance)
+
+
+def _read_binary(fh: IO[bytes], count: int) -> np.ndarray:
+    rows = np.fromfile(fh, dtype=_BINARY, count=count)
+    return rows["corners"].reshape(-1, 3).astype(np.float64)
+
+
+def _read_text(fh: IO[bytes], path: Path) -> tuple[np.ndarray, np.ndarray]:
+    """ASCII STL: the corners (3 per facet) and the line of every facet."""
+    codes: list[np.ndarray] = []
+    numbers: list[np.ndarray] = []
+    points: list[np.ndarray] = []
+    for lineno, block in line_blocks(fh, path, "STL"):
+        s = scan(block, comments=False)
+        lines = np.flatnonzero(s.ntok)
+        key = s.tok[s.first[lines]]
+        code = np.full(lines.size, -1, dtype=np.int8)
+        for c, word in enumerate(_KEYWORDS):
+            at = key[:, None] + np.arange(len(word) + 1)
+            ok = at[:, -1] < s.buf.size
+            match = ok.copy()
+            match[ok] = np.all(s.buf[at[ok, :-1]] == np.frombuffer(word, np.uint8), axis=1)
+            match[ok] &= s.buf[at[ok, -1]] <= 32
+            code[match] = c
+        unknown = np.flatnonzero(code < 0)
+        if unknown.size:
+            line = int(lines[unknown[0]])
+            raise MeshError(
+                f"{path}:{lineno + line}: not an STL line: "
+                f"{show(block[int(s.start[line]) : int(s.end[line])])}"
+            )
+        vl = lines[code == VERTEX]
+        if vl.size:
+            wrong = np.flatnonzero(s.ntok[vl] != 4)
+            s.buf[s.tok[s.first[vl]][:, None] + np.arange(6)] = 32
+            values = None if wrong.size else parse_floats(s.select(vl, False), 3 * vl.size, 3)
+            if values is None:
+                _bad_vertex(block, s, vl, lineno, path)
+            points.append(np.asarray(values).reshape(-1, 3))
+        codes.append(code)
+        numbers.append(lineno + lines)
+    code = np.concatenate(codes) if codes else np.zeros(0, np.int8)
+    number = np.concatenate(numbers) if numbers else np.zeros(0, np.int64)
+    if not code.size or code[0] != SOLID:
+        raise MeshError(f"{path}:{int(number[0]) if number.size else 1}: no 'solid' line")
+    body = (code != SOLID) & (code != ENDSOLID)
+    c, n = code[body], number[body]
+    usable = c.size - c.size % 7
+    rows = c[:usable].reshape(-1, 7)
+    wrong = np.flatnonzero((rows != _FACET_PATTERN).any(axis=1))
+    if wrong.size or usable != c.size:
+        r = int(wrong[0]) if wrong.size else usable // 7
+        seen = c[7 * r : 7 * r + 7]
+        j = int(np.argmax(seen != _FACET_PATTERN[: seen.size])) if seen.size else 0
+        if seen.size and seen[j] == _FACET_PATTERN[j]:
+            j = seen.size  # the file ends inside this facet
+        line = int(n[7 * r + j]) if 7 * r + j < n.size else int(number[-1])
+        found = _KEYWORDS[int(seen[j])].decode() if j < seen.size else "the end of the file"
+        raise MeshError(
+            f"{path}:{line}: facet {r} is not 'facet / outer loop / 3 vertex / endloop / "
+            f"endfacet': expected {_KEYWORDS[int(_FACET_PATTERN[j])].decode()!r}, found "
+            f"{found!r} (STL facets are triangles)"
+        )
+    corners = np.concatenate(points) if points else np.zeros((0, 3))
+    return corners, n[0::7]
+
+
+def _bad_vertex(block, s, vl, lineno, path):
+    for line in vl.tolist():
+        text = block[int(s.start[line]) : int(s.end[line])]
+        parts = text.split()
+        try:
+            if len(parts) != 4:
+                raise ValueError
+            [float(x) for x in parts[1:]]
+        except ValueError:
+            raise MeshError(
+                f"{path}:{lineno + line}: a vertex line needs 3 numbers: {show(text)}"
+            ) from None
+    raise MeshError(f"{path}:{lineno}: unreadable vertex lines in this block")
+
+
+def weld(points: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """Merge coincident points.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+    tolerance : float, >= 0
+        0: points with equal coordinates (``-0.0 == 0.0``) merge.  Above 0:
+        also points closer than ``tolerance``, transitively (needs scipy).
+
+    Returns
+    -------
+    vertices : (n, 3) float
+        One point per group, the group's first, in the order of first
+        appearance.
+    index : (k,) int
+        The vertex of every point.
+    """
+    p = np.ascontiguousarray(points, dtype=np.float64) + 0.0  # -0.0 becomes 0.0
+    label, first = _groups(p)
+    if tolerance > 0 and first.size > 1:
+        merged = _near(p[first], tolerance)
+        merged_first = np.full(int(merged.max()) + 1, p.shape[0], dtype=np.int64)
+        np.minimum.at(merged_first, merged, first)
+        label, first = merged[label], merged_first
+    by_first = np.argsort(first, kind="stable")
+    rank = np.empty_like(by_first)
+    rank[by_first] = np.arange(by_first.size)
+    return p[first[by_first]], rank[label]
+
+
+def _groups(p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Group equal points: a group label for every point and each group's first point.
+
+    One sort by a 64-bit hash of the coordinates' bits, then a check that
+    the points sharing a hash are equal; if two different points share one
+    (a collision), a lexicographic sort of the coordinates instead.
+    """
+    cols = np.ascontiguousarray(p.T)  # one row per coordinate: 1-D takes are fastest
+    key = _hash(cols)
+    order = np.argsort(key)
+    sk = key.take(order)
+    runs = np.ones(p.shape[0], dtype=bool)
+    runs[1:] = sk[1:] != sk[:-1]
+    sorted_cols = [c.take(order) for c in cols]
+    same = np.ones(p.shape[0] - 1, dtype=bool)
+    for c in sorted_cols:
+        same &= c[1:] == c[:-1]
+    if np.any(~runs[1:] & ~same):  # a collision: sort the coordinates themselves
+        order = np.lexsort(cols[::-1])
+        sorted_cols = [c.take(order) for c in cols]
+        runs[1:] = False
+        for c in sorted_cols:
+            runs[1:] |= c[1:] != c[:-1]
+    starts = np.flatnonzero(runs)
+    label = np.empty(p.shape[0], dtype=np.int64)
+    label[order] = np.cumsum(runs) - 1
+    return label, np.minimum.reduceat(order, starts)
+
+
+def _hash(cols: np.ndarray) -> np.ndarray:
+    """(n,) uint64: a hash of the bits of the coordinates ``cols`` (3, n)."""
+    key = np.zeros(cols.shape[1], dtype=np.uint64)
+    for b, k in zip(cols.view(np.uint64), (0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B1)):
+        # fold the high bits (sign, exponent, the mantissa's top) down before mixing
+        key += (b ^ (b >> np.uint64(29))) * np.uint64(k)
+    key ^= key >> np.uint64(31)
+    return key
+
+
+def _near(points: np.ndarray, tolerance: float) -> np.ndarray:
+    """A group label for every point: points closer than ``tolerance``, transitively."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import cKDTree
+
+    n = points.shape[0]
+    pairs = cKDTree(points).query_pairs(tolerance, output_type="ndarray")
+    graph = coo_matrix((np.ones(len(pairs), dtype=np.int8), (pairs[:, 0], pairs[:, 1])), (n, n))
+    return connected_components(graph, directed=False)[1].astype(np.int64)
+
+
+def check_write_options(ascii: Any = False) -> None:
+    """Refuse bad :func:`write_stl` options (before anything is written)."""
+    if not isinstance(ascii, (bool, np.bool_)):
+        raise TypeError(f"write_stl: ascii must be True or False, got {ascii!r}")
+
+
+def write_stl(mesh: Mesh, path: str | os.PathLike, *, ascii: bool = False) -> None:
+    """Write an STL file to exactly ``path``: binary (default) or ``ascii=True``.
+
+    STL holds triangles only: every polygon is fanned from its first corner
+    (:meth:`Mesh.fan_triangles`), so reading the file back gives the
+    triangles, not the polygons.  Binary STL stores ``float32``
+    coordinates (a round trip is exact only for positions that are float32
+    numbers); ASCII STL is written with ``repr`` precision (exact).  Each
+    facet's normal is its polygon's unit normal.
+    """
+    from . import write
+
+    write(mesh, path, format="stl", ascii=ascii)
+
+
+def _write(mesh: Mesh, fh: IO[bytes], ascii: bool = False) -> None:
+    check_mesh(mesh, "write_stl")
+    check_write_options(ascii)
+    tris, face = mesh.fan_triangles()
+    normals = mesh.face_normals
+    v = mesh.vertices
+    if not ascii:
+        fh.write(b"pentanb binary STL".ljust(80, b" "))
+        fh.write(np.array([tris.shape[0]], dtype="<u4").tobytes())
+    else:
+        fh.write(b"solid pentanb\n")
+    facet = (
+        "facet normal %r %r %r\n outer loop\n  vertex %r %r %r\n  vertex %r %r %r\n"
+        "  vertex %r %r %r\n endloop\nendfacet\n"
+    )
+    for a in range(0, tris.shape[0], WRITE_ROWS):
+        t = tris[a : a + WRITE_ROWS]
+        n = normals[face[a : a + WRITE_ROWS]]
+        if ascii:
+            values = np.concatenate([n, v[t].reshape(-1, 9)], axis=1)
+            fh.write(((facet * t.shape[0]) % tuple(values.ravel().tolist())).encode())
+        else:
+            rows = np.zeros(t.shape[0], dtype=_BINARY)
+            rows["normal"] = n
+            rows["corners"] = v[t]
+            fh.write(rows.tobytes())
+    if ascii:
+        fh.write(b"endsolid pentanb\n")

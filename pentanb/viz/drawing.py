@@ -1,0 +1,365 @@
+"""What a picture shows, as numpy arrays: the data every 3D view is drawn from.
+
+Needs numpy only (no matplotlib, no widgets), so it can be tested and reused
+without a browser.  :mod:`pentanb.viz.three` turns a :class:`Drawing` into
+pythreejs widgets; :mod:`pentanb.viz.stages` builds the drawings of the
+step-through.
+
+How a mesh becomes WebGL buffers
+--------------------------------
+A polygon face is drawn as the fan of triangles from its first corner,
+:meth:`pentanb.Mesh.fan_triangles`.  So that each face keeps one flat
+colour, the buffers are per *triangle corner*, not per vertex: the
+``position`` buffer holds ``vertices[triangles]`` (three rows per triangle)
+and ``color`` the colour of each triangle's face on its three rows.  Flat
+shading (``MeshPhongMaterial`` with ``flatShading``) needs no normals.
+Edges are one ``LineSegments`` whose ``position`` holds the two ends of
+every edge; marked points are one ``Points``.
+"""
+
+from __future__ import annotations
+
+import html
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..mesh import Mesh
+from .colors import EDGE_COLOR, face_color, face_label, face_rgb, hex_to_rgb
+
+__all__ = [
+    "POINT_COLOR",
+    "Drawing",
+    "drawing",
+    "as_drawing",
+    "size_histogram",
+    "Buffers",
+    "buffers",
+    "legend_html",
+    "counts_text",
+    "error_html",
+    "camera_fit",
+    "look_at_quaternion",
+]
+
+#: Colour of marked points (the new vertices of a step-through).
+POINT_COLOR = "#000000"
+
+
+@dataclass(frozen=True)
+class Drawing:
+    """Everything one 3D picture shows: polygons, line segments and points.
+
+    The polygons are the faces of a mesh, fanned into triangles by
+    :meth:`pentanb.Mesh.fan_triangles`, each face in one flat colour (which
+    need not be its face-size colour: the step-through colours pieces by
+    stage).  Build one with :func:`drawing`.
+
+    Attributes
+    ----------
+    vertices : (n, 3) float
+        Positions the triangles index.
+    triangles : (T, 3) int
+        Vertex indices of the triangles.
+    triangle_face : (T,) int
+        The face each triangle belongs to.
+    face_colors : (m, 3) float
+        RGB in [0, 1] per face.
+    segments : (S, 2, 3) float
+        The two ends of every line segment (edges).
+    segment_colors : (S, 3) float, optional
+        RGB per segment; default :data:`pentanb.viz.colors.EDGE_COLOR`.
+    points : (k, 3) float, optional
+        Positions of points to mark.
+    point_colors : (k, 3) float, optional
+        RGB per point; default :data:`POINT_COLOR`.
+    legend : dict int -> int
+        Number of faces per face size, for the legend.
+    counts : (V, E, F) or None
+        The mesh's counts, shown under the legend.
+    """
+
+    vertices: NDArray[np.float64]
+    triangles: NDArray[np.int64]
+    triangle_face: NDArray[np.int64]
+    face_colors: NDArray[np.float64]
+    segments: NDArray[np.float64]
+    segment_colors: NDArray[np.float64] | None = None
+    points: NDArray[np.float64] | None = None
+    point_colors: NDArray[np.float64] | None = None
+    legend: dict[int, int] = field(default_factory=dict)
+    counts: tuple[int, int, int] | None = None
+
+    @property
+    def n_faces(self) -> int:
+        """Number of polygons drawn."""
+        return len(self.face_colors)
+
+    @property
+    def n_triangles(self) -> int:
+        """Number of triangles drawn."""
+        return len(self.triangles)
+
+
+def size_histogram(sizes: ArrayLike) -> dict[int, int]:
+    """Number of faces per face size: ``{n: count}`` in increasing ``n``.
+
+    Parameters
+    ----------
+    sizes : (m,) int
+        Number of sides of each face (any subset of a mesh's faces).
+    """
+    values, counts = np.unique(np.asarray(sizes, dtype=np.int64), return_counts=True)
+    return {int(a): int(b) for a, b in zip(values, counts)}
+
+
+def drawing(
+    mesh: Mesh,
+    *,
+    face_colors: ArrayLike | None = None,
+    segments: ArrayLike | None = None,
+    segment_colors: ArrayLike | None = None,
+    points: ArrayLike | None = None,
+    point_colors: ArrayLike | None = None,
+    legend: dict[int, int] | None = None,
+    show_counts: bool = True,
+) -> Drawing:
+    """The :class:`Drawing` of a mesh: its faces and edges, or what you give instead.
+
+    Parameters
+    ----------
+    mesh : Mesh
+    face_colors : (m, 3) float, optional
+        Default: each face's face-size colour (:func:`pentanb.viz.colors.face_rgb`).
+    segments : (S, 2, 3) float, optional
+        Default: the mesh's edges.
+    segment_colors : (S, 3) float, optional
+    points, point_colors : (k, 3) float, optional
+        Points to mark (default none).
+    legend : dict int -> int, optional
+        Default: the mesh's face-size histogram.
+    show_counts : bool
+        Put the mesh's V, E, F under the legend.
+
+    Returns
+    -------
+    Drawing
+    """
+    if not isinstance(mesh, Mesh):
+        raise TypeError(f"drawing() expects a pentanb.Mesh, got {type(mesh).__name__}")
+    v = np.asarray(mesh.vertices, dtype=np.float64)
+    triangles, triangle_face = mesh.fan_triangles()
+    return Drawing(
+        vertices=v,
+        triangles=triangles,
+        triangle_face=triangle_face,
+        face_colors=(
+            face_rgb(mesh.face_sizes)
+            if face_colors is None
+            else np.asarray(face_colors, dtype=np.float64)
+        ),
+        segments=v[mesh.edges] if segments is None else np.asarray(segments, dtype=np.float64),
+        segment_colors=None if segment_colors is None else np.asarray(segment_colors, np.float64),
+        points=None if points is None else np.asarray(points, dtype=np.float64),
+        point_colors=None if point_colors is None else np.asarray(point_colors, np.float64),
+        legend=mesh.face_size_histogram() if legend is None else dict(legend),
+        counts=(mesh.n_vertices, mesh.n_edges, mesh.n_faces) if show_counts else None,
+    )
+
+
+def as_drawing(obj: Mesh | Drawing) -> Drawing:
+    """A Drawing as it is; a Mesh as :func:`drawing` draws it."""
+    if isinstance(obj, Drawing):
+        return obj
+    if isinstance(obj, Mesh):
+        return drawing(obj)
+    raise TypeError(f"expected a pentanb.Mesh or a Drawing, got {type(obj).__name__}")
+
+
+def _bytes(rgb: ArrayLike) -> NDArray[np.uint8]:
+    """RGB in [0, 1] as bytes 0 .. 255 (exact for the hex colours of the palette)."""
+    return np.rint(np.clip(np.asarray(rgb, dtype=np.float64), 0.0, 1.0) * 255).astype(np.uint8)
+
+
+def _rows(colors: ArrayLike | None, default: str, n: int, repeat: int) -> NDArray[np.uint8]:
+    if colors is None:
+        return np.tile(_bytes(hex_to_rgb(default)), (n * repeat, 1))
+    return np.repeat(_bytes(colors).reshape(-1, 3), repeat, axis=0)
+
+
+@dataclass(frozen=True)
+class Buffers:
+    """The arrays WebGL draws a :class:`Drawing` from.
+
+    Positions are float32; colours are bytes (uint8, 0 .. 255), drawn as
+    normalized attributes, a quarter of the bytes of float colours.
+
+    Attributes
+    ----------
+    position : (3T, 3) float32
+        Three rows per triangle: its corners.
+    color : (3T, 3) uint8
+        The colour of the triangle's face, on its three rows.
+    edge_position : (2S, 3) float32
+        Two rows per segment: its ends.
+    edge_color : (2S, 3) uint8
+    point_position : (k, 3) float32
+    point_color : (k, 3) uint8
+    edge_count, point_count : int
+        S and k.  WebGL buffers are never empty: no triangle, segment or
+        point becomes one hidden point, and these counts say how many there
+        really are.
+    """
+
+    position: NDArray[np.float32]
+    color: NDArray[np.uint8]
+    edge_position: NDArray[np.float32]
+    edge_color: NDArray[np.uint8]
+    point_position: NDArray[np.float32]
+    point_color: NDArray[np.uint8]
+    edge_count: int
+    point_count: int
+
+
+def buffers(d: Drawing) -> Buffers:
+    """The WebGL arrays of a drawing (see :class:`Buffers`)."""
+    position = np.asarray(d.vertices, dtype=np.float32)[d.triangles].reshape(-1, 3)
+    color = _rows(np.asarray(d.face_colors)[d.triangle_face], "#000000", 0, 3)
+    seg = np.asarray(d.segments, dtype=np.float32).reshape(-1, 3)
+    seg_color = _rows(d.segment_colors, EDGE_COLOR, len(seg) // 2, 2)
+    pts = (
+        np.zeros((0, 3), np.float32)
+        if d.points is None
+        else np.asarray(d.points, dtype=np.float32).reshape(-1, 3)
+    )
+    pt_color = _rows(d.point_colors, POINT_COLOR, len(pts), 1)
+    vertices = np.asarray(d.vertices, dtype=np.float32).reshape(-1, 3)
+    centre = vertices[:1] if len(vertices) else np.zeros((1, 3), np.float32)
+    hidden = np.zeros((1, 3), np.uint8)
+    return Buffers(
+        position=np.ascontiguousarray(position) if len(position) else centre.copy(),
+        color=np.ascontiguousarray(color) if len(position) else hidden.copy(),
+        edge_position=seg if len(seg) else np.repeat(centre, 2, axis=0),
+        edge_color=seg_color if len(seg) else np.zeros((2, 3), np.uint8),
+        point_position=pts if len(pts) else centre.copy(),
+        point_color=pt_color if len(pts) else hidden.copy(),
+        edge_count=len(seg) // 2,
+        point_count=len(pts),
+    )
+
+
+def legend_html(legend: dict[int, int], counts: tuple[int, int, int] | None = None) -> str:
+    """HTML of the colour legend: a swatch, a count and a label per face size.
+
+    Parameters
+    ----------
+    legend : dict int -> int
+        Faces per face size.
+    counts : (V, E, F), optional
+        Written after the swatches.
+    """
+    items = []
+    for n in sorted(legend):
+        items.append(
+            '<span style="white-space:nowrap;margin-right:12px">'
+            f'<span style="display:inline-block;width:12px;height:12px;'
+            f"background:{face_color(n)};border:1px solid {EDGE_COLOR};"
+            'vertical-align:middle;margin-right:4px"></span>'
+            f"{legend[n]:,} {face_label(n)}</span>"
+        )
+    text = "".join(items)
+    if counts is not None:
+        V, E, F = counts
+        text += (
+            f'<span style="white-space:nowrap;color:#555">V = {V:,}, E = {E:,}, F = {F:,}</span>'
+        )
+    return f'<div class="pentanb-legend" style="line-height:1.6">{text}</div>'
+
+
+def counts_text(mesh: Mesh) -> str:
+    """One line of HTML: V, E, F and the number of faces per size."""
+    sizes = ", ".join(f"{c:,} {face_label(n)}" for n, c in mesh.face_size_histogram().items())
+    return (
+        f"V = {mesh.n_vertices:,} &nbsp; E = {mesh.n_edges:,} &nbsp; "
+        f"F = {mesh.n_faces:,} &nbsp; ({sizes})"
+    )
+
+
+def error_html(message: str, note: str = "") -> str:
+    """A refusal or error message as HTML (escaped, in red), with an optional note."""
+    text = f'<span style="color:#b00020">{html.escape(message)}</span>'
+    return text + (f"<br>{html.escape(note)}" if note else "")
+
+
+def camera_fit(
+    points: ArrayLike, fov: float, aspect: float
+) -> tuple[NDArray[np.float64], float, NDArray[np.float64]]:
+    """A camera that shows every point.
+
+    Parameters
+    ----------
+    points : (k, 3) float
+    fov : float
+        Vertical field of view, degrees.
+    aspect : float
+        Width / height of the picture.
+
+    Returns
+    -------
+    centre : (3,) float
+        Middle of the bounding box (the orbit target).
+    radius : float
+        Radius of the bounding sphere about ``centre``.
+    eye : (3,) float
+        Camera position: from the side (0.9, 0.6, 1.1), far enough for the
+        sphere to fit in both fields of view, with a 15 % margin.
+    """
+    p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    if len(p) == 0:
+        return np.zeros(3), 1.0, np.array([0.0, 0.0, 4.0])
+    lo, hi = p.min(axis=0), p.max(axis=0)
+    centre = (lo + hi) / 2
+    radius = float(np.sqrt(((p - centre) ** 2).sum(axis=1).max())) or 1.0
+    half = math.radians(fov) / 2
+    if aspect < 1:  # narrow view: the horizontal field of view limits
+        half = math.atan(math.tan(half) * aspect)
+    distance = radius / math.sin(half) * 1.15
+    direction = np.array([0.9, 0.6, 1.1])
+    direction /= np.linalg.norm(direction)
+    return centre, radius, centre + distance * direction
+
+
+def look_at_quaternion(
+    eye: ArrayLike, target: ArrayLike, up: ArrayLike = (0.0, 0.0, 1.0)
+) -> tuple[float, float, float, float]:
+    """Quaternion (x, y, z, w) turning a camera at ``eye`` towards ``target``.
+
+    The camera looks down its -z axis, as in three.js ``Object3D.lookAt``;
+    setting it from Python keeps a moved camera aimed without a browser-side
+    ``lookAt`` call (and so in exported pages too).
+    """
+    e, t, u = (np.asarray(a, dtype=np.float64) for a in (eye, target, up))
+    z = e - t
+    z /= np.linalg.norm(z) or 1.0
+    x = np.cross(u, z)
+    if np.linalg.norm(x) < 1e-12:  # looking along up: any perpendicular will do
+        x = np.cross((1.0, 0.0, 0.0) if abs(z[0]) < 0.9 else (0.0, 1.0, 0.0), z)
+    x /= np.linalg.norm(x)
+    y = np.cross(z, x)
+    m = np.stack([x, y, z], axis=1)  # columns: the camera's axes in the world
+    tr = m[0, 0] + m[1, 1] + m[2, 2]
+    if tr > 0:
+        s = 2.0 * math.sqrt(tr + 1.0)
+        q = ((m[2, 1] - m[1, 2]) / s, (m[0, 2] - m[2, 0]) / s, (m[1, 0] - m[0, 1]) / s, s / 4)
+    elif m[0, 0] > m[1, 1] and m[0, 0] > m[2, 2]:
+        s = 2.0 * math.sqrt(1.0 + m[0, 0] - m[1, 1] - m[2, 2])
+        q = (s / 4, (m[0, 1] + m[1, 0]) / s, (m[0, 2] + m[2, 0]) / s, (m[2, 1] - m[1, 2]) / s)
+    elif m[1, 1] > m[2, 2]:
+        s = 2.0 * math.sqrt(1.0 + m[1, 1] - m[0, 0] - m[2, 2])
+        q = ((m[0, 1] + m[1, 0]) / s, s / 4, (m[1, 2] + m[2, 1]) / s, (m[0, 2] - m[2, 0]) / s)
+    else:
+        s = 2.0 * math.sqrt(1.0 + m[2, 2] - m[0, 0] - m[1, 1])
+        q = ((m[0, 2] + m[2, 0]) / s, (m[1, 2] + m[2, 1]) / s, s / 4, (m[1, 0] - m[0, 1]) / s)
+    return (float(q[0]), float(q[1]), float(q[2]), float(q[3]))

@@ -1,0 +1,320 @@
+"""Local spectra and characteristic maps (issue 9, items 2, 3 and 5).
+
+Validation against what can be trusted without this code:
+
+* the bicubic B-spline's spectrum (1, 1/2, 1/2, 1/4, 1/4, 1/4, 1/8) for
+  vertex insertion + 2 duals at a regular vertex;
+* Catmull-Clark's closed form for the blocks w != 0 (Halstead, Kass and
+  DeRose 1993; Stam 1998), which vertex insertion + 2 duals shares (its
+  edge and face rules are Catmull-Clark's; Warren and Weimer 2001, 7.2);
+* the 1-ring contraction measured with :func:`pentanb.subdivide` alone over
+  six levels, which must match ``|lambda1|`` to 1 %.
+
+Every verdict is also shown failing: on a scheme where it does fail
+(pentagon preservation at scale 0.5 around triangles, sqrt(3) at
+3-valent vertices) and on made-up inputs.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from pentanb import shapes
+
+pytest.importorskip("scipy")
+
+from pentanb.analysis import spectral
+from pentanb.analysis.spectral import (
+    LocalSpectrum,
+    characteristic_map,
+    continuity_table,
+    element_fate,
+    extrapolate_ratio,
+    local_spectrum,
+    ring_contraction,
+    table_markdown,
+)
+
+
+def cc_lambda(k: int, w: int = 1, sign: int = 1) -> float:
+    """Catmull-Clark's Fourier block w at valence k (Stam 1998, Appendix)."""
+    c = math.cos(2 * math.pi * w / k)
+    return (5 + c + sign * math.cos(math.pi * w / k) * math.sqrt(2 * (9 + c))) / 16
+
+
+# ---------------------------------------------------------------------- validation
+
+
+def test_bicubic_spectrum_at_a_regular_vertex():
+    sp = local_spectrum("vertex_insertion", "vertex", 4)
+    assert sp.stationary and sp.period == 1
+    expected = [1, 1 / 2, 1 / 2, 1 / 4, 1 / 4, 1 / 4, 1 / 8]
+    assert np.allclose(sp.moduli[:7], expected, rtol=0, atol=1e-12)
+    assert np.allclose(sp.eigenvalues[:7].imag, 0, atol=1e-12)
+
+
+@pytest.mark.parametrize("k", range(3, 9))
+def test_vertex_insertion_has_catmull_clarks_blocks(k):
+    sp = local_spectrum("vertex_insertion", "vertex", k)
+    assert abs(sp.moduli[1] - cc_lambda(k)) < 1e-12
+    assert abs(sp.moduli[2] - cc_lambda(k)) < 1e-12
+    # the minimal neighbourhood is the 1-ring of quads (2k + 1 points), the
+    # analysed one the 2-ring (6k + 1)
+    assert sp.neighbourhood == 2 * k + 1
+    assert sp.analysis_size == 6 * k + 1
+    # block 0 of bilinear subdivision + quad averaging: 1, 1/4, 1/16 at every valence;
+    # the other blocks: both of Catmull-Clark's roots
+    values = np.sort(np.abs(sp.eigenvalues))
+    for expected in [
+        1.0,
+        0.25,
+        1 / 16,
+        *(cc_lambda(k, w, s) for w in range(1, k) for s in (1, -1)),
+    ]:
+        assert np.min(np.abs(values - expected)) < 1e-12, expected
+
+
+@pytest.mark.parametrize(
+    "scheme,k,about",
+    [
+        ("pentagonalize", 3, 0.386),
+        ("pentagonalize", 5, 0.501),
+        ("vertex_insertion", 3, 0.409),
+        ("vertex_insertion", 4, 0.500),
+        ("vertex_insertion", 5, 0.550),
+    ],
+)
+def test_measured_contraction_matches_lambda1(scheme, k, about):
+    ratios, limit = ring_contraction(scheme, "vertex", k, levels=6)
+    sp = local_spectrum(scheme, "vertex", k)
+    assert len(ratios) == 6
+    assert abs(limit / sp.moduli[1] - 1) < 0.01
+    assert abs(limit - about) < 0.01  # the values measured in issue 9
+
+
+def test_measured_contraction_of_a_face():
+    _, limit = ring_contraction("preserve_pentagons", "face", 5, levels=5)
+    sp = local_spectrum("preserve_pentagons", "face", 5)
+    assert abs(limit / sp.moduli[1] - 1) < 0.01
+
+
+def test_the_matrix_does_not_depend_on_where_the_element_was_planted():
+    in_pyramid = local_spectrum("pentagonalize", "vertex", 3)
+    in_cube = local_spectrum("pentagonalize", "vertex", 3, mesh=shapes.cube(), element=0)
+    assert in_cube.matrix.shape == in_pyramid.matrix.shape
+    assert np.allclose(
+        np.sort_complex(in_cube.eigenvalues), np.sort_complex(in_pyramid.eigenvalues)
+    )
+
+
+def test_local_matrix_rows_are_convex_combinations():
+    sp = local_spectrum("preserve_pentagons", "vertex", 5, scale=0.5)
+    assert np.allclose(sp.matrix.sum(axis=1), 1.0)
+    assert sp.matrix.min() >= 0
+
+
+# ---------------------------------------------------------------------- findings
+
+
+def test_pentagonalization_is_chiral():
+    """Its subdominant eigenvalues are a complex pair at every valence."""
+    for k in (3, 5):
+        sp = local_spectrum("pentagonalize", "vertex", k)
+        assert sp.necessary
+        assert sp.subdominant_complex
+        assert abs(np.angle(sp.lam(1))) > math.radians(5)
+        assert abs(sp.lam(1) - np.conj(sp.lam(2))) < 1e-12
+
+
+def test_pentagon_preservation_is_achiral():
+    sp = local_spectrum("preserve_pentagons", "vertex", 3)
+    assert sp.necessary and not sp.subdominant_complex
+
+
+def test_sqrt3_turns_by_half_a_sector_and_is_analysed_over_two_steps():
+    sp = local_spectrum("sqrt3_remesh", "vertex", 5)
+    assert sp.period == 2
+    assert not sp.subdominant_complex
+    assert sp.necessary
+
+
+def test_necessary_condition_fails_for_preservation_at_triangles():
+    """Pentagon preservation at scale 0.5 around a triangle: |lambda1| > |lambda2|."""
+    sp = local_spectrum("preserve_pentagons", "face", 3, scale=0.5)
+    assert sp.stationary
+    assert not sp.necessary
+    assert "!=" in sp.necessary_reason
+    cm = characteristic_map(sp)
+    assert not cm.regular
+
+
+def test_necessary_condition_fails_for_sqrt3_at_3_valent_vertices():
+    sp = local_spectrum("sqrt3_remesh", "vertex", 3)
+    assert not sp.necessary
+    assert "not double" in sp.necessary_reason
+
+
+# ---------------------------------------------------------------------- the checks themselves
+
+
+def _fake(values) -> LocalSpectrum:
+    return LocalSpectrum(
+        "fake", "vertex", 5, 2, {}, True, eigenvalues=np.asarray(values, dtype=complex)
+    )
+
+
+def test_necessary_condition_logic():
+    assert _fake([1, 0.5, 0.5, 0.25]).necessary
+    assert _fake([1, 0.5j + 0.1, -0.5j + 0.1, 0.25]).necessary
+    assert "!=" in _fake([1, 0.5, 0.4, 0.25]).necessary_reason
+    assert "not double" in _fake([1, 0.5, 0.5, 0.5]).necessary_reason
+    assert "not simple" in _fake([1, 1, 0.5, 0.25]).necessary_reason
+    assert "not 1" in _fake([1.2, 0.5, 0.5, 0.25]).necessary_reason
+
+
+def test_fold_and_winding_are_detected():
+    square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
+    corners = np.array([0, 1, 2, 3])
+    offsets = np.array([0, 4])
+    assert list(spectral._face_signs(square, corners, offsets)) == [1]
+    flipped = np.array([[0, 0], [1, 0], [0, 1], [1, 1]], dtype=float)  # a bow tie
+    assert list(spectral._face_signs(flipped, corners, offsets)) == [0]
+    # a ring of 8 triangles around the origin covering the plane twice
+    t = 4 * np.pi * np.arange(8) / 8
+    pts = np.concatenate([[[0.0, 0.0]], np.stack([np.cos(t), np.sin(t)], axis=1)])
+    tri = np.array([[0, 1 + i, 1 + (i + 1) % 8] for i in range(8)]).reshape(-1)
+    off = np.arange(0, 25, 3)
+    assert abs(spectral._winding(pts, tri, off, np.zeros(2))) == 2
+    t = 2 * np.pi * np.arange(8) / 8
+    pts[1:] = np.stack([np.cos(t), np.sin(t)], axis=1)
+    assert abs(spectral._winding(pts, tri, off, np.zeros(2))) == 1
+
+
+def test_characteristic_map_of_catmull_clark_like_scheme():
+    cm = characteristic_map("vertex_insertion", "vertex", 5)
+    assert cm.regular and cm.injective and abs(cm.winding) == 1
+    assert cm.n_faces > 50
+    assert cm.verdict == "regular, injective"
+    assert not cm.complex_pair
+
+
+def test_characteristic_map_of_pentagonalization():
+    cm = characteristic_map("pentagonalize", "vertex", 3)
+    assert cm.complex_pair
+    assert cm.injective
+
+
+def test_extrapolation():
+    lam, mu = 0.4, 0.25
+    ratios = [(lam ** (i + 1) + mu ** (i + 1)) / (lam**i + mu**i) for i in range(1, 9)]
+    assert abs(extrapolate_ratio(ratios[:5]) - lam) < abs(ratios[4] - lam) / 2
+    assert extrapolate_ratio([0.3, 0.4]) == 0.4
+    with pytest.raises(ValueError):
+        extrapolate_ratio([])
+
+
+# ------------------------------------------------- elements that do not survive
+
+
+def test_fates():
+    assert element_fate("pentagonalize", "vertex", 4) == "vertex 4"
+    assert element_fate("pentagonalize", "face", 4) == "becomes a vertex of valence 4"
+    assert element_fate("sqrt3_remesh", "face", 5) == "becomes a vertex of valence 10"
+    assert element_fate("corner_cutting", "vertex", 5) == "becomes a face of 5 sides"
+    assert element_fate("honeycomb", "vertex", 3) == "becomes a face of 6 sides"
+    assert element_fate("preserve_pentagons", "face", 7) == "face 7"
+
+
+def test_an_element_that_does_not_survive_has_no_spectrum():
+    sp = local_spectrum("corner_cutting", "vertex", 5)
+    assert not sp.stationary
+    assert "becomes a face of 5 sides" in sp.note
+    with pytest.raises(ValueError, match="no characteristic map"):
+        characteristic_map(sp)
+
+
+def test_a_scheme_that_stops_refining_is_said_so():
+    sp = local_spectrum("triangulate", "vertex", 5)
+    assert not sp.stationary and not sp.refines
+    assert "does not refine" in sp.note
+
+
+def test_no_stationary_neighbourhood_falls_back_to_the_measured_contraction():
+    sp = local_spectrum("vertex_insertion", "vertex", 5, max_faces=50)
+    assert not sp.stationary
+    assert "no stationary neighbourhood" in sp.note
+    assert sp.contraction is not None and 0.2 < sp.contraction < 0.9
+
+
+# ---------------------------------------------------------------------- input checks
+
+
+def test_bad_input_is_refused():
+    with pytest.raises(ValueError, match="kind"):
+        local_spectrum("pentagonalize", "edge", 3)
+    with pytest.raises(ValueError, match="size"):
+        local_spectrum("pentagonalize", "vertex", 2)
+    with pytest.raises(ValueError, match="takes"):
+        local_spectrum("pentagonalize", "vertex", 3, scale=0.5)
+    with pytest.raises(ValueError, match="unknown scheme"):
+        local_spectrum("pentagonise", "vertex", 3)
+    with pytest.raises(ValueError, match="duals"):
+        local_spectrum("pentagonalize", "vertex", 3, -1)
+    with pytest.raises(ValueError, match="valence 3, not 4"):
+        local_spectrum("pentagonalize", "vertex", 4, mesh=shapes.cube(), element=0)
+    with pytest.raises(ValueError, match="does not exist"):
+        local_spectrum("pentagonalize", "vertex", 3, mesh=shapes.cube(), element=99)
+    with pytest.raises(ValueError, match="levels"):
+        characteristic_map("vertex_insertion", "vertex", 4, levels=-1)
+
+
+# ---------------------------------------------------------------------- the table
+
+
+def test_small_table():
+    rows = continuity_table([("vertex_insertion", "vertex_insertion", {})], sizes=[3, 4])
+    kinds = [(r.kind, r.size, r.spectrum is None) for r in rows]
+    assert kinds == [("vertex", 3, False), ("vertex", 4, False), ("face", 3, True)]
+    assert rows[0].c1.startswith("yes")
+    assert rows[0].lam(1) == f"{cc_lambda(3):.4f}"
+    assert "becomes a vertex of valence 3" in rows[2].fate
+    text = table_markdown(rows)
+    assert text.startswith("| scheme + 2 duals")
+    assert text.count("\n") == 2 + len(rows)
+
+
+def test_table_row_for_a_complex_pair_is_undecided():
+    rows = continuity_table([("pentagonalize", "pentagonalize", {})], sizes=[3])
+    assert rows[0].c1.startswith("undecided")
+    assert "∠" in rows[0].lam(1)
+
+
+@pytest.mark.slow
+def test_whole_table_and_its_pictures():
+    pytest.importorskip("matplotlib")
+    from pentanb.figures import _continuity, characteristic_maps
+    from pentanb.figures import spectra as spectra_figure
+    from pentanb.viz import spectra
+
+    rows = _continuity.table()  # the figures' table: continuity_table(), detached
+    assert {r.label for r in rows} == {label for label, _, _ in spectral.TABLE_CASES}
+    fig = spectra.plot_spectra(rows)
+    assert len([ax for ax in fig.axes if ax.get_visible()]) >= 9
+    fig = spectra.plot_characteristic_maps(rows)
+    assert len([ax for ax in fig.axes if ax.get_visible()]) >= 30
+    # the one fold drawn (scale 0.5 around a triangle) is labelled in red under its panel
+    red = [ax.get_xlabel() for ax in fig.axes if ax.xaxis.label.get_color() == "#CC0000"]
+    assert red == ["fold (99 of 190 faces turned)"]
+    claims = spectra_figure.claims(rows=rows) + characteristic_maps.claims(rows=rows)
+    failing = [c.key for c in claims if not c.holds]
+    # the findings: pentagon preservation at scale 0.5 around triangles
+    assert failing == [
+        "spectra.preserve_pentagons_05.faces",
+        "characteristic_maps.preserve_pentagons_05.faces",
+    ]
+    tri = next(r for r in rows if r.label == "preserve_pentagons 0.5" and r.element == "face 3")
+    assert tri.spectrum.moduli[1] == pytest.approx(0.141667, abs=1e-6)
+    assert tri.spectrum.moduli[2] == pytest.approx(0.116667, abs=1e-6)
