@@ -1,156 +1,454 @@
-"""Benchmark: pentagonalize (and + two duals) against trimesh's subdivision.
+"""Benchmark: what a user pays, from raw arrays, against trimesh; memory; the slider.
 
-Times, in one run on the same input, medians of several runs:
+Prints one table of the targets of issue 11 (speed and memory at scale), each
+measured in this run, as a ratio or a per-face figure with its target:
 
-* ``pentagonalize`` against ``trimesh.Trimesh.subdivide()`` on a
-  327,680-triangle sphere (target: within 2x);
-* ``pentagonalize`` followed by two duals against
-  ``trimesh.remesh.subdivide_loop`` on the same sphere (target: half the time
-  or less);
-* ``pentagonalize`` + two duals on a 20,480-face sphere (target: under 30 ms,
-  the budget of one slider move);
-* and, for reference, every scheme of ``pentanb.SCHEMES`` on the 20,480-face
-  sphere.
+1. ``pentagonalize(Mesh(V, F))`` from raw arrays, validation included, against
+   trimesh ``Trimesh(V, F, process=False).subdivide()`` on a 327,680-triangle
+   icosphere (target: at most 1.0x);
+2. ``smooth(pentagonalize(Mesh(V, F)), duals=2)`` against
+   ``trimesh.remesh.subdivide_loop(V, F)``, both warm (at most 0.25x), with
+   the spread of the per-run ratios;
+3. one slider move of the interactive explorer at 20,480 faces: every scheme
+   plus two duals on an existing mesh, the explorer's real path including the
+   buffer update it sends to the view (at most 10 ms for the paper's two
+   schemes, 15 ms for the others);
+4. linearity: the pipeline's time per input face at 5,242,880 triangles over
+   that at 327,680, in the same process (at most 1.3x), and its peak memory
+   above the input, numpy's allocations as ``tracemalloc`` counts them, per
+   output face (at most 250 bytes);
+5. reading and writing OBJ and OFF files of 1,000,000 triangles against
+   trimesh's ``export`` and ``load`` (at most 1.0x), and the peak memory while
+   reading over the size of the arrays read (at most 3x);
 
-Every timed call starts from a mesh with no cached connectivity (pentanb
-derives its half-edges inside the timer; trimesh gets a fresh ``Trimesh``),
-so both sides pay for their edge tables.  Before timing, the script touches
-a few GB of memory once: on a freshly booted virtual machine the first touch
-of every page is several times slower than later ones, which would otherwise
-penalise whichever side runs first.
+then, for every scheme, the memory guard's estimate against the measured peak
+and the largest mesh that the default limit (half the physical memory) lets
+through one iteration with two duals.
+
+Timings alternate between the two sides of every ratio, run after run, in one
+process (this machine is shared and noisy: a ratio of two medians taken
+minutes apart would measure the neighbours), and report medians.  Every
+pentanb call starts from the raw arrays ``V`` and ``F`` (validation
+included); trimesh gets a fresh ``Trimesh`` or the raw arrays likewise.
 
 Run::
 
     pip install -e .[bench]
-    python benchmarks/bench_pipeline.py            # prints a table and the ratios
-    python benchmarks/bench_pipeline.py --check    # exit 1 when a target is missed
+    python benchmarks/bench_pipeline.py             # the table
+    python benchmarks/bench_pipeline.py --check     # exit 1 when a target is missed
+    python benchmarks/bench_pipeline.py --quick     # without the 5-million-face rows
 """
 
 from __future__ import annotations
 
 import argparse
+import gc
 import json
+import os
 import platform
 import sys
+import tempfile
 import time
+import tracemalloc
+from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 
 import pentanb as pb
+from pentanb.subdivision import default_max_bytes
+
+CLOCKS = {"wall": time.perf_counter, "cpu": time.process_time}
 
 
-def median_time(fn, setup, runs):
-    """Median wall time of ``fn(setup())`` over ``runs`` runs (setup untimed)."""
-    times = []
-    fn(setup())  # warm-up
+class Table:
+    """The rows of the report: label, measured value, target, verdict."""
+
+    def __init__(self) -> None:
+        self.rows: list[dict] = []
+
+    def add(self, section, label, value, unit, target=None, *, note=""):
+        ok = None if target is None else bool(value <= target)
+        self.rows.append(
+            dict(
+                section=section,
+                label=label,
+                value=value,
+                unit=unit,
+                target=target,
+                ok=ok,
+                note=note,
+            )
+        )
+        shown = f"{value:,.2f} {unit}" if unit != "x" else f"{value:.2f}x"
+        aim = "" if target is None else (f"<= {target:g}{'x' if unit == 'x' else ' ' + unit}")
+        verdict = "" if ok is None else ("PASS" if ok else "MISS")
+        print(f"  {label:62s} {shown:>16s}  {aim:>12s}  {verdict}  {note}", flush=True)
+
+    @property
+    def missed(self) -> list[str]:
+        return [r["label"] for r in self.rows if r["ok"] is False]
+
+    def markdown(self) -> str:
+        lines = ["| measure | value | target | |", "|---|---|---|---|"]
+        section = None
+        for r in self.rows:
+            if r["section"] != section:
+                section = r["section"]
+                lines.append(f"| **{section}** | | | |")
+            unit = r["unit"]
+            value = f"{r['value']:.2f}x" if unit == "x" else f"{r['value']:,.1f} {unit}"
+            target = (
+                ""
+                if r["target"] is None
+                else f"<= {r['target']:g}" + ("x" if unit == "x" else f" {unit}")
+            )
+            verdict = {None: "", True: "pass", False: "**missed**"}[r["ok"]]
+            note = f" ({r['note']})" if r["note"] else ""
+            lines.append(f"| {r['label']}{note} | {value} | {target} | {verdict} |")
+        return "\n".join(lines)
+
+
+def alternate(cases: dict[str, Callable[[], object]], runs: int, clock) -> dict[str, list[float]]:
+    """Time every case once per round, ``runs`` rounds, after one untimed warm-up round.
+
+    Returns the seconds of every run of every case, in round order, so that
+    ratios can be taken run by run.
+    """
+    times: dict[str, list[float]] = {k: [] for k in cases}
+    for fn in cases.values():
+        fn()
     for _ in range(runs):
-        arg = setup()
-        t = time.perf_counter()
-        fn(arg)
-        times.append(time.perf_counter() - t)
-    return float(np.median(times))
+        for name, fn in cases.items():
+            gc.collect()
+            t = clock()
+            fn()
+            times[name].append(clock() - t)
+    return times
 
 
-def fresh(mesh: pb.Mesh):
-    """A setup function: the mesh's arrays with nothing derived yet."""
-    return lambda: pb.Mesh.from_csr(mesh.vertices, mesh.corners, mesh.offsets, validate=False)
+def median(xs) -> float:
+    return float(np.median(xs))
 
 
-def pipeline(mesh):
-    return pb.dual(pb.dual(pb.pentagonalize(mesh)))
+def peak_bytes(fn: Callable[[], object]) -> tuple[int, object]:
+    """Peak of numpy's allocations (tracemalloc) during ``fn()`` above what was held before."""
+    gc.collect()
+    tracemalloc.start()
+    base = tracemalloc.get_traced_memory()[0]
+    tracemalloc.reset_peak()
+    out = fn()
+    peak = tracemalloc.get_traced_memory()[1] - base
+    tracemalloc.stop()
+    return peak, out
+
+
+def icosphere(subdivisions: int):
+    import trimesh
+
+    m = trimesh.creation.icosphere(subdivisions=subdivisions)
+    return np.ascontiguousarray(m.vertices), np.ascontiguousarray(m.faces)
+
+
+def torus_triangles(n: int, m: int) -> tuple[np.ndarray, np.ndarray]:
+    """A torus grid of n x m quads, each split into two triangles (2nm triangles)."""
+    u = 2 * np.pi * np.arange(n) / n
+    w = 2 * np.pi * np.arange(m) / m
+    uu, ww = np.meshgrid(u, w, indexing="ij")
+    r = 3.0 + np.cos(ww)
+    v = np.stack([r * np.cos(uu), r * np.sin(uu), np.sin(ww)], axis=-1).reshape(-1, 3)
+    i, j = np.meshgrid(np.arange(n), np.arange(m), indexing="ij")
+    a = i * m + j
+    b = ((i + 1) % n) * m + j
+    c = ((i + 1) % n) * m + (j + 1) % m
+    d = i * m + (j + 1) % m
+    f = np.stack([np.stack([a, b, c], -1), np.stack([a, c, d], -1)], axis=2).reshape(-1, 3)
+    return v, f
+
+
+def pipeline(v, f):
+    return pb.smooth(pb.pentagonalize(pb.Mesh(v, f)), duals=2)
+
+
+# ---------------------------------------------------------------------- sections
+def speed(table: Table, runs: int, clock) -> dict:
+    import trimesh
+    from trimesh import remesh
+
+    v, f = icosphere(7)
+    assert len(f) == 327_680
+    print("\n327,680-triangle icosphere, from raw arrays (median of alternating runs)")
+    t = alternate(
+        {
+            "trimesh subdivide": lambda: trimesh.Trimesh(v, f, process=False).subdivide(),
+            "pentagonalize(Mesh(V, F))": lambda: pb.pentagonalize(pb.Mesh(v, f)),
+            "Mesh(V, F)": lambda: pb.Mesh(v, f),
+        },
+        runs,
+        clock,
+    )
+    t2 = alternate(
+        {
+            "trimesh subdivide_loop": lambda: remesh.subdivide_loop(v, f),
+            "pipeline": lambda: pipeline(v, f),
+        },
+        runs,
+        clock,
+    )
+    t.update(t2)
+    sec = "speed (327,680 triangles)"
+    for name in ("trimesh subdivide", "trimesh subdivide_loop", "Mesh(V, F)"):
+        table.add(sec, name, 1000 * median(t[name]), "ms")
+    table.add(sec, "pentagonalize(Mesh(V, F))", 1000 * median(t["pentagonalize(Mesh(V, F))"]), "ms")
+    table.add(
+        sec,
+        "smooth(pentagonalize(Mesh(V, F)), duals=2)",
+        1000 * median(t["pipeline"]),
+        "ms",
+    )
+    r1 = np.array(t["pentagonalize(Mesh(V, F))"]) / np.array(t["trimesh subdivide"])
+    table.add(
+        sec,
+        "1. pentagonalize(Mesh(V, F)) / trimesh subdivide()",
+        median(r1),
+        "x",
+        1.0,
+        note=f"runs {r1.min():.2f}-{r1.max():.2f}",
+    )
+    r2 = np.array(t["pipeline"]) / np.array(t["trimesh subdivide_loop"])
+    table.add(
+        sec,
+        "2. smooth(pentagonalize(Mesh(V, F)), 2) / subdivide_loop",
+        median(r2),
+        "x",
+        0.25,
+        note=f"{len(r2)} runs: {', '.join(f'{x:.3f}' for x in sorted(r2))}",
+    )
+    return {k: [float(x) for x in xs] for k, xs in t.items()}
+
+
+def slider(table: Table, runs: int, clock) -> dict:
+    try:
+        import ipywidgets  # noqa: F401
+        import pythreejs  # noqa: F401
+    except ImportError:
+        print("\n(slider rows skipped: ipywidgets and pythreejs are not installed)")
+        return {}
+    v, f = icosphere(5)
+    base = pb.Mesh(v, f)
+    assert base.n_faces == 20_480
+    print("\none slider move at 20,480 faces: iterations 0 -> 1 in explore(), two duals")
+    out = {}
+    sec = "slider move (20,480 faces, explorer)"
+    for name, scheme in pb.SCHEMES.items():
+        times = []
+        for r in range(runs + 1):
+            e = pb.explore(base, name, iterations=0, duals=2)
+            gc.collect()
+            t = clock()
+            e.iterations.value = 1  # the explorer's own path: compute, buffers, legend
+            dt = clock() - t
+            assert e.mesh is not None and e.mesh is not base, "no new mesh shown"
+            if r:  # the first is a warm-up
+                times.append(dt)
+            e.close()
+        ms = 1000 * median(times)
+        target = 10.0 if scheme.family == "pentagonal" else 15.0
+        table.add(sec, f"3. {name} + 2 duals", ms, "ms", target)
+        out[name] = [float(x) for x in times]
+    return out
+
+
+def linear(table: Table, runs: int, clock, small_runs: dict) -> dict:
+    print("\nlinearity and memory: the pipeline at 327,680 and 5,242,880 triangles")
+    v1, f1 = icosphere(7)
+    v2, f2 = icosphere(9)
+    assert len(f2) == 5_242_880
+    # alternate small and large, so that both see the same machine
+    t = alternate(
+        {"small": lambda: pipeline(v1, f1), "large": lambda: pipeline(v2, f2)}, runs, clock
+    )
+    small = median(t["small"]) / len(f1)
+    large = median(t["large"]) / len(f2)
+    sec = "linear and memory"
+    table.add(sec, "pipeline per input face, 327,680 triangles", 1e6 * small, "us")
+    table.add(sec, "pipeline per input face, 5,242,880 triangles", 1e6 * large, "us")
+    table.add(sec, "4. per-face time 5,242,880 / 327,680", large / small, "x", 1.3)
+    mem = {}
+    for label, (v, f) in {"1,310,720": icosphere(8), "5,242,880": (v2, f2)}.items():
+        peak, out = peak_bytes(lambda v=v, f=f: pipeline(v, f))
+        per = peak / out.n_faces
+        mem[label] = peak
+        table.add(
+            sec,
+            f"4. peak memory above the input, {label} triangles",
+            per,
+            "B/face",
+            250.0,
+            note=f"{peak / 2**20:,.0f} MiB for {out.n_faces:,} pentagons",
+        )
+        del out
+    return {"seconds": {k: [float(x) for x in xs] for k, xs in t.items()}, "peak": mem}
+
+
+def guard(table: Table) -> dict:
+    """Estimate against measured peak, per scheme, and the largest mesh allowed by default."""
+    from pentanb import subdivision
+
+    print("\nmemory guard: estimate / measured peak (subdivide, 1 iteration, 2 duals)")
+    v, f = icosphere(6)
+    limit = default_max_bytes()
+    sec = f"memory guard (default limit {limit / 2**30:.1f} GiB: half the memory)"
+    out = {}
+    for name, s in pb.SCHEMES.items():
+        base = pb.Mesh(v, f)
+        counts = (base.n_vertices, base.n_edges, base.n_faces)
+        est = subdivision._request_bytes(s, counts, 1, 2, subdivision._kind_of(base))
+        peak, mesh = peak_bytes(lambda base=base, name=name: pb.subdivide(base, name, 1, 2))
+        # the estimate is linear in the counts: scale the input until it reaches the limit
+        scale = (limit - subdivision._FIXED) / (est - subdivision._FIXED)
+        faces_out = mesh.n_faces * scale
+        table.add(
+            sec,
+            f"{name} + 2 duals: estimate / measured peak",
+            est / peak,
+            "x",
+            1.25,
+            note=f"largest by default: about {faces_out / 1e6:,.0f} M faces out, "
+            f"{len(f) * scale / 1e6:,.1f} M triangles in",
+        )
+        out[name] = {"peak": peak, "estimate": est, "largest_output_faces": faces_out}
+        del mesh
+    return out
+
+
+def io_rows(table: Table, runs: int, clock) -> dict:
+    import trimesh
+
+    v, f = torus_triangles(1000, 500)
+    assert len(f) == 1_000_000
+    mesh = pb.Mesh(v, f)
+    tm = trimesh.Trimesh(v, f, process=False)
+    print("\nOBJ and OFF, 1,000,000 triangles")
+    sec = "files (1,000,000 triangles)"
+    out = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for fmt in ("obj", "off"):
+            ours, theirs = Path(tmp, f"a.{fmt}"), Path(tmp, f"b.{fmt}")
+            t = alternate(
+                {
+                    "write": lambda ours=ours: pb.write(mesh, ours),
+                    "trimesh export": lambda theirs=theirs: tm.export(theirs),
+                },
+                runs,
+                clock,
+            )
+            t.update(
+                alternate(
+                    {
+                        "read": lambda ours=ours: pb.read(ours),
+                        "trimesh load": lambda theirs=theirs: trimesh.load(
+                            theirs, process=False, force="mesh"
+                        ),
+                    },
+                    runs,
+                    clock,
+                )
+            )
+            w = median(t["write"]) / median(t["trimesh export"])
+            r = median(t["read"]) / median(t["trimesh load"])
+            table.add(
+                sec,
+                f"5. write {fmt.upper()} / trimesh export",
+                w,
+                "x",
+                1.0,
+                note=f"{1000 * median(t['write']):,.0f} ms",
+            )
+            table.add(
+                sec,
+                f"5. read {fmt.upper()} / trimesh load",
+                r,
+                "x",
+                1.0,
+                note=f"{1000 * median(t['read']):,.0f} ms",
+            )
+            peak, back = peak_bytes(lambda ours=ours: pb.read(ours))
+            arrays = back.vertices.nbytes + back.corners.nbytes + back.offsets.nbytes
+            table.add(
+                sec,
+                f"5. peak memory reading {fmt.upper()} / arrays read",
+                peak / arrays,
+                "x",
+                3.0,
+                note=f"{peak / 2**20:,.0f} MiB",
+            )
+            out[fmt] = {k: [float(x) for x in xs] for k, xs in t.items()}
+    return out
 
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--runs", type=int, default=7, help="timed runs per case (median)")
-    ap.add_argument("--json", help="also write the results to this JSON file")
+    ap.add_argument(
+        "--clock",
+        choices=sorted(CLOCKS),
+        default="wall",
+        help="wall time (default) or this process's CPU time",
+    )
+    ap.add_argument(
+        "--quick",
+        action="store_true",
+        help="skip the 5-million-face rows (linearity, memory at that size)",
+    )
+    ap.add_argument(
+        "--only",
+        nargs="*",
+        choices=["speed", "slider", "linear", "guard", "io"],
+        help="run only these sections",
+    )
+    ap.add_argument("--json", help="also write the measurements to this JSON file")
+    ap.add_argument("--markdown", help="also write the table as markdown to this file")
     ap.add_argument("--check", action="store_true", help="exit 1 when a target is missed")
     ap.add_argument("--no-warm", action="store_true", help="skip the memory warm-up")
     args = ap.parse_args(argv)
     try:
         import trimesh
-        from trimesh import remesh
     except ImportError:
         print("trimesh is needed for this benchmark: pip install -e .[bench]", file=sys.stderr)
         return 2
-
     if not args.no_warm:
         np.ones(400_000_000).sum()  # 3.2 GB, touched once and freed
-
-    big_tm = trimesh.creation.icosphere(subdivisions=7)
-    small_tm = trimesh.creation.icosphere(subdivisions=5)
-    big = pb.Mesh(big_tm.vertices, big_tm.faces)
-    small = pb.Mesh(small_tm.vertices, small_tm.faces)
-    assert big.n_faces == 327_680 and small.n_faces == 20_480
-    v, f = np.asarray(big_tm.vertices), np.asarray(big_tm.faces)
-
-    def fresh_trimesh():
-        return trimesh.Trimesh(v, f, process=False)
-
-    r = args.runs
-    t = {
-        "trimesh_subdivide": median_time(lambda m: m.subdivide(), fresh_trimesh, r),
-        "trimesh_subdivide_loop": median_time(
-            lambda m: remesh.subdivide_loop(m.vertices, m.faces), fresh_trimesh, r
-        ),
-        "pentagonalize": median_time(pb.pentagonalize, fresh(big), r),
-        "pentagonalize_2duals": median_time(pipeline, fresh(big), r),
-        "pentagonalize_2duals_20480": median_time(pipeline, fresh(small), max(r, 15)),
-    }
-    per_scheme = {
-        name: median_time(lambda m, s=s: pb.dual(pb.dual(s(m))), fresh(small), r)
-        for name, s in pb.SCHEMES.items()
-    }
-
-    ratios = {
-        "pentagonalize / trimesh subdivide": (t["pentagonalize"] / t["trimesh_subdivide"], 2.0),
-        "pentagonalize+2 duals / trimesh subdivide_loop": (
-            t["pentagonalize_2duals"] / t["trimesh_subdivide_loop"],
-            0.5,
-        ),
-    }
+    clock = CLOCKS[args.clock]
+    sections = set(args.only or ["speed", "slider", "linear", "guard", "io"])
+    if args.quick:
+        sections.discard("linear")
     print(
         f"pentanb {pb.__version__}, trimesh {trimesh.__version__}, numpy {np.__version__}, "
-        f"Python {platform.python_version()}, {platform.machine()}; median of {r} runs"
+        f"Python {platform.python_version()}, {platform.machine()}, {os.cpu_count()} cores, "
+        f"{default_max_bytes() * 2 / 2**30:.0f} GiB; {args.clock} clock, "
+        f"median of {args.runs} runs"
     )
-    print("\n327,680-triangle sphere")
-    for key in (
-        "trimesh_subdivide",
-        "trimesh_subdivide_loop",
-        "pentagonalize",
-        "pentagonalize_2duals",
-    ):
-        print(f"  {key:32s} {1000 * t[key]:9.1f} ms")
-    print("\nratios (target)")
-    missed = []
-    for label, (value, target) in ratios.items():
-        ok = value <= target
-        missed += [] if ok else [label]
-        print(f"  {label:48s} {value:6.2f}  (<= {target})  {'PASS' if ok else 'MISS'}")
-    ms = 1000 * t["pentagonalize_2duals_20480"]
-    ok = ms < 30.0
-    missed += [] if ok else ["20,480-face pipeline"]
-    print(
-        f"\n20,480-face pentagonalize + 2 duals: {ms:.1f} ms (< 30 ms) {'PASS' if ok else 'MISS'}"
-    )
-    print("\nevery scheme + 2 duals on the 20,480-face sphere")
-    for name, sec in per_scheme.items():
-        print(f"  {name:20s} {1000 * sec:8.1f} ms")
+    table = Table()
+    results: dict = {}
+    if "speed" in sections:
+        results["speed"] = speed(table, args.runs, clock)
+    if "slider" in sections:
+        results["slider"] = slider(table, max(args.runs, 9), clock)
+    if "linear" in sections:
+        results["linear"] = linear(table, max(3, args.runs // 2), clock, results.get("speed", {}))
+    if "guard" in sections:
+        results["guard"] = guard(table)
+    if "io" in sections:
+        results["io"] = io_rows(table, max(3, args.runs // 2), clock)
     if args.json:
         with open(args.json, "w") as fh:
-            json.dump(
-                {
-                    "seconds": t,
-                    "per_scheme_20480": per_scheme,
-                    "ratios": {k: v for k, (v, _) in ratios.items()},
-                },
-                fh,
-                indent=2,
-            )
-    if missed and args.check:
-        print("missed: " + ", ".join(missed), file=sys.stderr)
-        return 1
-    return 0
+            json.dump({"rows": table.rows, "runs": results}, fh, indent=2)
+    if args.markdown:
+        Path(args.markdown).write_text(table.markdown() + "\n")
+    missed = table.missed
+    print("\n" + ("every target met" if not missed else "missed: " + "; ".join(missed)))
+    return 1 if (missed and args.check) else 0
 
 
 if __name__ == "__main__":

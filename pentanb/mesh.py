@@ -10,6 +10,12 @@ next corner of its face.  Everything else (``next``, ``prev``, ``twin``, edge
 ids, the rotation around a vertex) is derived from ``corners`` and
 ``offsets`` with whole-array numpy expressions, on first use, and cached.
 
+Index arrays (``corners``, ``offsets`` and every derived array of indices)
+are int32 when the mesh's counts allow it (fewer than 2**31 corners and
+vertices), int64 otherwise: half the memory and memory traffic for every
+mesh that fits in a computer's memory.  Arithmetic on them that may exceed
+2**31 (keys such as ``u * n + w``) must first convert to int64.
+
 A :class:`Mesh` is sealed: no attribute can be set, replaced or deleted, and
 every array it hands out is read-only, so nothing it has cached can go
 stale.  What depends on the faces alone is kept in one connectivity record
@@ -34,7 +40,7 @@ from numpy.typing import ArrayLike, NDArray
 
 __all__ = ["Mesh", "MeshError", "fan_triangle_corners"]
 
-IntArray = NDArray[np.int64]
+IntArray = NDArray[np.signedinteger[Any]]
 FloatArray = NDArray[np.float64]
 Rings = tuple[IntArray, IntArray]
 _T = TypeVar("_T")
@@ -204,8 +210,9 @@ class Mesh:
 
     def __init__(self, vertices: ArrayLike, faces: ArrayLike | Sequence[Sequence[int]]):
         v = _as_vertices(vertices)
-        corners, offsets = _as_csr(faces)
+        corners, offsets = _compact(*_as_csr(faces), v.shape[0])
         self._init(v, corners, offsets)
+        del corners, offsets  # (any wider copy made on the way is gone before validating)
         self._validate()
 
     # ------------------------------------------------------------------ sealing
@@ -315,9 +322,28 @@ class Mesh:
         source = self._dual_source
         if source is None:
             return None
-        return Mesh._new(
+        out = Mesh._new(
             self.face_centroids, source.corners, source.offsets, shared=source, dual_of=self
         )
+        out._note_extent(self._extent)
+        return out
+
+    def _rescaled(self, shift: int) -> Mesh:
+        """The same faces (shared) with every position times ``2**shift`` (exact).
+
+        Raises
+        ------
+        MeshError
+            When a scaled position is not finite.
+        """
+        with np.errstate(over="ignore"):
+            v = np.ldexp(self._vertices, shift)
+        if not np.isfinite(v).all():
+            raise MeshError(
+                "the result's coordinates would be too large for float64 "
+                f"(beyond {np.finfo(np.float64).max:.3g})"
+            )
+        return Mesh._new(v, self._corners, self._offsets, shared=self._shared)
 
     @classmethod
     def from_csr(
@@ -361,17 +387,15 @@ class Mesh:
             o = _csr_part(offsets, "offsets")  # arrays stay theirs
             if o.size == 0 or o[0] != 0 or o[-1] != c.size or np.any(np.diff(o) < 0):
                 raise MeshError("offsets must start at 0, rise, and end at len(corners)")
-            self = cls._new(v, c, o)
+            self = cls._new(v, *_compact(c, o, v.shape[0]))
             self._validate()
             return self
         v = np.array(vertices, dtype=np.float64)
         if v.ndim != 2 or v.shape[1] != 3:
             raise MeshError(f"vertices must be an (n, 3) array, got shape {v.shape}")
+        c, o = _compact(_csr_part(corners, "corners"), _csr_part(offsets, "offsets"), v.shape[0])
         return cls._new(
-            v,
-            _csr_part(corners, "corners"),
-            _csr_part(offsets, "offsets"),
-            twin=None if twin is None else _csr_part(twin, "twin"),
+            v, c, o, twin=None if twin is None else _csr_part(twin, "twin").astype(c.dtype)
         )
 
     def with_vertices(self, vertices: ArrayLike) -> Mesh:
@@ -448,9 +472,15 @@ class Mesh:
         return _readonly(np.diff(self._offsets))
 
     @_connectivity
+    def _uniform_size(self) -> int:
+        """k when every face has k sides, else 0."""
+        return _uniform_size(self._offsets, self._corners.size)
+
+    @_connectivity
     def valences(self) -> IntArray:
         """(n,) int: number of edges at every vertex."""
-        return _readonly(np.bincount(self._corners, minlength=self.n_vertices))
+        counts = np.bincount(self._corners, minlength=self.n_vertices)
+        return _readonly(counts.astype(self._corners.dtype, copy=False))
 
     @property
     def euler_characteristic(self) -> int:
@@ -500,7 +530,7 @@ class Mesh:
     @_connectivity
     def halfedge_face(self) -> IntArray:
         """(H,) int: the face of every half-edge."""
-        return _readonly(np.repeat(np.arange(self.n_faces, dtype=np.int64), self.face_sizes))
+        return _readonly(_halfedge_face(self._offsets, self._corners.size, self._uniform_size))
 
     @_connectivity
     def halfedge_slot(self) -> IntArray:
@@ -508,22 +538,18 @@ class Mesh:
 
         Half-edge ``h`` is ``offsets[halfedge_face[h]] + halfedge_slot[h]``.
         """
-        h = np.arange(self.n_halfedges, dtype=np.int64)
+        h = np.arange(self.n_halfedges, dtype=self._corners.dtype)
         return _readonly(h - self._offsets[:-1][self.halfedge_face])
 
     @_connectivity
     def next(self) -> IntArray:
         """(H,) int: the next half-edge around the same face."""
-        nxt = np.arange(1, self.n_halfedges + 1, dtype=np.int64)
-        nxt[self._offsets[1:] - 1] = self._offsets[:-1]
-        return _readonly(nxt)
+        return _readonly(_next_of(self._offsets, self._corners.size, self._corners.dtype))
 
     @_connectivity
     def prev(self) -> IntArray:
         """(H,) int: the previous half-edge around the same face."""
-        prv = np.arange(-1, self.n_halfedges - 1, dtype=np.int64)
-        prv[self._offsets[:-1]] = self._offsets[1:] - 1
-        return _readonly(prv)
+        return _readonly(_prev_of(self._offsets, self._corners.size, self._corners.dtype))
 
     @property
     def tail(self) -> IntArray:
@@ -533,13 +559,24 @@ class Mesh:
     @_connectivity
     def head(self) -> IntArray:
         """(H,) int: the vertex a half-edge reaches (``corners[next]``)."""
+        k = self._uniform_size
+        if k:
+            return _readonly(_head(self._corners, self._offsets, k))
         return _readonly(self._corners[self.next])
 
     @_connectivity
     def twin(self) -> IntArray:
         """(H,) int: the opposite half-edge (same edge, other face)."""
-        twin, _ = _match_twins(self._corners, self.head, self.n_vertices)
+        k = self._uniform_size
+        twin = _pair_twins(self._corners, None if k else self.head, self.n_vertices, k)
+        if twin is None:
+            raise MeshError("the faces do not pair up into a closed, oriented manifold")
         return _readonly(twin)
+
+    @_connectivity
+    def _forward(self) -> NDArray[np.bool_]:
+        """(H,) bool: ``tail < head``, the half-edge that numbers its edge."""
+        return _readonly(self._corners < self.head)
 
     @_connectivity
     def halfedge_edge(self) -> IntArray:
@@ -548,14 +585,17 @@ class Mesh:
         Edge ``e`` is numbered by the order of its half-edge with
         ``tail < head``; see :attr:`edges`.
         """
-        primary = self._corners < self.head
-        ids = np.cumsum(primary) - 1
-        return _readonly(np.where(primary, ids, ids[self.twin]))
+        primary = self._forward
+        ids = np.cumsum(primary, dtype=self._corners.dtype)
+        ids -= 1
+        back = np.flatnonzero(~primary)
+        ids[back] = ids[self.twin[back]]
+        return _readonly(ids)
 
     @_connectivity
     def edge_halfedge(self) -> IntArray:
         """(E,) int: for every edge, its half-edge with ``tail < head`` (each edge once)."""
-        return _readonly(np.flatnonzero(self._corners < self.head))
+        return _readonly(np.flatnonzero(self._forward).astype(self._corners.dtype, copy=False))
 
     @_connectivity
     def edges(self) -> IntArray:
@@ -569,7 +609,7 @@ class Mesh:
 
         ``rotation[h] = twin[prev[h]]``.
         """
-        return _readonly(self.twin[self.prev])
+        return _readonly(_rotation(self.twin, self._offsets, self._uniform_size, self))
 
     @_connectivity
     def vertex_ring(self) -> Rings:
@@ -585,11 +625,43 @@ class Mesh:
         ring, off = _vertex_rings(self.rotation, self._corners, self.valences)
         return _readonly(ring), _readonly(off)
 
+    def _faces_only(self) -> Any:
+        """This mesh's faces without its positions (a :class:`_Faces`).
+
+        For the producers an operator hands over with its output: they
+        derive what they need from the faces (shared with this mesh, so
+        nothing is derived twice) without keeping the positions alive.
+        """
+        return _Faces(self._shared, self.n_vertices)
+
     # ------------------------------------------------------------------ geometry
+    @_geometry
+    def _extent(self) -> float:
+        """The largest absolute coordinate (an upper bound, for operator outputs).
+
+        Operators place new points by affine combinations with non-negative
+        weights, which never move a point outside the box of its input, so
+        an output inherits its input's extent (see :meth:`_note_extent`).
+        Above :data:`_SAFE_EXTENT` sums of coordinates could overflow, and
+        the geometry is computed on positions scaled by a power of two
+        (exact) instead.
+        """
+        v = self._vertices
+        if v.size == 0:
+            return 0.0
+        return float(max(v.max(), -v.min()))
+
+    def _note_extent(self, bound: float) -> None:
+        """Record an upper bound of :attr:`_extent` known without a pass over the positions."""
+        self._own.setdefault("_extent", float(bound))
+
     @_geometry
     def face_centroids(self) -> FloatArray:
         """(m, 3) float: the plain mean of each face's vertices."""
-        return _readonly(self.face_means(self._vertices))
+        means = _face_means(
+            self._vertices, self._corners, self._offsets, self._uniform_size, self._extent
+        )
+        return _readonly(means)
 
     def face_means(self, values: ArrayLike) -> np.ndarray:
         """Average per-vertex values over every face.
@@ -601,35 +673,42 @@ class Mesh:
         Returns
         -------
         (m,) or (m, d) float
-            A new array (the caller's to keep).
+            A new array (the caller's to keep).  Finite for any finite
+            ``values``: sums that would overflow are taken on values scaled
+            down by a power of two.
+
+        Notes
+        -----
+        The corners are gathered in blocks of faces, so the memory beyond
+        the result stays small whatever the mesh's size.
         """
         values = np.asarray(values, dtype=np.float64)
-        cols = values.reshape(values.shape[0], -1).T
-        m = self.n_faces
-        k = int(self._offsets[1]) if m else 0
-        uniform = (
-            k
-            and self._corners.size == k * m
-            and self._offsets[-2] == k * (m - 1)
-            and not np.any(np.diff(self._offsets) - k)
-        )
-        out = np.empty((m, cols.shape[0]))
-        for i, col in enumerate(cols):  # one coordinate at a time: 1-D takes are fastest
-            g = np.ascontiguousarray(col).take(self._corners)
-            out[:, i] = (
-                g.reshape(m, k).sum(axis=1) if uniform else np.add.reduceat(g, self._offsets[:-1])
-            )
-        out /= k if uniform else self.face_sizes[:, None]
-        return out.reshape((m,) + values.shape[1:])
+        flat = values.reshape(values.shape[0], -1)
+        extent = float(np.abs(flat).max()) if flat.size else 0.0
+        means = _face_means(flat, self._corners, self._offsets, self._uniform_size, extent)
+        return means.reshape((self.n_faces,) + values.shape[1:])
 
     @_geometry
     def face_normals(self) -> FloatArray:
-        """(m, 3) float: unit normals (Newell's method; zero for degenerate faces)."""
+        """(m, 3) float: unit normals (Newell's method; zero for degenerate faces).
+
+        Faces whose cross products would overflow or underflow (coordinates
+        near 1e-150 or 1e150 and beyond) are computed again from their
+        corners relative to the first, scaled per face by a power of two,
+        so their normals neither vanish nor become NaN.
+        """
         p = self._vertices[self._corners]
         q = self._vertices[self.head]
-        cross = np.cross(p, q)
-        n = np.add.reduceat(cross, self._offsets[:-1], axis=0)
-        length = np.linalg.norm(n, axis=1, keepdims=True)
+        with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+            cross = np.cross(p, q)
+            n = np.add.reduceat(cross, self._offsets[:-1], axis=0)
+            length = np.linalg.norm(n, axis=1, keepdims=True)
+        # lengths outside [2**-800, 2**800] may have lost everything to
+        # underflow or overflow: those faces again, rescaled
+        redo = np.flatnonzero(~((length[:, 0] >= 2.0**-800) & (length[:, 0] <= 2.0**800)))
+        if redo.size:
+            n[redo] = _scaled_newell(self._vertices, self._corners, self._offsets, redo)
+            length = np.linalg.norm(n, axis=1, keepdims=True)
         return _readonly(np.divide(n, length, out=np.zeros_like(n), where=length > 0))
 
     @property
@@ -637,12 +716,20 @@ class Mesh:
         """Signed enclosed volume (positive for outward-oriented faces).
 
         Each face is fanned from its centroid; the tetrahedra to the origin
-        are summed.
+        are summed.  Coordinates beyond 2**300 (or below 2**-300) are
+        scaled by a power of two first, so the result is ``inf`` (or 0)
+        only when the volume itself is beyond float64's range.
         """
-        c = self.face_centroids[self.halfedge_face]
-        p = self._vertices[self._corners]
-        q = self._vertices[self.head]
-        return float(np.einsum("ij,ij->", c, np.cross(p, q)) / 6.0)
+        extent = self._extent
+        if extent == 0 or 2.0**-300 < extent < 2.0**300:
+            c = self.face_centroids[self.halfedge_face]
+            p = self._vertices[self._corners]
+            q = self._vertices[self.head]
+            return float(np.einsum("ij,ij->", c, np.cross(p, q)) / 6.0)
+        shift = int(np.frexp(extent)[1])
+        small = self._rescaled(-shift)
+        with np.errstate(over="ignore", under="ignore"):
+            return float(np.ldexp(small.volume, 3 * shift))
 
     @property
     def bounds(self) -> FloatArray:
@@ -700,6 +787,97 @@ class Mesh:
 
     # ------------------------------------------------------------------ checks
     def _validate(self) -> None:
+        """Check that the mesh is a closed, oriented 2-manifold; raise MeshError if not.
+
+        Every check runs first as a whole-array pass that only says whether
+        the mesh is valid (:meth:`_valid`); only a mesh that fails one is
+        checked again, in order, by :meth:`_validate_exactly`, which finds
+        the first culprit and names it.  The twins and vertex rings the
+        checks derive stay cached.
+        """
+        if not self._valid():
+            self._validate_exactly()
+
+    def _valid(self) -> bool:
+        """Every check of :meth:`_validate_exactly`, without messages.
+
+        Faces of at least 3 corners; indices in range; no vertex twice in a
+        face; every directed edge once and with its opposite (one sort of
+        packed 64-bit keys, :func:`_pair_twins`); at least 3 edges at every
+        vertex (so none unused); no two faces sharing two edges (no face
+        twice among a face's neighbours); one fan around every vertex (the
+        vertex rings use every half-edge once).
+        """
+        n, c, o = self.n_vertices, self._corners, self._offsets
+        if n == 0 or o.size < 2 or c.size == 0:
+            return False
+        k = self._uniform_size
+        if (k < 3) if k else int(self.face_sizes.min()) < 3:
+            return False
+        if int(c.min()) < 0 or int(c.max()) >= n:
+            return False
+        if self._repeats_in_a_face(c, n):
+            return False
+        # the arrays below are not kept (only the twins and rings are): the
+        # peak stays a few bytes per corner above the faces themselves
+        twin = _pair_twins(c, None if k else self.head, n, k)
+        if twin is None:
+            return False
+        if int(self.valences.min()) < 3:
+            return False
+        neighbour = twin // k if k else self.halfedge_face[twin]
+        if self._repeats_in_a_face(neighbour, self.n_faces):
+            return False
+        del neighbour
+        self._shared.values["twin"] = _readonly(twin)
+        if k:  # rotation[h] = twin[prev[h]], prev computed as needed (no array kept)
+            ring, ring_off = _vertex_rings(_RotateUniform(twin, k), c, self.valences)
+        else:
+            ring, ring_off = _vertex_rings(_rotation(twin, o, k, self), c, self.valences)
+        seen = np.zeros(c.size, dtype=bool)
+        for a in range(0, ring.size, _BLOCK):
+            seen[ring[a : a + _BLOCK]] = True
+        if not seen.all():
+            return False
+        self._shared.values["vertex_ring"] = (_readonly(ring), _readonly(ring_off))
+        return True
+
+    def _repeats_in_a_face(self, values: np.ndarray, bound: int) -> bool:
+        """Whether some face holds a value twice (``values``: one per corner, in ``[0, bound)``).
+
+        Compares every corner with the corners 1, 2, ..., k // 2 places
+        further round its face (every pair once), in whole-array passes;
+        faces of more than 16 sides are checked by one sort instead.
+        """
+        k = self._uniform_size
+        if k:
+            if k <= 16:
+                a = values.reshape(-1, k)
+                for s in range(1, k // 2 + 1):
+                    if (a[:, s:] == a[:, :-s]).any() or (a[:, :s] == a[:, k - s :]).any():
+                        return True
+                return False
+        else:
+            sizes = self.face_sizes
+            top = int(sizes.max())
+            if top <= 16:
+                slot = self.halfedge_slot
+                size = sizes[self.halfedge_face]
+                h = np.arange(values.size, dtype=slot.dtype)
+                for s in range(1, top // 2 + 1):
+                    # s places further round the face (faces of more than s sides)
+                    longer = size > s
+                    p = h + s
+                    p -= np.where(slot + s >= size, size, 0).astype(p.dtype, copy=False)
+                    p = np.where(longer, p, h)
+                    if ((values[p] == values) & longer).any():
+                        return True
+                return False
+        key = self.halfedge_face.astype(np.int64) * np.int64(bound) + values
+        key.sort()
+        return bool((key[1:] == key[:-1]).any())
+
+    def _validate_exactly(self) -> None:
         n = self.n_vertices
         c = self._corners
         sizes = self.face_sizes
@@ -718,7 +896,7 @@ class Mesh:
             )
         # repeated vertex inside a face
         fid = self.halfedge_face
-        key = fid * n + c
+        key = fid.astype(np.int64) * n + c
         order = np.argsort(key, kind="stable")
         dup = np.flatnonzero(key[order][1:] == key[order][:-1])
         if dup.size:
@@ -800,6 +978,55 @@ class Mesh:
         from .io.convert import to_trimesh
 
         return to_trimesh(self)
+
+
+class _Faces:
+    """The faces of a mesh without positions: :class:`Mesh`'s connectivity properties.
+
+    Reads and fills the same shared connectivity record as the meshes with
+    these faces.  Not a mesh (it has no positions and is never handed to
+    users): operators' producers hold one instead of the mesh, so that a
+    lazy twin or ring does not keep the input's positions alive.
+    """
+
+    __slots__ = ("_shared", "_corners", "_offsets", "_n")
+
+    def __init__(self, shared: _Connectivity, n: int) -> None:
+        self._shared = shared
+        self._corners = shared.corners
+        self._offsets = shared.offsets
+        self._n = n
+
+    @property
+    def n_vertices(self) -> int:
+        return self._n
+
+
+for _name in (
+    "corners",
+    "offsets",
+    "tail",
+    "n_faces",
+    "n_halfedges",
+    "n_edges",
+    "face_sizes",
+    "_uniform_size",
+    "valences",
+    "halfedge_face",
+    "halfedge_slot",
+    "next",
+    "prev",
+    "head",
+    "twin",
+    "_forward",
+    "halfedge_edge",
+    "edge_halfedge",
+    "edges",
+    "rotation",
+    "vertex_ring",
+):
+    setattr(_Faces, _name, Mesh.__dict__[_name])
+del _name
 
 
 # ---------------------------------------------------------------------- helpers
@@ -953,6 +1180,342 @@ def _as_csr(faces: Any) -> tuple[IntArray, IntArray]:
     return np.concatenate(flat), offsets
 
 
+#: Largest index an int32 index array holds.
+_INT32_MAX = 2**31 - 1
+
+#: Above this absolute coordinate, geometry is computed on positions scaled
+#: down by a power of two (sums of up to 2**23 coordinates cannot overflow).
+_SAFE_EXTENT = 2.0**1000
+
+
+def _index_dtype(*counts: int) -> np.dtype:
+    """int32 when every index of arrays of these sizes fits in it, else int64."""
+    return np.dtype(np.int32) if max(counts, default=0) <= _INT32_MAX else np.dtype(np.int64)
+
+
+def _compact(corners: np.ndarray, offsets: np.ndarray, n: int) -> tuple[IntArray, IntArray]:
+    """``corners`` and ``offsets`` as int32 when they fit (see :func:`_index_dtype`).
+
+    Values out of int32's range stay int64, so that validation still sees
+    (and names) them instead of a wrapped-around index.  Always plain numpy
+    arrays (a subclass such as trimesh's ``TrackedArray`` is not kept: its
+    Python-level operators would slow every pass down).
+    """
+    corners, offsets = np.asarray(corners), np.asarray(offsets)
+    dtype = _index_dtype(n, corners.size)
+    if dtype == corners.dtype:
+        return corners, offsets
+    if corners.size and not (
+        -_INT32_MAX <= int(corners.min()) and int(corners.max()) <= _INT32_MAX
+    ):
+        return corners, offsets
+    if offsets.size and not (
+        -_INT32_MAX <= int(offsets.min()) and int(offsets.max()) <= _INT32_MAX
+    ):
+        return corners, offsets
+    return corners.astype(dtype), offsets.astype(dtype)
+
+
+def _uniform_size(offsets: np.ndarray, n_corners: int) -> int:
+    """k when the faces of these offsets all have k corners, else 0."""
+    m = offsets.size - 1
+    if m < 1:
+        return 0
+    k = int(offsets[1] - offsets[0])
+    if k < 1 or k * m != n_corners or np.any(np.diff(offsets) != k):
+        return 0
+    return k
+
+
+def _halfedge_face(offsets: np.ndarray, n_corners: int, k: int) -> IntArray:
+    faces = np.arange(offsets.size - 1, dtype=offsets.dtype)
+    return np.repeat(faces, k if k else np.diff(offsets))
+
+
+def _shifted(a: np.ndarray, k: int, step: int) -> np.ndarray:
+    """``a`` (one value per corner of k-gons) moved ``step`` places round every face.
+
+    ``out[h] = a[next[h]]`` for ``step = 1``, ``a[prev[h]]`` for ``step = -1``:
+    a copy column by column, without gathering.
+    """
+    rows = a.reshape(-1, k)
+    out = np.empty_like(rows)
+    if step == 1:
+        out[:, :-1] = rows[:, 1:]
+        out[:, -1] = rows[:, 0]
+    else:
+        out[:, 1:] = rows[:, :-1]
+        out[:, 0] = rows[:, -1]
+    return out.reshape(-1)
+
+
+def _head(corners: np.ndarray, offsets: np.ndarray, k: int) -> IntArray:
+    """(H,) the vertex every half-edge reaches, for faces that are all k-gons."""
+    return _shifted(corners, k, 1)
+
+
+def _rotation(twin: np.ndarray, offsets: np.ndarray, k: int, mesh: Any = None) -> IntArray:
+    """(H,) ``twin[prev]``: the next outgoing half-edge counter-clockwise round its tail."""
+    if k:
+        return _shifted(twin, k, -1)
+    prv = mesh.prev if mesh is not None else _prev_of(offsets, twin.size, twin.dtype)
+    return twin[prv]
+
+
+class _RotateUniform:
+    """``rotation[h]`` of a mesh of k-gons from its twins, without a rotation array.
+
+    ``rotate[cur]`` is ``twin[prev[cur]]``, ``prev[h]`` being ``h - 1``, or
+    ``h + k - 1`` at the first corner of a face.
+    """
+
+    def __init__(self, twin: np.ndarray, k: int) -> None:
+        self.twin, self.k = twin, k
+
+    def __getitem__(self, cur: np.ndarray) -> np.ndarray:
+        prv = cur - 1
+        prv[cur % self.k == 0] += self.k
+        return self.twin[prv]
+
+
+def _next_of(offsets: np.ndarray, n_corners: int, dtype: Any) -> IntArray:
+    """(H,) the next half-edge round each face, from the offsets alone."""
+    nxt = np.arange(1, n_corners + 1, dtype=dtype)
+    nxt[offsets[1:] - 1] = offsets[:-1]
+    return nxt
+
+
+def _prev_of(offsets: np.ndarray, n_corners: int, dtype: Any) -> IntArray:
+    """(H,) the previous half-edge round each face, from the offsets alone."""
+    prv = np.arange(-1, n_corners - 1, dtype=dtype)
+    prv[offsets[:-1]] = offsets[1:] - 1
+    return prv
+
+
+def _pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) -> IntArray | None:
+    """The twin of every half-edge of a closed oriented manifold, or None.
+
+    Every half-edge ``h = (u, w)`` gets the key ``(min, max, u > w)`` of its
+    undirected edge and direction, packed with ``h`` itself into one 64-bit
+    integer: one sort of plain integers (numpy's vectorized sort, several
+    times faster than an argsort) then puts the two halves of every edge
+    side by side, the forward one first.  None when that pattern breaks (a
+    directed edge used twice, a boundary edge): the caller then looks for
+    the culprit (:func:`_match_twins`).  Beyond the twins, only the packed
+    keys (8 bytes a half-edge) are allocated: keys are built, checked and
+    unpacked in blocks.  ``head`` may be None when every face is a k-gon:
+    it is then read block by block from ``tail``.
+
+    When key and index need more than 63 bits (meshes of millions of
+    vertices), the half-edges are first split by the high bits of their
+    smaller vertex (a radix pass; both halves of an edge fall in the same
+    part) and each part is sorted on its own.
+    """
+    H = tail.size
+    if H % 2:
+        return None
+    twin = np.empty(H, dtype=tail.dtype)
+    index_bits = max(int(H - 1).bit_length(), 1)
+    vertex_bits = max(int(n - 1).bit_length(), 1)
+    # a key (lo * n + hi) * 2 + flip with lo < 2**low_bits is below 2**(63 - index_bits)
+    low_bits = 62 - index_bits - int(n).bit_length()
+    if low_bits >= vertex_bits:
+        return twin if _pair_part(tail, head, n, index_bits, None, None, twin, k) else None
+    if head is None:
+        head = _head(tail, np.empty(0), k)
+    parts = vertex_bits - max(low_bits, 0)
+    if low_bits < 1 or parts > 16:  # pragma: no cover - beyond 2**40 half-edges
+        return _match_twins_argsort(tail, head, n, twin)
+    part = (np.minimum(tail, head) >> low_bits).astype(np.uint16)
+    order = np.argsort(part, kind="stable").astype(tail.dtype)  # radix sort: O(H)
+    bounds = np.concatenate([[0], np.cumsum(np.bincount(part, minlength=1 << parts))])
+    del part
+    mask = (1 << low_bits) - 1
+    for a, b in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
+        if a == b:
+            continue
+        ids = order[a:b]
+        if not _pair_part(tail[ids], head[ids], n, index_bits, ids, mask, twin):
+            return None
+    return twin
+
+
+#: Elements per block of the block-wise passes: the temporaries of a pass
+#: stay a few hundred kilobytes (in cache, and out of the peak memory).
+_BLOCK = 1 << 13
+
+
+def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0) -> bool:
+    """Pair the half-edges of one part (see :func:`_pair_twins`); False if they do not pair.
+
+    ``ids`` maps the part's half-edges to the mesh's (None: the whole mesh);
+    ``mask`` keeps the low bits of the smaller vertex (None: all of it);
+    ``head`` None: faces of ``k`` corners, heads read from ``tail``.
+    """
+    size = tail.size
+    if size % 2:
+        return False
+    key = np.empty(size, dtype=np.int64)
+    step = _BLOCK - _BLOCK % k if head is None else _BLOCK
+    for a in range(0, size, step):
+        t = tail[a : a + step]
+        h = _head(t, np.empty(0), k) if head is None else head[a : a + step]
+        lo = np.minimum(t, h)
+        part = key[a : a + step]
+        np.multiply(lo & mask if mask is not None else lo, np.int64(n), out=part)
+        part += np.maximum(t, h)
+        part <<= 1
+        part |= t > h
+        part <<= index_bits
+        part |= np.arange(a, a + part.size, dtype=np.int64)
+        del t, h, lo, part
+    key.sort()
+    # the two halves of every edge must sit side by side: keys 2K and 2K + 1,
+    # which differ in their lowest bit only; then the low bits say which
+    # half-edges they are
+    low = np.int64((1 << index_bits) - 1)
+    for a in range(0, size, _BLOCK):
+        part = key[a : a + _BLOCK]
+        pair = np.bitwise_xor(part[0::2], part[1::2])
+        pair >>= index_bits
+        if not (pair == 1).all():
+            return False
+        part &= low
+        first, second = part[0::2], part[1::2]
+        if ids is not None:
+            first, second = ids[first], ids[second]
+        twin[first] = second
+        twin[second] = first
+    return True
+
+
+def _match_twins_argsort(tail, head, n, twin):  # pragma: no cover - huge meshes only
+    lo = np.minimum(tail, head)
+    key = (lo.astype(np.int64) * np.int64(n) + np.maximum(tail, head)) * 2 + (tail > head)
+    order = np.argsort(key)
+    skey = key[order]
+    a, b = skey[0::2], skey[1::2]
+    if (a & 1).any() or not np.array_equal(a + 1, b):
+        return None
+    twin[order[0::2]] = order[1::2]
+    twin[order[1::2]] = order[0::2]
+    return twin
+
+
+def _face_means(
+    values: np.ndarray, corners: np.ndarray, offsets: np.ndarray, k: int, extent: float
+) -> FloatArray:
+    """(m, d) the mean of ``values`` (n, d) over every face, in blocks of faces.
+
+    The sums run in the order of the faces' corners, as numpy's
+    ``reshape(m, k).sum(axis=1)`` (faces of k < 8 corners) or
+    ``np.add.reduceat`` (mixed sizes) would add them, so the results are
+    those of those whole-array expressions, bit for bit; only the memory
+    they need is bounded (a block at a time).  Values beyond
+    :data:`_SAFE_EXTENT` are scaled down by a power of two first (exact),
+    so no sum overflows.
+    """
+    values = values.reshape(values.shape[0], -1)
+    if extent >= _SAFE_EXTENT:
+        shift = int(np.frexp(extent)[1]) - 1000
+        out = _face_means(np.ldexp(values, -shift), corners, offsets, k, 0.0)
+        out = np.ldexp(out, shift)
+        if not np.isfinite(out).all():
+            raise MeshError(
+                f"coordinates up to {extent:.3g} are too large: a mean of them "
+                "is not a finite float64"
+            )
+        return out
+    m, d = offsets.size - 1, values.shape[1]
+    out = np.empty((m, d))
+    if m == 0:
+        return out
+    if not values.flags.c_contiguous:
+        values = np.ascontiguousarray(values)
+    if k and k < 8:
+        block = _BLOCK
+        corner_rows = corners.reshape(m, k)
+        for a in range(0, m, block):
+            rows = corner_rows[a : a + block]
+            acc = out[a : a + block]
+            np.take(values, rows[:, 0], axis=0, out=acc)
+            for j in range(1, k):
+                acc += values.take(rows[:, j], axis=0)
+        out /= k
+        return out
+    if k:  # k >= 8: numpy's pairwise sums, one coordinate at a time
+        block = max(1, (_BLOCK * 4) // k)
+        for i in range(d):
+            col = np.ascontiguousarray(values[:, i])
+            for a in range(0, m, block):
+                g = col.take(corners[a * k : (a + block) * k])
+                out[a : a + block, i] = g.reshape(-1, k).sum(axis=1)
+                del g
+            del col
+        out /= k
+        return out
+    # mixed sizes: np.add.reduceat adds a face's corners as a0 + (a1 + a2 + ...),
+    # the sum in brackets from left to right while it has fewer than 8 terms
+    # (pairwise beyond); the same order here, slot by slot over blocks of faces
+    sizes = np.diff(offsets)
+    a = 0
+    while a < m:
+        # blocks of at most _BLOCK faces and about 4 * _BLOCK corners
+        b = int(np.searchsorted(offsets, offsets[a] + 4 * _BLOCK, side="right")) - 1
+        b = min(max(b, a + 1), a + _BLOCK, m)
+        size, start, acc = sizes[a:b], offsets[a:b], out[a:b]
+        a = b
+        np.take(values, corners[start + 1], axis=0, out=acc)
+        top = int(size.max())
+        for j in range(2, min(top, 8)):
+            longer = np.flatnonzero(size > j)
+            if longer.size == size.size:
+                acc += values.take(corners[start + j], axis=0)
+            else:
+                acc[longer] += values.take(corners[start[longer] + j], axis=0)
+        acc += values.take(corners[start], axis=0)
+        long = np.flatnonzero(size > 8)  # 8 or more terms in the brackets: numpy's own sums
+        if long.size:
+            o = np.stack([start[long], start[long] + size[long]], axis=1).reshape(-1)
+            h = np.repeat(o[0::2] - np.cumsum(np.r_[0, size[long][:-1]]), size[long])
+            h += np.arange(h.size, dtype=h.dtype)
+            g = values.take(corners[h], axis=0)
+            acc[long] = np.add.reduceat(g, np.cumsum(np.r_[0, size[long][:-1]]), axis=0)
+            del g, h, o
+    out /= sizes[:, None]
+    return out
+
+
+def _scaled_newell(
+    vertices: np.ndarray, corners: np.ndarray, offsets: np.ndarray, faces: np.ndarray
+) -> FloatArray:
+    """(len(faces), 3) Newell normals of some faces, safe from overflow and underflow.
+
+    Each face's corners are scaled by a power of two to at most 1, taken
+    relative to its first corner, and scaled again so that the largest of
+    those differences is about 1: the cross products then neither
+    overflow nor underflow, and the direction is the face's.
+    """
+    start, stop = offsets[faces].astype(np.int64), offsets[faces + 1].astype(np.int64)
+    sizes = stop - start
+    local = np.repeat(np.arange(faces.size), sizes)
+    first = np.repeat(start, sizes)
+    h = first + np.arange(local.size) - np.repeat(np.cumsum(sizes) - sizes, sizes)
+    p = vertices[corners[h]]
+
+    def exponent(a: np.ndarray) -> np.ndarray:
+        top = np.maximum.reduceat(np.abs(a).max(axis=1), np.cumsum(sizes) - sizes)
+        return np.frexp(top)[1]
+
+    p = np.ldexp(p, -exponent(p)[local][:, None])
+    p -= p[np.cumsum(sizes) - sizes][local]
+    p = np.ldexp(p, -exponent(p)[local][:, None])
+    nxt = np.arange(local.size) + 1
+    last = np.cumsum(sizes) - 1
+    nxt[last] = last - sizes + 1
+    return np.add.reduceat(np.cross(p, p[nxt]), np.cumsum(sizes) - sizes, axis=0)
+
+
 def _csr_part(values: Any, name: str) -> IntArray:
     """A CSR array given to :meth:`Mesh.from_csr` as a new flat int64 array."""
     if values is None or isinstance(values, _NOT_ARRAYS):
@@ -1011,26 +1574,41 @@ def _vertex_rings(rotation, tail, valences):
     detects.
     """
     n = valences.size
-    ring_off = np.zeros(n + 1, dtype=np.int64)
+    dtype = tail.dtype
+    ring_off = np.zeros(n + 1, dtype=dtype)
     np.cumsum(valences, out=ring_off[1:])
-    start = np.empty(n, dtype=np.int64)
-    # any outgoing half-edge per vertex: the last one written wins
-    start[tail] = np.arange(tail.size, dtype=np.int64)
-    ring = np.empty(tail.size, dtype=np.int64)
-    top = int(valences.max(initial=0))
-    # vertices by valence (a radix sort on small ints): at step k the vertices
-    # still walking are a suffix of this order
-    small = valences.astype(np.uint16 if top < 65536 else np.int64)
-    order = np.argsort(small, kind="stable")
-    first = np.searchsorted(small[order], np.arange(top), side="right")
-    cur = start[order]
-    base = ring_off[:-1][order]
-    for k in range(top):
-        lo = int(first[k])
-        c = cur[lo:]
+    start = np.empty(n, dtype=dtype)
+    # any outgoing half-edge per vertex: the last one written wins (in blocks:
+    # numpy widens a scatter's index array, the whole of it at once otherwise)
+    for a in range(0, tail.size, _BLOCK):
+        start[tail[a : a + _BLOCK]] = np.arange(a, min(a + _BLOCK, tail.size), dtype=dtype)
+    ring = np.empty(tail.size, dtype=dtype)
+    if n == 0:
+        return ring, ring_off
+    # every vertex has at least `low` edges: the first `low` steps run over
+    # all vertices in index order (writes in increasing order of address)
+    low, top = int(valences.min()), int(valences.max())
+    base = ring_off[:-1]
+    cur = start
+    for k in range(low):
         if k:
-            c = rotation[c]
-            cur[lo:] = c
+            cur = rotation[cur]
+        ring[base + k] = cur
+    if top == low:
+        return ring, ring_off
+    # the rest, for the vertices of more edges, by valence (a radix sort on
+    # small ints): at step k the vertices still walking are a suffix
+    more = np.flatnonzero(valences > low).astype(dtype)
+    small = valences[more].astype(np.uint16 if top < 65536 else np.int64)
+    order = np.argsort(small, kind="stable").astype(dtype)
+    more = more[order]
+    first = np.searchsorted(small[order], np.arange(top), side="right")
+    cur = cur[more]
+    base = base[more]
+    for k in range(low, top):
+        lo = int(first[k])
+        c = rotation[cur[lo:]] if k else cur[lo:]
+        cur[lo:] = c
         ring[base[lo:] + k] = c
     return ring, ring_off
 

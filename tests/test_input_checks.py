@@ -286,9 +286,9 @@ def test_shapes_too_large_for_memory_are_refused_before_building(build, what):
 
 def test_the_shape_size_guard_is_subdivides(monkeypatch):
     monkeypatch.setattr(pentanb.subdivision, "default_max_bytes", lambda: 100_000)
-    assert shapes.torus(10, 10).n_faces == 100  # 100 quads: about 23 kB
-    with pytest.raises(MeshError, match=r"torus\(30, 30\) would build .* limit of 100,000 bytes"):
-        shapes.torus(30, 30)
+    assert shapes.torus(10, 10).n_faces == 100  # 100 quads: about 8 kB
+    with pytest.raises(MeshError, match=r"torus\(40, 40\) would build .* limit of 100,000 bytes"):
+        shapes.torus(40, 40)
     with pytest.raises(MeshError, match=r"genus_surface\(20\) would build"):
         shapes.genus_surface(20)
 

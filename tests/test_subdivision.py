@@ -266,27 +266,148 @@ def test_memory_guard_refuses_before_building(monkeypatch):
     with pytest.raises(MeshError) as info:
         subdivide(m, "pentagonalize", iterations=12, max_bytes=10**6)
     msg = str(info.value)
-    # every pentagonalization multiplies E by 5 and makes 2E faces; duals keep
-    # the counts after an even number: after the 12th, E = 12 * 5**12,
-    # F = 2 * 12 * 5**11 and (Euler, chi = 2) V = 2 + E - F
-    E = 12 * 5**12
-    F = 2 * 12 * 5**11
-    V = 2 + E - F
+    # the first iteration whose estimate is over the limit is named, with the
+    # counts of its mesh: every pentagonalization multiplies E by 5 and makes
+    # 2E faces; duals keep the counts after an even number
+    k = next(
+        i
+        for i in range(1, 13)
+        if pentanb.subdivision._iteration_bytes(
+            SCHEMES["pentagonalize"],
+            _cube_after(i - 1),
+            2,
+            later=i > 1,
+            kind=(4, 3) if i == 1 else (5, 0),
+        )
+        > 10**6
+    )
+    assert f"iteration {k} of 12" in msg
+    V, E, F = _cube_after(k)
     got = re.search(r"([\d,]+) faces \(([\d,]+) vertices, ([\d,]+) edges\)", msg)
     assert got, msg
-    faces, verts, edges = (int(x.replace(",", "")) for x in got.groups())
-    assert (faces, verts, edges) in {(F, V, E), (V, F, E)}  # the mesh or its dual
-    assert f"{faces:,} faces" in msg
-    need = int(re.search(r"([\d,]+) bytes", msg).group(1).replace(",", ""))
-    assert need >= 8 * 2 * E > 10**6  # at least one int64 per corner
+    assert tuple(int(x.replace(",", "")) for x in got.groups()) == (F, V, E)
+    need = int(re.search(r"([\d,]+) bytes \(", msg).group(1).replace(",", ""))
+    assert need > 10**6
+    assert need >= 8 * 2 * _cube_after(k - 1)[1]  # more than the input's corners, twins...
     assert "1,000,000" in msg
+
+
+def _cube_after(k: int) -> tuple[int, int, int]:
+    """(V, E, F) of the cube after k pentagonalizations (Euler: V = 2 + E - F)."""
+    E = 12 * 5**k
+    F = 6 if k == 0 else 2 * 12 * 5 ** (k - 1)
+    return 2 + E - F, E, F
+
+
+@pytest.mark.parametrize("call", ["subdivide", "predict_counts", "max_iterations"])
+@pytest.mark.parametrize("big", [10**9, 10**4, 5000, 2**64])
+def test_memory_guard_answers_at_once_for_any_iteration_count(call, big):
+    cube = shapes.cube()
+    if call == "max_iterations":
+        k = pentanb.max_iterations(cube, "pentagonalize", 2, max_faces=10**30, cap=big)
+        assert 5 < k < 30  # stopped by the memory limit, level by level
+        return
+    with pytest.raises(MeshError) as info:
+        if call == "subdivide":
+            subdivide(cube, "pentagonalize", iterations=big)
+        else:
+            predict_counts((8, 12, 6), "pentagonalize", big)
+    msg = str(info.value)
+    assert f"of {big:,}" in msg and "over the limit" in msg
+    # sizes a reader can read: no 3,500-digit numbers
+    assert max(len(x) for x in re.findall(r"[\d,]+", msg)) < 40
+    assert re.search(r"\d(\.\d+)? (kB|MB|GB|TB|PB|EB)", msg)
+
+
+def test_memory_guard_without_a_limit_still_refuses_what_no_computer_holds():
+    with pytest.raises(MeshError, match="beyond what any computer can index"):
+        subdivide(shapes.cube(), "pentagonalize", 10**9, max_bytes=float("inf"))
+    with pytest.raises(MeshError, match="beyond what any computer can index"):
+        predict_counts((8, 12, 6), "pentagonalize", 10**9, max_bytes=float("inf"))
+
+
+def test_too_many_steps_are_refused_with_the_count():
+    # duals and triangulate (after its first pass) do not grow the mesh: the
+    # memory guard lets them through, the step limit does not
+    with pytest.raises(ValueError, match=r"1,000,000,001 steps; at most 100,000"):
+        subdivide(shapes.cube(), "pentagonalize", 1, duals=10**9)
+    with pytest.raises(ValueError, match=r"at most 100,000"):
+        predict_counts((8, 12, 6), "pentagonalize", 1, duals=10**9)
+    tri = pentanb.triangulate(shapes.cube())
+    with pytest.raises(ValueError, match=r"at most 100,000"):
+        subdivide(tri, "triangulate", iterations=10**9)
+    assert pentanb.max_iterations(tri, "triangulate", cap=10**9) == 10**9  # a fixed point
+
+
+@pytest.mark.parametrize("bad", [-1, -0.5, float("nan")])
+def test_max_bytes_must_be_a_positive_number(bad):
+    with pytest.raises(ValueError, match="max_bytes must be a positive number"):
+        subdivide(shapes.cube(), "pentagonalize", max_bytes=bad)
+
+
+@pytest.mark.parametrize("bad", ["10", [10], True, object()])
+def test_max_bytes_of_a_wrong_type_is_a_type_error(bad):
+    with pytest.raises(TypeError, match="max_bytes must be a number"):
+        subdivide(shapes.cube(), "pentagonalize", max_bytes=bad)
+
+
+def test_max_bytes_infinite_means_no_limit():
+    out = subdivide(shapes.cube(), "pentagonalize", 2, max_bytes=float("inf"))
+    assert out.n_faces == 120
+    assert subdivide(shapes.cube(), "pentagonalize", 1, max_bytes=np.float64(1e12)).n_faces == 24
+
+
+def test_a_callable_scheme_is_guarded_from_its_first_iteration():
+    calls = []
+
+    def scheme(m):
+        calls.append(m.n_faces)
+        return pentanb.pentagonalize(m)
+
+    with pytest.raises(MeshError) as info:
+        subdivide(shapes.cube(), scheme, iterations=12)
+    assert calls == [6]  # one iteration ran, then the guard refused the rest
+    msg = str(info.value)
+    assert "scheme" in msg and "if it grows as its first iteration did" in msg
+    assert max(len(x) for x in re.findall(r"[\d,]+", msg)) < 40
+    # the same request within the limit runs
+    calls.clear()
+    assert subdivide(shapes.cube(), scheme, 2, 2).n_faces == 120
+    assert calls == [6, 24]
+
+
+def test_the_callable_guard_uses_the_first_iterations_growth():
+    # pentagonalize multiplies E by 5; with a limit that lets iteration 3
+    # through (predicted E = 12 * 125) but not 4, iteration 4 is named
+    per_edge = pentanb.subdivision.CALLABLE_BYTES_PER_EDGE
+    limit = per_edge * 12 * 5**3 + 1
+    with pytest.raises(MeshError, match="iteration 4 of 5"):
+        subdivide(shapes.cube(), pentanb.pentagonalize, 5, max_bytes=limit)
+
+
+@pytest.mark.parametrize("result", [None, "mesh", 3])
+def test_a_callable_scheme_that_returns_no_mesh_is_a_type_error(result):
+    def returns_something_else(m):
+        return result
+
+    with pytest.raises(
+        TypeError, match=rf"scheme 'returns_something_else' returned {type(result).__name__}"
+    ):
+        subdivide(shapes.cube(), returns_something_else, 1, 0)
+
+
+def test_estimate_bytes_without_a_scheme_is_what_a_mesh_holds():
+    m = pentanb.pentagonalize(shapes.torus(10, 8))
+    held = m.vertices.nbytes + m.corners.nbytes + m.offsets.nbytes + m.twin.nbytes
+    held += sum(a.nbytes for a in m.vertex_ring)
+    assert pentanb.subdivision.estimate_bytes(m.n_vertices, m.n_edges, m.n_faces) >= held
 
 
 def test_memory_guard_lets_small_requests_through():
     m = shapes.cube()
     out = subdivide(m, "pentagonalize", iterations=1, max_bytes=10**9)
     assert out.n_faces == 24
-    with pytest.raises(MeshError, match="24 faces"):
+    with pytest.raises(MeshError, match=r"iteration 1 of 1 would build a mesh of 24 faces"):
         subdivide(m, "pentagonalize", iterations=1, max_bytes=100)
 
 
@@ -376,6 +497,39 @@ def test_scheme_formula_text():
     assert SCHEMES["triangulate"].formula.endswith("at most (when no face is a triangle)")
 
 
+@pytest.mark.parametrize("name", OPERATOR_NAMES)
+def test_the_memory_model_stays_sensible_far_beyond_its_calibration(name):
+    # per edge of the output, every form gives a positive, plausible figure for
+    # inputs of a thousand to a billion edges, of every regularity: the
+    # model extrapolates, it does not explode or turn negative
+    from pentanb import subdivision
+
+    s = SCHEMES[name]
+    for E in (10**3, 10**5, 10**7, 10**9):
+        for V, F, kind in (
+            (E // 3, 2 * E // 3, (3, 6)),
+            (E // 2, E // 2, (4, 4)),
+            (2 * E // 3, 2 * E // 5, (5, 3)),
+            (E // 2, E // 2, (0, 0)),
+        ):
+            out_edges = s.counts(V, E, F)[1]
+            for duals in (0, 1, 2, 5):
+                for later in (False, True):
+                    need = subdivision._iteration_bytes(s, (V, E, F), duals, later, kind)
+                    per_edge = need / out_edges
+                    assert need > 0
+                    # (with int64 indices, beyond 2**31 corners, twice the bytes)
+                    wide = 2 if 2 * out_edges >= 2**31 else 1
+                    if E >= 10**5:
+                        assert 1 < per_edge < wide * subdivision.CALLABLE_BYTES_PER_EDGE, (
+                            E,
+                            kind,
+                            duals,
+                            later,
+                            per_edge,
+                        )
+
+
 def test_conway_notation_is_a_scheme_name():
     """Issue 10 item 5: wherever a scheme name is taken, Conway operators are too."""
     from pentanb.schemes.registry import get_scheme
@@ -387,3 +541,14 @@ def test_conway_notation_is_a_scheme_name():
     assert get_scheme("k4").formula.endswith(" at most")
     with pytest.raises(ValueError, match=r"unknown scheme 'pentagonalise'.*Conway operators"):
         get_scheme("pentagonalise")
+
+
+def test_a_scheme_in_conway_notation_is_guarded_too():
+    # no calibrated model for "dg": the callable schemes' bound per output edge
+    from pentanb import subdivision
+
+    with pytest.raises(MeshError, match=r"^dg iteration \d+ of 1,000,000,000 would build"):
+        subdivide(shapes.cube(), "dg", iterations=10**9)
+    need = subdivision.estimate_bytes(8, 12, 6, "dg", duals=0)
+    assert need >= subdivision.CALLABLE_BYTES_PER_EDGE * 60  # sC has 60 edges
+    assert pentanb.max_iterations(shapes.cube(), "dg", duals=0, max_bytes=need) == 1

@@ -7,27 +7,57 @@ helpers compute those blocks from the input's half-edge arrays.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
+from typing import Any, TypeVar
 
 import numpy as np
 
-from ..mesh import Mesh, MeshError, Rings
+from ..mesh import _SAFE_EXTENT, Mesh, MeshError, Rings, _index_dtype
+
+_Op = TypeVar("_Op", bound=Callable[..., Mesh])
+
+#: Edges (or faces) per block when positions are computed block by block:
+#: small enough that the temporaries stay in cache and out of the peak.
+BLOCK = 1 << 13
 
 
-def edge_points(mesh: Mesh, k: int) -> np.ndarray:
+def index_dtype(n_vertices: int, n_corners: int) -> np.dtype:
+    """The dtype of an output's index arrays (int32 when its counts allow)."""
+    return _index_dtype(n_vertices, n_corners)
+
+
+def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray:
     """Points splitting every edge into ``k + 1`` equal parts.
+
+    Parameters
+    ----------
+    mesh : Mesh
+    k : int
+    out : (E * k, 3) float, optional
+        Where to write them (a block of an operator's output positions).
 
     Returns
     -------
     (E * k, 3) float
         Point ``j`` (0-based) of edge ``e`` is row ``k * e + j``, at
         ``(j + 1) / (k + 1)`` of the way from the edge's smaller vertex to its
-        larger one.
+        larger one: ``a * (1 - t) + b * t``.
     """
-    a, b = mesh.edges[:, 0], mesh.edges[:, 1]
-    pa, pb = mesh.vertices[a], mesh.vertices[b]
-    t = (np.arange(1, k + 1, dtype=np.float64) / (k + 1))[None, :, None]
-    return (pa[:, None, :] * (1.0 - t) + pb[:, None, :] * t).reshape(-1, 3)
+    edges, v = mesh.edges, mesh.vertices
+    E = edges.shape[0]
+    res = np.empty((E * k, 3)) if out is None else out
+    rows = res.reshape(E, k, 3)
+    t = np.arange(1, k + 1, dtype=np.float64) / (k + 1)
+    for a in range(0, E, BLOCK):
+        ends = edges[a : a + BLOCK]
+        pa, pb = v.take(ends[:, 0], axis=0), v.take(ends[:, 1], axis=0)
+        for j in range(k):
+            r = rows[a : a + BLOCK, j]
+            np.multiply(pa, 1.0 - t[j], out=r)
+            r += pb * t[j]
+        del pa, pb  # (a block's temporaries: gone before the next allocations)
+    return res
 
 
 def halfedge_edge_point(mesh: Mesh, k: int, j: int) -> np.ndarray:
@@ -51,18 +81,88 @@ def fixed_size(corners_2d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     corners_2d : (m, k) int
     """
     m, k = corners_2d.shape
-    return corners_2d.reshape(-1), np.arange(0, m * k + 1, k, dtype=np.int64)
+    return corners_2d.reshape(-1), np.arange(0, m * k + 1, k, dtype=corners_2d.dtype)
 
 
 def concat_faces(*parts: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
-    """Concatenate several CSR face blocks into one."""
+    """Concatenate several CSR face blocks into one (int64 offsets: :func:`output` narrows them)."""
     corners = np.concatenate([c for c, _ in parts])
-    offs = [parts[0][1]]
-    shift = parts[0][1][-1]
+    offs = [parts[0][1].astype(np.int64)]
+    shift = int(parts[0][1][-1])
     for _, o in parts[1:]:
-        offs.append(o[1:] + shift)
-        shift += o[-1]
+        offs.append(o[1:].astype(np.int64) + shift)
+        shift += int(o[-1])
     return corners, np.concatenate(offs)
+
+
+def affine(part: np.ndarray, scale: int, add: int, dt: np.dtype) -> np.ndarray:
+    """``scale * part + add`` as a new contiguous array of dtype ``dt``."""
+    col = part.astype(dt, copy=True)
+    if scale != 1:
+        col *= scale
+    if add:
+        col += add
+    return col
+
+
+def columns(dt: np.dtype, rows: int, *cols: np.ndarray | int) -> np.ndarray:
+    """A (rows, len(cols)) array whose column s is ``cols[s]`` (an array or an int).
+
+    Written one column at a time: numpy is slow on arrays whose last axis
+    is short (``np.stack(..., axis=1)`` of a few long columns).
+    """
+    out = np.empty((rows, len(cols)), dtype=dt)
+    for s, col in enumerate(cols):
+        out[:, s] = col
+    return out
+
+
+def inverse(ring: np.ndarray) -> np.ndarray:
+    """``pos`` with ``pos[ring[i]] = i``: where every half-edge sits in the vertex rings."""
+    pos = np.empty_like(ring)
+    pos[ring] = np.arange(ring.size, dtype=ring.dtype)
+    return pos
+
+
+def start_at_max(ring: np.ndarray, offsets: np.ndarray | None, k: int = 0) -> np.ndarray:
+    """Every vertex's ring turned to start at its largest half-edge, order kept.
+
+    The rings :attr:`pentanb.Mesh.vertex_ring` derives for a mesh start
+    there; operators that write their output's rings directly turn them
+    the same way, so that the output is the same mesh, bit for bit, as one
+    whose rings were derived (the dual's faces start where its rings do).
+
+    Parameters
+    ----------
+    ring : (H,) int
+        Half-edges, vertex after vertex, each vertex's in rotation order
+        (any start).
+    offsets : (n + 1,) int, or None with ``k``
+    k : int
+        Every vertex has k half-edges (0: read the sizes from ``offsets``).
+
+    Returns
+    -------
+    (H,) int
+        A new array.
+    """
+    if k:
+        rows = ring.reshape(-1, k)
+        first = rows.argmax(axis=1)
+        cols = (first[:, None] + np.arange(k)) % k
+        return np.take_along_axis(rows, cols, axis=1).reshape(-1)
+    assert offsets is not None
+    sizes = np.diff(offsets)
+    start = offsets[:-1].astype(np.int64)
+    top = np.maximum.reduceat(ring, start) if ring.size else ring[:0]
+    h = np.arange(ring.size, dtype=np.int64)
+    owner_start = np.repeat(start, sizes)
+    owner_size = np.repeat(sizes, sizes)
+    at = np.flatnonzero(ring == np.repeat(top, sizes))  # one per vertex: ids are distinct
+    shift = np.repeat(at - start, sizes)
+    out = np.empty_like(ring)
+    out[owner_start + (h - owner_start - shift) % owner_size] = ring
+    return out
 
 
 def output(
@@ -81,7 +181,9 @@ def output(
     vertices : (n, 3) float
     corners : (H,) int
     offsets : (m + 1,) int
-        New arrays the operator made (they become the mesh's, read-only).
+        New arrays the operator made (they become the mesh's, read-only);
+        converted to the output's index dtype (int32 when the counts allow)
+        if the operator made them wider.
     twin : (H,) int, or a zero-argument callable returning it, optional
         The output's twins when the operator knows them (a callable runs
         only if the twins are asked for).
@@ -90,7 +192,36 @@ def output(
     dual_of : Mesh, optional
         The mesh the output is the dual of (:func:`pentanb.dual` only).
     """
+    dtype = index_dtype(vertices.shape[0], corners.size)
+    corners = corners.astype(dtype, copy=False)
+    offsets = offsets.astype(dtype, copy=False)
     return Mesh._new(vertices, corners, offsets, twin=twin, rings=rings, dual_of=dual_of)
+
+
+def scale_safe(op: _Op) -> _Op:
+    """Decorator: run a remeshing operator safely on huge coordinates.
+
+    An operator places its new points by affine combinations of old ones
+    with non-negative weights (edge points, centroids, corner points), so
+    its output's coordinates are bounded by its input's.  Up to
+    ``2**1000`` (about 1e301) nothing can overflow.  Beyond, the operator
+    runs on the positions scaled down by a power of two (exact), and its
+    output is scaled back; a result that would not be finite is a
+    :class:`MeshError`.
+    """
+
+    @functools.wraps(op)
+    def run(mesh: Mesh, *args: Any, **kwargs: Any) -> Mesh:
+        check_mesh(mesh, op.__name__)
+        extent = mesh._extent
+        if extent < _SAFE_EXTENT:
+            out = op(mesh, *args, **kwargs)
+            out._note_extent(extent)
+            return out
+        shift = int(np.frexp(extent)[1]) - 1000
+        return op(mesh._rescaled(-shift), *args, **kwargs)._rescaled(shift)
+
+    return run  # type: ignore[return-value]
 
 
 def check_scale(scale: float, name: str = "scale") -> float:
@@ -118,7 +249,7 @@ def check_mesh(mesh: object, op: str) -> Mesh:
     return mesh
 
 
-def check_vertex_faces(mesh: Mesh, op: str) -> None:
+def check_vertex_faces(mesh: Mesh, op: str, valence: np.ndarray | None = None) -> None:
     """Refuse a mesh with a vertex of fewer than 3 edges (its vertex face would not be a polygon).
 
     The dual (and corner cutting) make a k-gon of every k-valent vertex.
@@ -126,13 +257,17 @@ def check_vertex_faces(mesh: Mesh, op: str) -> None:
     ``Mesh.from_csr(..., validate=False)`` is not checked and may have one
     (e.g. the flat "pillow", two n-gons glued along their boundary).
 
+    ``valence`` (the number of edges at every vertex), when the caller
+    knows it, spares deriving the vertex rings.
+
     Raises
     ------
     MeshError
         Naming the first such vertex and its number of edges.
     """
-    _, ring_offsets = mesh.vertex_ring
-    valence = np.diff(ring_offsets)
+    if valence is None:
+        _, ring_offsets = mesh.vertex_ring
+        valence = np.diff(ring_offsets)
     few = np.flatnonzero(valence < 3)
     if few.size:
         v, k = int(few[0]), int(valence[few[0]])

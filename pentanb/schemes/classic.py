@@ -25,13 +25,18 @@ import numpy as np
 
 from ..mesh import Mesh
 from ._build import (
+    affine,
     check_mesh,
     check_scale,
     check_vertex_faces,
-    concat_faces,
+    columns,
     edge_points,
     fixed_size,
+    index_dtype,
+    inverse,
     output,
+    scale_safe,
+    start_at_max,
 )
 
 __all__ = [
@@ -45,6 +50,7 @@ __all__ = [
 ]
 
 
+@scale_safe
 def triangulate(mesh: Mesh) -> Mesh:
     """The simplest triangulation of Figure 2: a centroid fan in every non-triangle.
 
@@ -65,8 +71,9 @@ def triangulate(mesh: Mesh) -> Mesh:
     if not big.any():
         return mesh
     big_faces = np.flatnonzero(big)
-    centre_id = np.full(mesh.n_faces, -1, dtype=np.int64)
-    centre_id[big_faces] = n + np.arange(big_faces.size, dtype=np.int64)
+    dt = index_dtype(n + big_faces.size, 3 * mesh.n_halfedges)
+    centre_id = np.full(mesh.n_faces, -1, dtype=dt)
+    centre_id[big_faces] = np.arange(n, n + big_faces.size, dtype=dt)
     hf = mesh.halfedge_face
     hb = np.flatnonzero(big[hf])
     fans = np.stack([mesh.corners[hb], mesh.head[hb], centre_id[hf[hb]]], axis=1)
@@ -76,6 +83,7 @@ def triangulate(mesh: Mesh) -> Mesh:
     return output(vertices, corners, offsets)
 
 
+@scale_safe
 def loop_remesh(mesh: Mesh) -> Mesh:
     """Loop's remeshing (Figure 3): a triangle-preserving scheme on any mesh.
 
@@ -91,13 +99,67 @@ def loop_remesh(mesh: Mesh) -> Mesh:
         ``(m_h, w, m_next)``.
     """
     check_mesh(mesh, "loop_remesh")
-    mid = mesh.n_vertices + mesh.halfedge_edge
-    corner_tris = np.stack([mid, mesh.head, mid[mesh.next]], axis=1)
-    corners, offsets = concat_faces((mid, mesh.offsets), fixed_size(corner_tris))
-    vertices = np.concatenate([mesh.vertices, edge_points(mesh, 1)])
-    return output(vertices, corners, offsets)
+    n, E, H = mesh.n_vertices, mesh.n_edges, mesh.n_halfedges
+    dt = index_dtype(n + E, 4 * H)
+    mid = affine(mesh.halfedge_edge, 1, n, dt)
+    corners = np.empty(4 * H, dtype=dt)
+    corners[:H] = mid
+    corners[H:].reshape(H, 3)[:] = columns(dt, H, mid, mesh.head, mid[mesh.next])
+    offsets = np.concatenate([mesh.offsets, np.arange(H + 3, 4 * H + 1, 3, dtype=dt)])
+    vertices = np.empty((n + E, 3))
+    vertices[:n] = mesh.vertices
+    edge_points(mesh, 1, out=vertices[n:])
+    source = mesh._faces_only()
+    return output(
+        vertices,
+        corners,
+        offsets,
+        twin=lambda: _loop_twin(source, dt),
+        rings=lambda: _loop_rings(source, dt),
+    )
 
 
+def _loop_twin(m, dt: np.dtype) -> np.ndarray:
+    """Twins of ``loop_remesh``: central h and ``H + 3h + 2``; ``H + 3h`` and
+    ``H + 3 prev[twin[h]] + 1``."""
+    H = m.n_halfedges
+    nxt, prv, twin = m.next, m.prev, m.twin
+    tri = columns(
+        dt, H, affine(prv[twin], 3, H + 1, dt), affine(twin[nxt], 3, H, dt), np.arange(H, dtype=dt)
+    )
+    return np.concatenate([np.arange(H + 2, 4 * H, 3, dtype=dt), tri.reshape(-1)])
+
+
+def _loop_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
+    """Rings of ``loop_remesh``: old vertex ``H + 3 prev[h] + 1`` for its h; midpoint
+    of edge e (forward h, twin t):
+    ``H + 3h, h, H + 3 prev[h] + 2, H + 3t, t, H + 3 prev[t] + 2``."""
+    H, E = m.n_halfedges, m.n_edges
+    prv, twin = m.prev, m.twin
+    ring, ring_off = m.vertex_ring
+    h = m.edge_halfedge
+    t = twin[h]
+    mids = columns(
+        dt,
+        E,
+        affine(h, 3, H, dt),
+        h,
+        affine(prv[h], 3, H + 2, dt),
+        affine(t, 3, H, dt),
+        t,
+        affine(prv[t], 3, H + 2, dt),
+    )
+    rings = np.concatenate(
+        [
+            start_at_max(affine(prv[ring], 3, H + 1, dt), ring_off),
+            start_at_max(mids.reshape(-1), None, 6),
+        ]
+    )
+    offsets = np.concatenate([ring_off, np.arange(H + 6, H + 6 * E + 1, 6, dtype=dt)])
+    return rings, offsets
+
+
+@scale_safe
 def sqrt3_remesh(mesh: Mesh) -> Mesh:
     """The remeshing of sqrt(3) subdivision: a centroid fan, then every old edge flipped.
 
@@ -111,13 +173,51 @@ def sqrt3_remesh(mesh: Mesh) -> Mesh:
         twin lies in face g.
     """
     check_mesh(mesh, "sqrt3_remesh")
-    c = mesh.n_vertices + mesh.halfedge_face
-    tris = np.stack([mesh.corners, c[mesh.twin], c], axis=1)
+    n, F, H = mesh.n_vertices, mesh.n_faces, mesh.n_halfedges
+    dt = index_dtype(n + F, 3 * H)
+    c = affine(mesh.halfedge_face, 1, n, dt)
+    tris = columns(dt, H, mesh.corners, c[mesh.twin], c)
     corners, offsets = fixed_size(tris)
-    vertices = np.concatenate([mesh.vertices, mesh.face_centroids])
-    return output(vertices, corners, offsets)
+    vertices = np.empty((n + F, 3))
+    vertices[:n] = mesh.vertices
+    vertices[n:] = mesh.face_centroids
+    source = mesh._faces_only()
+    return output(
+        vertices,
+        corners,
+        offsets,
+        twin=lambda: _sqrt3_twin(source, dt),
+        rings=lambda: _sqrt3_rings(source, dt),
+    )
 
 
+def _sqrt3_twin(m, dt: np.dtype) -> np.ndarray:
+    """Twins of ``sqrt3_remesh``: ``3h`` and ``3 next[twin[h]] + 2``; ``3h + 1`` and
+    ``3 twin[h] + 1``; ``3h + 2`` and ``3 twin[prev[h]]``."""
+    H = m.n_halfedges
+    twin = m.twin
+    return columns(
+        dt, H, affine(m.next[twin], 3, 2, dt), affine(twin, 3, 1, dt), affine(m.rotation, 3, 0, dt)
+    ).reshape(-1)
+
+
+def _sqrt3_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
+    """Rings of ``sqrt3_remesh``: old vertex ``3h`` for its h; centroid of f
+    ``3h + 2, 3 twin[h] + 1`` for f's half-edges in order."""
+    H = m.n_halfedges
+    ring, ring_off = m.vertex_ring
+    centre = columns(dt, H, np.arange(2, 3 * H, 3, dtype=dt), affine(m.twin, 3, 1, dt))
+    rings = np.concatenate(
+        [
+            start_at_max(affine(ring, 3, 0, dt), ring_off),
+            start_at_max(centre.reshape(-1), 2 * m.offsets.astype(np.int64)),
+        ]
+    )
+    offsets = np.concatenate([ring_off, H + 2 * m.offsets[1:].astype(dt)])
+    return rings, offsets
+
+
+@scale_safe
 def vertex_insertion(mesh: Mesh) -> Mesh:
     """Catmull-Clark's remeshing (vertex insertion), a quadrilateralization.
 
@@ -130,12 +230,68 @@ def vertex_insertion(mesh: Mesh) -> Mesh:
         V + E + F vertices (old, midpoints, centroids), 4E edges, 2E quads.
     """
     check_mesh(mesh, "vertex_insertion")
-    n, E = mesh.n_vertices, mesh.n_edges
-    mid = n + mesh.halfedge_edge
-    quads = np.stack([mid, mesh.head, mid[mesh.next], n + E + mesh.halfedge_face], axis=1)
+    n, E, F, H = mesh.n_vertices, mesh.n_edges, mesh.n_faces, mesh.n_halfedges
+    dt = index_dtype(n + E + F, 4 * H)
+    mid = affine(mesh.halfedge_edge, 1, n, dt)
+    quads = columns(dt, H, mid, mesh.head, mid[mesh.next], affine(mesh.halfedge_face, 1, n + E, dt))
     corners, offsets = fixed_size(quads)
-    vertices = np.concatenate([mesh.vertices, edge_points(mesh, 1), mesh.face_centroids])
-    return output(vertices, corners, offsets)
+    vertices = np.empty((n + E + F, 3))
+    vertices[:n] = mesh.vertices
+    edge_points(mesh, 1, out=vertices[n : n + E])
+    vertices[n + E :] = mesh.face_centroids
+    source = mesh._faces_only()
+    return output(
+        vertices,
+        corners,
+        offsets,
+        twin=lambda: _insertion_twin(source, dt),
+        rings=lambda: _insertion_rings(source, dt),
+    )
+
+
+def _insertion_twin(m, dt: np.dtype) -> np.ndarray:
+    """Twins of ``vertex_insertion``: ``4h`` and ``4 prev[twin[h]] + 1``; ``4h + 2``
+    and ``4 next[h] + 3``."""
+    H = m.n_halfedges
+    nxt, prv, twin = m.next, m.prev, m.twin
+    return columns(
+        dt,
+        H,
+        affine(prv[twin], 4, 1, dt),
+        affine(twin[nxt], 4, 0, dt),
+        affine(nxt, 4, 3, dt),
+        affine(prv, 4, 2, dt),
+    ).reshape(-1)
+
+
+def _insertion_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
+    """Rings of ``vertex_insertion``: old vertex ``4 prev[h] + 1``; midpoint of e
+    (forward h, twin t) ``4h, 4 prev[h] + 2, 4t, 4 prev[t] + 2``; centroid of f
+    ``4h + 3`` for f's half-edges in order."""
+    H, E = m.n_halfedges, m.n_edges
+    prv, twin = m.prev, m.twin
+    ring, ring_off = m.vertex_ring
+    h = m.edge_halfedge
+    t = twin[h]
+    mids = columns(
+        dt,
+        E,
+        affine(h, 4, 0, dt),
+        affine(prv[h], 4, 2, dt),
+        affine(t, 4, 0, dt),
+        affine(prv[t], 4, 2, dt),
+    )
+    rings = np.concatenate(
+        [
+            start_at_max(affine(prv[ring], 4, 1, dt), ring_off),
+            start_at_max(mids.reshape(-1), None, 4),
+            start_at_max(np.arange(3, 4 * H, 4, dtype=dt), m.offsets),
+        ]
+    )
+    offsets = np.concatenate(
+        [ring_off, np.arange(H + 4, H + 4 * E + 1, 4, dtype=dt), 3 * H + m.offsets[1:].astype(dt)]
+    )
+    return rings, offsets
 
 
 def _corner_points(mesh: Mesh, scale: float) -> np.ndarray:
@@ -147,6 +303,7 @@ def _corner_points(mesh: Mesh, scale: float) -> np.ndarray:
     return c + scale * (mesh.vertices[mesh.corners] - c)
 
 
+@scale_safe
 def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     """Doo-Sabin's remeshing (corner cutting), the dual of vertex insertion.
 
@@ -173,15 +330,74 @@ def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     check_mesh(mesh, "corner_cutting")
     s = check_scale(scale)
     check_vertex_faces(mesh, "corner_cutting")
-    k = np.arange(mesh.n_halfedges, dtype=np.int64)
+    H, E = mesh.n_halfedges, mesh.n_edges
+    dt = index_dtype(H, 4 * H)
     nxt, twin = mesh.next, mesh.twin
     eh = mesh.edge_halfedge
-    quads = np.stack([nxt[eh], eh, nxt[twin[eh]], twin[eh]], axis=1)
+    t = twin[eh]
+    quads = columns(dt, E, nxt[eh], eh, nxt[t], t)
     ring, ring_off = mesh.vertex_ring
-    corners, offsets = concat_faces((k, mesh.offsets), fixed_size(quads), (ring, ring_off))
-    return output(_corner_points(mesh, s), corners, offsets)
+    corners = np.concatenate([np.arange(H, dtype=dt), quads.reshape(-1), ring.astype(dt)])
+    offsets = np.concatenate(
+        [mesh.offsets, np.arange(H + 4, 3 * H + 1, 4, dtype=dt), 3 * H + ring_off[1:].astype(dt)]
+    )
+    source = mesh._faces_only()
+    return output(
+        _corner_points(mesh, s),
+        corners,
+        offsets,
+        twin=lambda: _cutting_twin(source, dt),
+        rings=lambda: _cutting_rings(source, dt),
+    )
 
 
+def _quad_slot(m, h: np.ndarray, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
+    """``H + 4 edge[h] + (forward if h is its edge's forward half-edge else backward)``."""
+    col = affine(m.halfedge_edge[h], 4, m.n_halfedges, dt)
+    col += np.where(m._forward[h], forward, backward).astype(dt)
+    return col
+
+
+def _cutting_twin(m, dt: np.dtype) -> np.ndarray:
+    """Twins of ``corner_cutting``.  Copy h and the quad of its edge (slot 0 for
+    the forward half-edge, 2 for the other); quad slots 1 and 3 and the vertex
+    faces: slot 1 of edge (h, t) is the twin of the vertex-face half-edge at
+    ``next[t]``, slot 3 of that at ``next[h]``."""
+    H = m.n_halfedges
+    nxt, twin = m.next, m.twin
+    ring, _ = m.vertex_ring
+    pos = inverse(ring)
+    eh = m.edge_halfedge
+    t = twin[eh]
+    h_all = np.arange(H, dtype=dt)
+    copies = _quad_slot(m, h_all, 0, 2, dt)
+    quads = columns(
+        dt, eh.size, eh, affine(pos[nxt[t]], 1, 3 * H, dt), t, affine(pos[nxt[eh]], 1, 3 * H, dt)
+    )
+    faces = _quad_slot(m, m.rotation[ring], 1, 3, dt)
+    return np.concatenate([copies, quads.reshape(-1), faces])
+
+
+def _cutting_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
+    """Rings of ``corner_cutting``: the point of h, ``3H + pos[h]``, its edge's
+    quad (slot 1 forward, 3 backward), h's copy, the quad of prev[h]'s edge
+    (slot 0 forward, 2 backward)."""
+    H = m.n_halfedges
+    ring, _ = m.vertex_ring
+    pos = inverse(ring)
+    h = np.arange(H, dtype=dt)
+    rings = columns(
+        dt,
+        H,
+        affine(pos, 1, 3 * H, dt),
+        _quad_slot(m, h, 1, 3, dt),
+        h,
+        _quad_slot(m, m.prev, 0, 2, dt),
+    )
+    return rings.reshape(-1), np.arange(0, 4 * H + 1, 4, dtype=dt)
+
+
+@scale_safe
 def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     """Hexagon preservation: the dual of Loop's remeshing (Conway's chamfer).
 
@@ -200,19 +416,78 @@ def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     """
     check_mesh(mesh, "preserve_hexagons")
     s = check_scale(scale)
-    n = mesh.n_vertices
-    k = n + np.arange(mesh.n_halfedges, dtype=np.int64)
+    n, H = mesh.n_vertices, mesh.n_halfedges
+    dt = index_dtype(n + 2 * mesh.n_edges, 4 * H)
+    k = np.arange(n, n + H, dtype=dt)
     nxt, twin, tail = mesh.next, mesh.twin, mesh.corners
     h = mesh.edge_halfedge
     g = twin[h]
     # h = (a, b) in face f, g = (b, a) in face g:
     # hexagon (k(b,f), k(a,f), a, k(a,g), k(b,g), b)
-    hexagons = np.stack([k[nxt[h]], k[h], tail[h], k[nxt[g]], k[g], tail[g]], axis=1)
-    corners, offsets = concat_faces((k, mesh.offsets), fixed_size(hexagons))
-    vertices = np.concatenate([mesh.vertices, _corner_points(mesh, s)])
-    return output(vertices, corners, offsets)
+    hexagons = columns(dt, h.size, k[nxt[h]], k[h], tail[h], k[nxt[g]], k[g], tail[g])
+    corners = np.concatenate([k, hexagons.reshape(-1)])
+    offsets = np.concatenate([mesh.offsets, np.arange(H + 6, 4 * H + 1, 6, dtype=dt)])
+    vertices = np.empty((n + H, 3))
+    vertices[:n] = mesh.vertices
+    vertices[n:] = _corner_points(mesh, s)
+    source = mesh._faces_only()
+    return output(
+        vertices,
+        corners,
+        offsets,
+        twin=lambda: _hexagons_twin(source, dt),
+        rings=lambda: _hexagons_rings(source, dt),
+    )
 
 
+def _hex_slot(m, h: np.ndarray, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
+    """``H + 6 edge[h] + (forward if h is its edge's forward half-edge else backward)``."""
+    col = affine(m.halfedge_edge[h], 6, m.n_halfedges, dt)
+    col += np.where(m._forward[h], forward, backward).astype(dt)
+    return col
+
+
+def _hexagons_twin(m, dt: np.dtype) -> np.ndarray:
+    """Twins of ``preserve_hexagons``: copy h and its edge's hexagon (slot 0 forward,
+    3 backward); slot 1 of (h, g) and the hexagon of prev[h] (slot 5 forward,
+    2 backward); slot 2 and that of next[g] (1, 4); slot 4 and prev[g] (5, 2);
+    slot 5 and next[h] (1, 4)."""
+    H = m.n_halfedges
+    nxt, prv, twin = m.next, m.prev, m.twin
+    h = m.edge_halfedge
+    g = twin[h]
+    hexagons = columns(
+        dt,
+        h.size,
+        h,
+        _hex_slot(m, prv[h], 5, 2, dt),
+        _hex_slot(m, nxt[g], 1, 4, dt),
+        g,
+        _hex_slot(m, prv[g], 5, 2, dt),
+        _hex_slot(m, nxt[h], 1, 4, dt),
+    )
+    return np.concatenate([_hex_slot(m, np.arange(H, dtype=dt), 0, 3, dt), hexagons.reshape(-1)])
+
+
+def _hexagons_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
+    """Rings of ``preserve_hexagons``: old vertex, for its h in order, its edge's
+    hexagon (slot 2 forward, 5 backward); copy vertex of h: h, the hexagon of
+    prev[h] (slot 0 forward, 3 backward), that of h (1 forward, 4 backward)."""
+    H = m.n_halfedges
+    ring, ring_off = m.vertex_ring
+    h = np.arange(H, dtype=dt)
+    copies = columns(dt, H, h, _hex_slot(m, m.prev, 0, 3, dt), _hex_slot(m, h, 1, 4, dt))
+    rings = np.concatenate(
+        [
+            start_at_max(_hex_slot(m, ring, 2, 5, dt), ring_off),
+            start_at_max(copies.reshape(-1), None, 3),
+        ]
+    )
+    offsets = np.concatenate([ring_off, np.arange(H + 3, 4 * H + 1, 3, dtype=dt)])
+    return rings, offsets
+
+
+@scale_safe
 def honeycomb(mesh: Mesh) -> Mesh:
     """Honeycomb subdivision: the dual of sqrt(3)'s remeshing (Conway's zip).
 
@@ -231,11 +506,43 @@ def honeycomb(mesh: Mesh) -> Mesh:
     """
     check_mesh(mesh, "honeycomb")
     H = mesh.n_halfedges
-    k = np.arange(H, dtype=np.int64)
+    dt = index_dtype(H, 3 * H)
     ring, ring_off = mesh.vertex_ring
     # around vertex v: z(h_0), z(prev h_0), z(h_1), z(prev h_1), ...
-    vfaces = np.stack([ring, mesh.prev[ring]], axis=1).reshape(-1)
-    corners, offsets = concat_faces((k, mesh.offsets), (vfaces, 2 * ring_off))
+    vfaces = columns(dt, H, ring, mesh.prev[ring])
+    corners = np.concatenate([np.arange(H, dtype=dt), vfaces.reshape(-1)])
+    offsets = np.concatenate([mesh.offsets, H + 2 * ring_off[1:].astype(dt)])
     v = mesh.vertices
     points = (v[mesh.corners] + v[mesh.head] + mesh.face_centroids[mesh.halfedge_face]) / 3.0
-    return output(points, corners, offsets)
+    source = mesh._faces_only()
+    return output(
+        points,
+        corners,
+        offsets,
+        twin=lambda: _honeycomb_twin(source, dt),
+        rings=lambda: _honeycomb_rings(source, dt),
+    )
+
+
+def _honeycomb_twin(m, dt: np.dtype) -> np.ndarray:
+    """Twins of ``honeycomb``: copy h and ``H + 2 pos[next[h]]`` (the vertex-face
+    half-edge ``H + 2i``, from the point of ``ring[i]`` to that of its prev);
+    ``H + 2i + 1`` and ``H + 2 pos[next[twin[prev[ring[i]]]]] + 1``."""
+    H = m.n_halfedges
+    nxt = m.next
+    ring, _ = m.vertex_ring
+    pos = inverse(ring)
+    before = m.prev[ring]
+    faces = columns(dt, H, before, affine(pos[nxt[m.twin[before]]], 2, H + 1, dt))
+    return np.concatenate([affine(pos[nxt], 2, H, dt), faces.reshape(-1)])
+
+
+def _honeycomb_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
+    """Rings of ``honeycomb``: the point of h: ``h, H + 2 pos[h], H + 2 pos[next[h]] + 1``."""
+    H = m.n_halfedges
+    ring, _ = m.vertex_ring
+    pos = inverse(ring)
+    rings = columns(
+        dt, H, np.arange(H, dtype=dt), affine(pos, 2, H, dt), affine(pos[m.next], 2, H + 1, dt)
+    )
+    return start_at_max(rings.reshape(-1), None, 3), np.arange(0, 3 * H + 1, 3, dtype=dt)

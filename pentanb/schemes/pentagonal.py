@@ -9,20 +9,22 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..mesh import Mesh
+from ..mesh import Mesh, _next_of, _prev_of
 from ._build import (
+    BLOCK,
     check_mesh,
     check_scale,
-    concat_faces,
     edge_points,
-    fixed_size,
-    halfedge_edge_point,
+    index_dtype,
     output,
+    scale_safe,
+    start_at_max,
 )
 
 __all__ = ["pentagonalize", "preserve_pentagons"]
 
 
+@scale_safe
 def pentagonalize(mesh: Mesh) -> Mesh:
     """Pentagonalization (pentagonal conversion), Section 5.1 steps 1-2, Figure 6.
 
@@ -49,51 +51,133 @@ def pentagonalize(mesh: Mesh) -> Mesh:
         ``h = (u, w)`` in face ``f`` is ``(t1, t2, w, t1', c_f)``: the
         trisection points of ``h`` near u and near w, w, the point just after w
         on the next half-edge, and the centre.
+
+    Notes
+    -----
+    The output's faces are written column by column into one (2E, 5)
+    array; its twins and vertex rings follow from the input's and are
+    written when first asked for (by the dual, say), never found by sorting.
     """
     check_mesh(mesh, "pentagonalize")
-    n, E = mesh.n_vertices, mesh.n_edges
-    nxt, prv, twin = mesh.next, mesh.prev, mesh.twin
-    t1 = n + halfedge_edge_point(mesh, 2, 0)
-    t2 = n + halfedge_edge_point(mesh, 2, 1)
-    centre = n + 2 * E + mesh.halfedge_face
-    faces = np.stack([t1, t2, mesh.head, t1[nxt], centre], axis=1)
-    vertices = np.concatenate([mesh.vertices, edge_points(mesh, 2), mesh.face_centroids])
-    corners, offsets = fixed_size(faces)
-    # the output's twins and vertex rings follow from the input's; written when
-    # first asked for (by the dual, say), never found by sorting
+    n, E, F, H = mesh.n_vertices, mesh.n_edges, mesh.n_faces, mesh.n_halfedges
+    dt = index_dtype(n + 2 * E + F, 5 * H)
+    forward = mesh._forward
+    # every column is computed contiguously and written once: numpy is slow on
+    # strided views, and slower still on views whose last axis is short
+    faces = np.empty((H, 5), dtype=dt)
+    base = mesh.halfedge_edge.astype(dt)  # V + 2e
+    base *= 2
+    base += n
+    t1 = base + 1  # the trisection point near the tail: V + 2e + (0 forward, 1 backward)
+    t1 -= forward
+    faces[:, 0] = t1
+    base += forward  # the one near the head: V + 2e + (1 forward, 0 backward)
+    faces[:, 1] = base
+    del t1, base
+    faces[:, 2] = mesh.head
+    k = mesh._uniform_size
+    if k:  # every face a k-gon: the next half-edge is the next row of the face
+        block = faces.reshape(F, k, 5)
+        centres = np.arange(n + 2 * E, n + 2 * E + F, dtype=dt)
+        for j in range(k):
+            block[:, j, 3] = block[:, (j + 1) % k, 0]
+            block[:, j, 4] = centres
+    else:
+        faces[:, 3] = faces[:, 0][mesh.next]
+        centre = mesh.halfedge_face.astype(dt)
+        centre += n + 2 * E
+        faces[:, 4] = centre
+    vertices = np.empty((n + 2 * E + F, 3))
+    vertices[:n] = mesh.vertices
+    edge_points(mesh, 2, out=vertices[n : n + 2 * E])
+    vertices[n + 2 * E :] = mesh.face_centroids
+    twin_in, offsets_in, source = mesh.twin, mesh.offsets, mesh._faces_only()
     return output(
         vertices,
-        corners,
-        offsets,
-        twin=lambda: np.stack(
-            [5 * twin, 5 * prv[twin] + 2, 5 * twin[nxt] + 1, 5 * nxt + 4, 5 * prv + 3], axis=1
-        ).reshape(-1),
-        rings=lambda: _pentagonalized_rings(mesh, t1 - n),
+        faces.reshape(-1),
+        np.arange(0, 5 * H + 1, 5, dtype=dt),
+        twin=lambda: _pentagonalized_twin(twin_in, offsets_in, dt),
+        rings=lambda: _pentagonalized_rings(source, dt),
     )
 
 
-def _pentagonalized_rings(mesh: Mesh, t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _pentagonalized_twin(twin: np.ndarray, offsets: np.ndarray, dt: np.dtype) -> np.ndarray:
+    """The twins of ``pentagonalize(mesh)`` from ``mesh``'s twins and offsets.
+
+    Half-edge ``5h + s`` is slot ``s`` of the pentagon of ``h``: its twins
+    are ``5 twin[h]``, ``5 prev[twin[h]] + 2``, ``5 twin[next[h]] + 1``,
+    ``5 next[h] + 4`` and ``5 prev[h] + 3``.
+    """
+    H = twin.size
+    tw = twin.astype(dt, copy=False)
+    nxt, prv = _next_of(offsets, H, dt), _prev_of(offsets, H, dt)
+    out = np.empty((H, 5), dtype=dt)
+    # column by column, each computed contiguously and written once
+    for s, part in enumerate((tw, prv[tw], tw[nxt], nxt, prv)):
+        col = part * 5
+        col += (0, 2, 1, 4, 3)[s]
+        out[:, s] = col
+    return out.reshape(-1)
+
+
+def _pentagonalized_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     """The vertex rings of ``pentagonalize(mesh)``, written from ``mesh``'s.
 
     Half-edge ``5h + s`` is slot ``s`` of the pentagon of ``h``.  Around an
     old vertex v: ``5 prev[h] + 2`` for v's outgoing h, in v's order; around
     the trisection point t1(h): ``5h, 5 prev[h] + 3, 5 twin[h] + 1``; around
-    the centre of f: ``5h + 4`` for f's half-edges in face order.
+    the centre of f: ``5h + 4`` for f's half-edges in face order.  The
+    trisection point ``2e`` is t1 of edge e's forward half-edge, ``2e + 1``
+    of its twin.
     """
-    prv, twin = mesh.prev, mesh.twin
+    twin = mesh.twin.astype(dt, copy=False)
     ring, ring_off = mesh.vertex_ring
     H = mesh.n_halfedges
-    h_of_point = np.empty(H, dtype=np.int64)
-    h_of_point[t1] = np.arange(H, dtype=np.int64)
-    h = h_of_point
-    trisection = np.stack([5 * h, 5 * prv[h] + 3, 5 * twin[h] + 1], axis=1).reshape(-1)
-    rings = np.concatenate([5 * prv[ring] + 2, trisection, 5 * np.arange(H, dtype=np.int64) + 4])
-    offsets = np.concatenate(
-        [ring_off, ring_off[-1] + 3 * np.arange(1, H + 1), ring_off[-1] + 3 * H + mesh.offsets[1:]]
-    )
-    return rings, offsets
+    k = mesh._uniform_size
+    if k:  # prev[h] is h - 1, or h + k - 1 at a face's first corner: no gathering
+        prv = None
+    else:
+        prv = mesh.prev.astype(dt, copy=False)
+
+    def before(h: np.ndarray) -> np.ndarray:
+        if prv is not None:
+            return prv[h]
+        p = h.astype(dt)
+        p -= 1
+        p[h % k == 0] += k
+        return p
+
+    out = np.empty(5 * H, dtype=dt)
+    old = out[:H]
+    old[:] = before(ring)
+    old *= 5
+    old += 2
+    eh = mesh.edge_halfedge.astype(dt, copy=False)
+    back = twin[eh]
+    h = np.empty(H, dtype=dt)  # the half-edge of every trisection point
+    h[0::2] = eh
+    h[1::2] = back
+    across = np.empty(H, dtype=dt)  # twin[h]: back for eh, eh for back
+    across[0::2] = back
+    across[1::2] = eh
+    del back
+    tri = out[H : 4 * H].reshape(H, 3)
+    for s, part in enumerate((h, before(h), across)):
+        col = part * 5
+        col += (0, 3, 1)[s]
+        tri[:, s] = col
+    centre = out[4 * H :]
+    centre[:] = np.arange(4, 5 * H, 5, dtype=dt)
+    n = ring_off.size - 1
+    offsets = np.empty(n + H + mesh.n_faces + 1, dtype=dt)
+    offsets[: n + 1] = ring_off
+    offsets[n + 1 : n + H + 1] = np.arange(H + 3, 4 * H + 1, 3, dtype=dt)
+    offsets[n + H + 1 :] = mesh.offsets[1:]
+    offsets[n + H + 1 :] += 4 * H
+    return out, offsets
 
 
+@scale_safe
 def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     """Pentagon preservation, Section 5.2 steps 1-3, Figure 10.
 
@@ -123,16 +207,113 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     """
     check_mesh(mesh, "preserve_pentagons")
     s = check_scale(scale)
-    n, E, H = mesh.n_vertices, mesh.n_edges, mesh.n_halfedges
+    n, E, H, F = mesh.n_vertices, mesh.n_edges, mesh.n_halfedges, mesh.n_faces
+    dt = index_dtype(n + 3 * E, 6 * H)
+    vertices = np.empty((n + 3 * E, 3))
+    vertices[:n] = mesh.vertices
+    edge_points(mesh, 1, out=vertices[n : n + E])
+    mid = mesh.halfedge_edge.astype(dt)
+    mid += n
+    # the copies: every face's edge midpoints scaled about their mean
+    copies, offsets, sizes = vertices[n + E :], mesh.offsets, mesh.face_sizes
+    for a in range(0, F, BLOCK):
+        o = offsets[a : a + BLOCK + 1]
+        lo, hi = int(o[0]), int(o[-1])
+        p = vertices.take(mid[lo:hi], axis=0)
+        centre = np.add.reduceat(p, o[:-1] - lo, axis=0) / sizes[a : a + BLOCK, None]
+        centre = np.repeat(centre, sizes[a : a + BLOCK], axis=0)
+        p -= centre
+        p *= s
+        np.add(centre, p, out=copies[lo:hi])
+        del p, centre  # (a block's temporaries: gone before the next allocations)
+    corners = np.empty(6 * H, dtype=dt)
+    corners[:H] = np.arange(n + E, n + E + H, dtype=dt)  # the copies, face by face
+    pentagons = corners[H:].reshape(H, 5)
     nxt = mesh.next
-    mids = edge_points(mesh, 1)
-    mid = n + mesh.halfedge_edge
-    q = n + E + np.arange(H, dtype=np.int64)
-    p = mids[mesh.halfedge_edge]
-    centre = np.add.reduceat(p, mesh.offsets[:-1], axis=0) / mesh.face_sizes[:, None]
-    centre = centre[mesh.halfedge_face]
-    copies = centre + s * (p - centre)
-    pentagons = np.stack([mid, mesh.head, mid[nxt], q[nxt], q], axis=1)
-    corners, offsets = concat_faces((q, mesh.offsets), fixed_size(pentagons))
-    vertices = np.concatenate([mesh.vertices, mids, copies])
-    return output(vertices, corners, offsets)
+    pentagons[:, 0] = mid
+    pentagons[:, 1] = mesh.head
+    pentagons[:, 2] = mid[nxt]
+    np.add(nxt, n + E, out=pentagons[:, 3])
+    pentagons[:, 4] = corners[:H]
+    face_offsets = np.empty(F + H + 1, dtype=dt)
+    face_offsets[: F + 1] = offsets
+    face_offsets[F + 1 :] = np.arange(H + 5, 6 * H + 1, 5, dtype=dt)
+    source = mesh._faces_only()
+    return output(
+        vertices,
+        corners,
+        face_offsets,
+        twin=lambda: _preserved_twin(source, dt),
+        rings=lambda: _preserved_rings(source, dt),
+    )
+
+
+def _preserved_twin(mesh, dt: np.dtype) -> np.ndarray:
+    """The twins of ``preserve_pentagons(mesh)``, from ``mesh``'s faces.
+
+    Half-edge h (< H) is the copy's edge ``q_h -> q_next``; ``H + 5h + s``
+    is slot s of the pentagon of h, ``(m_h, w, m_next, q_next, q_h)``.  Twins:
+    ``h`` and ``H + 5h + 3``; ``H + 5h`` and ``H + 5 prev[twin[h]] + 1``;
+    ``H + 5h + 2`` and ``H + 5 next[h] + 4``.
+    """
+    H = mesh.n_halfedges
+    nxt, prv = mesh.next.astype(dt, copy=False), mesh.prev.astype(dt, copy=False)
+    twin = mesh.twin.astype(dt, copy=False)
+    out = np.empty(6 * H, dtype=dt)
+    out[:H] = np.arange(H + 3, 6 * H, 5, dtype=dt)
+    pent = out[H:].reshape(H, 5)
+    for s, (part, add) in enumerate(
+        ((prv[twin], 1), (twin[nxt], 0), (nxt, 4), (None, 0), (prv, 2))
+    ):
+        if part is None:
+            pent[:, s] = np.arange(H, dtype=dt)
+            continue
+        col = part * 5
+        col += H + add
+        pent[:, s] = col
+    return out
+
+
+def _preserved_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
+    """The vertex rings of ``preserve_pentagons(mesh)``, from ``mesh``'s.
+
+    Around an old vertex: ``H + 5 prev[h] + 1`` for its outgoing h, in its
+    order; around the midpoint of edge e (forward half-edge h):
+    ``H + 5h, H + 5 prev[h] + 2, H + 5 twin[h], H + 5 prev[twin[h]] + 2``;
+    around the copy vertex of h: ``h, H + 5 prev[h] + 3, H + 5h + 4``.  Each
+    ring then starts at its largest half-edge, as derived rings do.
+    """
+    H, E = mesh.n_halfedges, mesh.n_edges
+    prv, twin = mesh.prev.astype(dt, copy=False), mesh.twin.astype(dt, copy=False)
+    ring, ring_off = mesh.vertex_ring
+    old = prv[ring] * 5
+    old += H + 1
+    eh = mesh.edge_halfedge.astype(dt, copy=False)
+    back = twin[eh]
+    mids = np.empty((E, 4), dtype=dt)
+    for s, (part, add) in enumerate(((eh, 0), (prv[eh], 2), (back, 0), (prv[back], 2))):
+        col = part * 5
+        col += H + add
+        mids[:, s] = col
+    copies = np.empty((H, 3), dtype=dt)
+    h = np.arange(H, dtype=dt)
+    copies[:, 0] = h
+    col = prv * 5
+    col += H + 3
+    copies[:, 1] = col
+    col = h * 5
+    col += H + 4
+    copies[:, 2] = col
+    rings = np.concatenate(
+        [
+            start_at_max(old, ring_off),
+            start_at_max(mids.reshape(-1), None, 4),
+            start_at_max(copies.reshape(-1), None, 3),
+        ]
+    )
+    n = ring_off.size - 1
+    offsets = np.empty(n + E + H + 1, dtype=dt)
+    offsets[: n + 1] = ring_off
+    offsets[n + 1 : n + E + 1] = np.arange(H + 4, H + 4 * E + 1, 4, dtype=dt)
+    offsets[n + E + 1 :] = np.arange(H + 4 * E + 3, H + 4 * E + 3 * H + 1, 3, dtype=dt)
+    return rings, offsets

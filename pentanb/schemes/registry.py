@@ -39,7 +39,9 @@ class Scheme:
     conway : str or None
         The Conway operator with the same topology, if any.
     counts : callable
-        ``counts(V, E, F) -> (V', E', F')`` (an upper bound for ``triangulate``).
+        ``counts(V, E, F) -> (V', E', F')`` (for ``triangulate`` exact on
+        all-triangle meshes, which it keeps, and on meshes without
+        triangles; an upper bound between).
     options : dict
         Keyword options and their defaults (e.g. ``{"scale": 0.75}``).
     family : str
@@ -131,7 +133,9 @@ _LIST = [
         "Simplest triangulation",
         "Figure 2",
         None,
-        lambda V, E, F: (V + F, 3 * E, 2 * E),
+        # all triangles (2E = 3F): kept as they are; else at most (exact
+        # without triangles)
+        lambda V, E, F: (V, E, F) if 2 * E == 3 * F else (V + F, 3 * E, 2 * E),
         exact_counts=False,
         bound="when no face is a triangle",
     ),

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..mesh import Mesh
-from ._build import check_count, check_mesh, check_vertex_faces, output
+from ._build import check_count, check_mesh, check_vertex_faces, inverse, output
 
 __all__ = ["dual", "smooth"]
 
@@ -36,8 +36,8 @@ def dual(mesh: Mesh) -> Mesh:
     Notes
     -----
     Built from the input's vertex rings; the output's twins and vertex
-    rings are written directly (no sorting): the dual half-edge at the
-    corner of half-edge ``h`` is the twin of the one at
+    rings are written directly (no sorting) when first asked for: the dual
+    half-edge at the corner of half-edge ``h`` is the twin of the one at
     ``next[twin[prev[h]]]``, and the dual half-edges of a face's half-edges,
     in face order, go round the dual vertex of that face.  The dual of a
     dual reuses the connectivity of the mesh it came from.
@@ -50,27 +50,44 @@ def dual(mesh: Mesh) -> Mesh:
         meshes; only ``Mesh.from_csr(..., validate=False)`` can build one.
     """
     check_mesh(mesh, "dual")
-    check_vertex_faces(mesh, "dual")
-    again = mesh._dual_again()
-    if again is not None:
-        # mesh is itself a dual: its dual has the connectivity of the mesh it
-        # came from (dual(dual(m)) has m's faces in m's order), only new positions
+    source = mesh._dual_source
+    if source is not None:
+        # mesh is itself a dual: its vertex f is the source's face f, with as
+        # many edges as that face has sides; its dual has the connectivity of
+        # the mesh it came from (dual(dual(m)) has m's faces in m's order),
+        # only new positions
+        check_vertex_faces(mesh, "dual", np.diff(source.offsets))
+        again = mesh._dual_again()
+        assert again is not None
         return again
+    check_vertex_faces(mesh, "dual")
     ring, ring_off = mesh.vertex_ring
-    corners = mesh.halfedge_face[ring]
-    pos = np.empty_like(ring)
-    pos[ring] = np.arange(ring.size, dtype=np.int64)
-    nxt, rot = mesh.next, mesh.rotation
-    # the dual's vertex f is surrounded by the dual half-edges of face f's
-    # half-edges, in face order: its rotation order (rotation[pos[h]] == pos[next[h]])
-    return output(
+    k = mesh._uniform_size
+    # the dual's face v: the faces round vertex v, in rotation order
+    corners = ring // k if k else mesh.halfedge_face[ring]
+    faces = mesh._faces_only()
+    out = output(
         mesh.face_centroids,
         corners,
         ring_off,
-        twin=lambda: pos[nxt[rot[ring]]],
-        rings=(pos, mesh.offsets),
+        twin=lambda: _dual_twin(faces),
+        rings=lambda: (inverse(faces.vertex_ring[0]), faces.offsets),
         dual_of=mesh,
     )
+    out._note_extent(mesh._extent)
+    return out
+
+
+def _dual_twin(mesh) -> np.ndarray:
+    """The twins of the dual of ``mesh`` (its faces, see :meth:`Mesh._faces_only`).
+
+    The dual half-edge at ring position ``i`` (half-edge ``h = ring[i]``)
+    runs from the face of ``h`` to the face of ``rotation[h]``; its twin is
+    the dual half-edge at ``next[rotation[h]]``.
+    """
+    ring, _ = mesh.vertex_ring
+    pos = inverse(ring)
+    return pos[mesh.next[mesh.rotation[ring]]]
 
 
 def smooth(mesh: Mesh, duals: int = 2) -> Mesh:
