@@ -243,7 +243,7 @@ def slider(table: Table, runs: int, clock) -> dict:
     for name, scheme in pb.SCHEMES.items():
         times = []
         for r in range(runs + 1):
-            e = pb.explore(base, name, iterations=0, duals=2)
+            e = pb.explore(base, name, iterations=0, duals=2, max_faces=10**6)
             gc.collect()
             t = clock()
             e.iterations.value = 1  # the explorer's own path: compute, buffers, legend

@@ -827,3 +827,52 @@ def test_explore_accepts_conway_notation():
     assert m.face_size_histogram() == {3: 32, 4: 6}
     with pytest.raises(ValueError, match="Conway operators"):
         pentanb.explore("cube", "dgX")
+
+
+def _same_buffers(a, b):
+    import dataclasses
+
+    for f in dataclasses.fields(a):
+        x, y = getattr(a, f.name), getattr(b, f.name)
+        if isinstance(x, np.ndarray):
+            assert x.dtype == y.dtype and x.shape == y.shape, f.name
+            assert np.array_equal(x, y), f.name
+            assert y.flags.writeable and y.flags.c_contiguous, f.name
+        else:
+            assert x == y, f.name
+
+
+def test_mesh_buffers_are_the_drawings_buffers(corpus_mesh):
+    # the explorer's fast path gives, bit for bit, what the general path gives
+    _same_buffers(
+        drawing_module.buffers(drawing_module.drawing(corpus_mesh)),
+        drawing_module.mesh_buffers(corpus_mesh),
+    )
+
+
+@pytest.mark.parametrize("text", ["dgC", "k4P6", "ddgT", "tI"])
+def test_mesh_buffers_of_mixed_and_uniform_faces(text):
+    m = pentanb.conway(text)
+    _same_buffers(drawing_module.buffers(drawing_module.drawing(m)), drawing_module.mesh_buffers(m))
+
+
+def test_mesh_buffers_comparison_fails_on_a_moved_vertex_or_other_faces():
+    m = pentanb.conway("dgC")  # triangles and quads
+    general = drawing_module.buffers(drawing_module.drawing(m))
+    moved = m.with_vertices(m.vertices + np.eye(len(m.vertices), 3)[::-1] * 1e-3)
+    with pytest.raises(AssertionError, match="position"):
+        _same_buffers(general, drawing_module.mesh_buffers(moved))
+    with pytest.raises(AssertionError):  # the gyro of the cube: other faces, other colours
+        _same_buffers(general, drawing_module.mesh_buffers(pentanb.conway("gC")))
+
+
+def test_a_view_updated_with_a_mesh_carries_its_drawing_and_legend():
+    m, n = shapes.cube(), pentanb.conway("dgC")
+    v = pentanb.view(m)
+    v.update(n)
+    assert v.mesh is n
+    assert np.array_equal(v.drawing.vertices, n.vertices)
+    assert "32 triangles" in v.legend.value and "V = 24, E = 60, F = 38" in v.legend.value
+    assert np.array_equal(arr(v.face_geometry.attributes["position"]).shape, (3 * (32 + 12), 3))
+    with pytest.raises(TypeError, match=r"expected a pentanb\.Mesh or a Drawing, got str"):
+        v.update("cube")

@@ -37,6 +37,7 @@ __all__ = [
     "size_histogram",
     "Buffers",
     "buffers",
+    "mesh_buffers",
     "legend_html",
     "counts_text",
     "error_html",
@@ -183,9 +184,14 @@ def _bytes(rgb: ArrayLike) -> NDArray[np.uint8]:
     return np.rint(np.clip(np.asarray(rgb, dtype=np.float64), 0.0, 1.0) * 255).astype(np.uint8)
 
 
+def _same_rows(rgb: NDArray[np.uint8], n: int) -> NDArray[np.uint8]:
+    """``n`` rows of the bytes ``rgb`` (a writeable array; bytes repeated, 20x np.tile's speed)."""
+    return np.frombuffer(bytearray(rgb.tobytes() * n), dtype=np.uint8).reshape(n, 3)
+
+
 def _rows(colors: ArrayLike | None, default: str, n: int, repeat: int) -> NDArray[np.uint8]:
     if colors is None:
-        return np.tile(_bytes(hex_to_rgb(default)), (n * repeat, 1))
+        return _same_rows(_bytes(hex_to_rgb(default)), n * repeat)
     return np.repeat(_bytes(colors).reshape(-1, 3), repeat, axis=0)
 
 
@@ -247,6 +253,42 @@ def buffers(d: Drawing) -> Buffers:
         point_color=pt_color if len(pts) else hidden.copy(),
         edge_count=len(seg) // 2,
         point_count=len(pts),
+    )
+
+
+def mesh_buffers(mesh: Mesh) -> Buffers:
+    """``buffers(drawing(mesh))``, the same arrays bit for bit, straight from the mesh.
+
+    The explorer's path: no float64 copies of the triangles and edges, the
+    positions cast to float32 once and gathered once, the face colours
+    looked up as bytes per face size (one row when every face has the same
+    size).  The fan triangles and edges come from the mesh's connectivity
+    caches, which the dual of a dual shares with the mesh it came from.
+    """
+    if not isinstance(mesh, Mesh):
+        raise TypeError(f"mesh_buffers() expects a pentanb.Mesh, got {type(mesh).__name__}")
+    triangles, triangle_face = mesh.fan_triangles()
+    edges = mesh.edges
+    if not len(triangles) or not len(edges):
+        return buffers(drawing(mesh))
+    v = np.asarray(mesh.vertices, dtype=np.float32)
+    position = v.take(triangles.reshape(-1), axis=0)
+    sizes = mesh.face_sizes
+    low, high = int(sizes.min()), int(sizes.max())
+    table = _bytes(face_rgb(np.arange(low, high + 1)))
+    if low == high:
+        color = _same_rows(table[0], len(position))
+    else:
+        color = np.repeat(table[sizes[triangle_face] - low], 3, axis=0)
+    return Buffers(
+        position=position,
+        color=color,
+        edge_position=v.take(edges.reshape(-1), axis=0),
+        edge_color=_rows(None, EDGE_COLOR, len(edges), 2),
+        point_position=v[:1].copy(),
+        point_color=np.zeros((1, 3), np.uint8),
+        edge_count=len(edges),
+        point_count=0,
     )
 
 

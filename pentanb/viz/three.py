@@ -60,6 +60,7 @@ from .drawing import (
     camera_fit,
     legend_html,
     look_at_quaternion,
+    mesh_buffers,
 )
 
 __all__ = ["MeshView", "view", "slider_stack"]
@@ -132,10 +133,9 @@ class MeshView(W.VBox):
         camera: P3.PerspectiveCamera | None = None,
         target: tuple | None = None,
     ):
-        d = as_drawing(mesh)
-        b = buffers(d)
-        self._drawing = d
-        self._mesh = mesh if isinstance(mesh, Mesh) else None
+        self._mesh: Mesh | None = None
+        self._drawing: Drawing | None = None
+        b = self._show(mesh)
         self._point_size = point_size
 
         def attr(a):
@@ -184,7 +184,7 @@ class MeshView(W.VBox):
         )
 
         aspect = width / height
-        centre, radius, position = camera_fit(d.vertices, fov, aspect)
+        centre, radius, position = camera_fit(self._points(), fov, aspect)
         # a hemisphere light riding on the camera: faces turned to the reader
         # are lit, faces turned away darker (lights with shadows, such as
         # PointLight and DirectionalLight, print "Error setting state" in
@@ -232,7 +232,7 @@ class MeshView(W.VBox):
         )
         self._edges_present = bool(b.edge_count)
         self._link = W.jslink((self.wireframe, "value"), (self.edges, "visible"))
-        self.legend = W.HTML(legend_html(d.legend, d.counts) if legend else "")
+        self.legend = W.HTML(self._legend() if legend else "")
         self._show_legend = legend
         bottom = [self.legend] + ([self.wireframe] if toggle else [])
         self.bottom = W.HBox(
@@ -252,7 +252,29 @@ class MeshView(W.VBox):
 
     @property
     def drawing(self) -> Drawing:
+        """The :class:`Drawing` shown (of a mesh: made when first asked for)."""
+        if self._drawing is None:
+            assert self._mesh is not None
+            self._drawing = as_drawing(self._mesh)
         return self._drawing
+
+    def _show(self, obj: Mesh | Drawing) -> Buffers:
+        """Remember what is shown; its buffers (a mesh's by the fast path)."""
+        if isinstance(obj, Mesh):
+            self._mesh, self._drawing = obj, None
+            return mesh_buffers(obj)
+        d = as_drawing(obj)
+        self._mesh, self._drawing = None, d
+        return buffers(d)
+
+    def _legend(self) -> str:
+        m = self._mesh
+        if m is not None:  # as drawing(m) would give it
+            return legend_html(m.face_size_histogram(), (m.n_vertices, m.n_edges, m.n_faces))
+        return legend_html(self.drawing.legend, self.drawing.counts)
+
+    def _points(self) -> np.ndarray:
+        return self._mesh.vertices if self._mesh is not None else self.drawing.vertices
 
     def update(self, mesh: Mesh | Drawing, *, fit: bool = False) -> None:
         """Show another mesh (or :class:`Drawing`) in the same geometry.
@@ -261,16 +283,15 @@ class MeshView(W.VBox):
         the geometry objects, renderer, camera and controls are kept, so the
         viewpoint stays where the reader left it (unless ``fit``).
         """
-        d = as_drawing(mesh)
-        b = buffers(d)
+        if not isinstance(mesh, (Mesh, Drawing)):
+            raise TypeError(f"expected a pentanb.Mesh or a Drawing, got {type(mesh).__name__}")
+        b = self._show(mesh)
         # no frame is drawn half-updated: the browser waits for the last array
         with self.renderer.hold():
             self._write(b)
         self._redraw()
         if self._show_legend:
-            self.legend.value = legend_html(d.legend, d.counts)
-        self._drawing = d
-        self._mesh = mesh if isinstance(mesh, Mesh) else None
+            self.legend.value = self._legend()
         if fit:
             self.fit_camera()
 
@@ -298,9 +319,7 @@ class MeshView(W.VBox):
 
     def fit_camera(self) -> None:
         """Point the camera at the whole drawing again."""
-        centre, radius, position = camera_fit(
-            self._drawing.vertices, self.camera.fov, self.camera.aspect
-        )
+        centre, radius, position = camera_fit(self._points(), self.camera.fov, self.camera.aspect)
         with self.renderer.hold():
             self.camera.near = radius / 100
             self.camera.far = radius * 100
@@ -327,7 +346,8 @@ class MeshView(W.VBox):
             point_size=self._point_size,
         )
         opts.update(kwargs)
-        return MeshView(self._drawing if mesh is None else mesh, **opts)
+        shown = self._mesh if self._mesh is not None else self.drawing
+        return MeshView(shown if mesh is None else mesh, **opts)
 
 
 def view(
