@@ -1659,7 +1659,15 @@ def fan_triangle_corners(offsets: ArrayLike) -> tuple[IntArray, IntArray]:
     Mesh.fan_triangles : the same triangles as vertex indices.
     """
     offsets = np.asarray(offsets, dtype=np.int64)
-    per = np.maximum(np.diff(offsets) - 2, 0)
+    sizes = np.diff(offsets)
+    k = int(sizes[0]) if sizes.size else 0
+    if k >= 3 and int(sizes.min()) == k == int(sizes.max()):
+        # one size: every face's triangles are one pattern shifted by its offset
+        pattern = np.stack([np.zeros(k - 2, np.int64), np.arange(1, k - 1), np.arange(2, k)], 1)
+        tris = (offsets[:-1, None, None] + pattern).reshape(-1, 3)
+        tri_face = np.repeat(np.arange(sizes.size, dtype=np.int64), k - 2)
+        return _readonly(tris), _readonly(tri_face)
+    per = np.maximum(sizes - 2, 0)
     tri_face = np.repeat(np.arange(per.size, dtype=np.int64), per)
     start = offsets[:-1][tri_face]
     k = np.arange(tri_face.size, dtype=np.int64) - (np.cumsum(per) - per)[tri_face]
