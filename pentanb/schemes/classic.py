@@ -351,11 +351,18 @@ def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     )
 
 
-def _quad_slot(m, h: np.ndarray, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
-    """``H + 4 edge[h] + (forward if h is its edge's forward half-edge else backward)``."""
-    col = affine(m.halfedge_edge[h], 4, m.n_halfedges, dt)
+def _edge_slot(m, h: np.ndarray, per: int, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
+    """``H + per edge[h] + (forward if h is its edge's forward half-edge else backward)``:
+    the corner of a face made for every edge (``per`` corners each, after the H
+    copied ones)."""
+    col = affine(m.halfedge_edge[h], per, m.n_halfedges, dt)
     col += np.where(m._forward[h], forward, backward).astype(dt)
     return col
+
+
+def _quad_slot(m, h: np.ndarray, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
+    """The corner of the quad of ``h``'s edge (see :func:`_edge_slot`)."""
+    return _edge_slot(m, h, 4, forward, backward, dt)
 
 
 def _cutting_twin(m, dt: np.dtype) -> np.ndarray:
@@ -441,10 +448,8 @@ def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
 
 
 def _hex_slot(m, h: np.ndarray, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
-    """``H + 6 edge[h] + (forward if h is its edge's forward half-edge else backward)``."""
-    col = affine(m.halfedge_edge[h], 6, m.n_halfedges, dt)
-    col += np.where(m._forward[h], forward, backward).astype(dt)
-    return col
+    """The corner of the hexagon of ``h``'s edge (see :func:`_edge_slot`)."""
+    return _edge_slot(m, h, 6, forward, backward, dt)
 
 
 def _hexagons_twin(m, dt: np.dtype) -> np.ndarray:
