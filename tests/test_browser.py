@@ -23,6 +23,7 @@ under CI (``CI=true``), where that is a failure.  Screenshots are saved in
 
 from __future__ import annotations
 
+import re
 import sys
 import time
 from pathlib import Path
@@ -33,7 +34,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import browser_support as bs
 import notebook_support as ns
 
-pytestmark = pytest.mark.browser
+# one JupyterLab and one Chromium: every browser test in one pytest-xdist worker
+pytestmark = [pytest.mark.browser, pytest.mark.xdist_group("browser")]
 
 ROOT = bs.ROOT
 NOTEBOOKS = ns.NOTEBOOKS
@@ -173,7 +175,9 @@ JS_RESULT = """(upto) => {
     if (i < upto && c.model.sharedModel.getSource().trim() && c.model.executionCount === null)
       missing.push(i);
     for (const o of c.model.outputs.toJSON()) {
-      if (o.output_type === 'error') errors.push(`cell ${i}: ${o.ename}: ${o.evalue}`);
+      if (o.output_type === 'error')  // with the traceback's last frames, to diagnose
+        errors.push(`cell ${i}: ${o.ename}: ${o.evalue}\\n`
+                    + (o.traceback || []).slice(-6).join('\\n'));
       for (const m of Object.keys(o.data || {})) mimetypes.add(m);
       if (i === w.content.widgets.length - 1 && o.output_type === 'stream'
           && o.name === 'stdout')
@@ -199,7 +203,8 @@ def _run(page, last: bool, name: str) -> dict:
     page.wait_for_function(JS_DONE, timeout=RUN_TIMEOUT * 1000, polling=500)
     cells = page.evaluate(JS_RESULT, 10**6)["cells"]
     result = page.evaluate(JS_RESULT, cells if last else cells - 1)
-    assert not result["errors"], f"{name}: cells failed: {result['errors']}"
+    errors = [re.sub(r"\x1b\[[0-9;]*m", "", e) for e in result["errors"]]  # no ANSI colours
+    assert not errors, f"{name}: cells failed:\n" + "\n".join(errors)
     assert result["run"]["ok"], f"{name}: run failed: {result['run']}"
     assert not result["missing"], f"{name}: cells not run: {result['missing']}"
     return result

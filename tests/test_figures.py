@@ -556,3 +556,24 @@ def test_plot_meshes_one_panel_per_mesh_and_one_legend():
 def test_get_refuses_names_that_only_look_like_numbers(name):
     with pytest.raises(ValueError, match="unknown figure"):
         figures.get(name)
+
+
+def test_mixed_faces_are_drawn_without_mplot3d_autoscale(monkeypatch):
+    # mplot3d's autoscale reads the padded (uninitialised) corners of faces of
+    # several sizes, and now and then raised "Axis limits cannot be NaN or Inf"
+    # in a notebook's sweep; fit_view sets the limits, mplot3d's must not run
+    import matplotlib.pyplot as plt
+    from mpl_toolkits.mplot3d import Axes3D
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("mplot3d autoscale ran")
+
+    monkeypatch.setattr(Axes3D, "auto_scale_xyz", refuse)
+    mixed = pentanb.conway("dgC")  # triangles and quads: a ragged polygon list
+    fig = vz.plot_meshes([mixed, shapes.cube()], ["mixed", "cube"], ncols=2)
+    try:
+        ax = fig.axes[0]
+        lo, hi = mixed.vertices.min(axis=0), mixed.vertices.max(axis=0)
+        assert np.allclose(ax.get_xlim3d(), (lo[0], hi[0]))
+    finally:
+        plt.close(fig)

@@ -340,6 +340,11 @@ def test_explorer_drives_the_progress_bar():
 
 #: (arguments of explore, exception, message): what subdivide refuses, the
 #: explorer refuses too, naming the argument and its range (issue 12, item 7).
+def _stable_id(kwargs: dict) -> str:
+    """A test id without memory addresses (the same in every pytest-xdist worker)."""
+    return ",".join(f"{k}={getattr(v, '__name__', None) or v!r}" for k, v in kwargs.items())
+
+
 EXPLORE_REFUSALS = [
     ({"iterations": -1}, ValueError, r"iterations must be an integer in \[0, 5\], got -1"),
     (
@@ -367,7 +372,7 @@ EXPLORE_REFUSALS = [
 
 
 @pytest.mark.parametrize(
-    "kwargs, error, message", EXPLORE_REFUSALS, ids=[str(k) for k, _, _ in EXPLORE_REFUSALS]
+    "kwargs, error, message", EXPLORE_REFUSALS, ids=[_stable_id(k) for k, _, _ in EXPLORE_REFUSALS]
 )
 def test_explore_refuses_what_its_controls_cannot_show(kwargs, error, message):
     kwargs = {"mesh": "cube", **kwargs}

@@ -270,13 +270,28 @@ def draw_mesh(
         linewidths=lw if wireframe else 0.15,
     )
     coll.set_clip_on(False)  # mplot3d's square may be narrower than a wide panel
-    ax.add_collection3d(coll)
+    _add_without_autoscale(ax, coll)
     ax.view_init(elev=elev, azim=azim)
     ax.set_proj_type(proj)
     fit_view(ax, mesh.vertices if faces is None else _poly_points(polys), zoom=zoom)
     if title is not None:
         label_panel(ax, title)
     return coll
+
+
+def _add_without_autoscale(ax, coll) -> None:
+    """Add a polygon collection to a 3-D axes without mplot3d's autoscaling.
+
+    :func:`fit_view` sets the limits.  mplot3d's own autoscale (matplotlib
+    >= 3.9, ``autolim=True``) reads ``Poly3DCollection._faces``, which for
+    faces of several sizes is padded with uninitialised memory: now and then
+    a garbage float overflows or is NaN and ``set_xlim`` raises "Axis limits
+    cannot be NaN or Inf" (seen in a notebook's slider sweep).
+    """
+    try:
+        ax.add_collection3d(coll, autolim=False)
+    except TypeError:  # matplotlib < 3.9: no autolim, and no autoscale here either
+        ax.add_collection3d(coll)
 
 
 def _poly_points(polys) -> np.ndarray:
