@@ -42,3 +42,32 @@ def small_mesh(request):
 def operator_name(request) -> str:
     """Every registered scheme and ``dual``."""
     return request.param
+
+
+# ------------------------------------------------------------------ pytest-xdist
+#: Files run whole in one worker: the browser tests share one JupyterLab and one
+#: Chromium; these others build expensive module or session fixtures once.
+WHOLE_FILES = ("test_browser.py", "test_figures.py", "test_claims.py", "test_cli.py")
+
+try:
+    from xdist.scheduler import LoadScopeScheduling
+except ImportError:  # pragma: no cover - xdist is in the test extra
+    LoadScopeScheduling = None
+
+if LoadScopeScheduling is not None:
+
+    class _Scheduling(LoadScopeScheduling):
+        """Load balancing test by test, except :data:`WHOLE_FILES` (a file each).
+
+        The browser file is collected first, so one worker starts it at once
+        while the other works through the rest, test by test.  (xdist's
+        ``loadgroup`` would do this with a mark, but its grouping is lost
+        under pytest 9.)
+        """
+
+        def _split_scope(self, nodeid: str) -> str:
+            path = nodeid.split("::", 1)[0]
+            return path if path.endswith(WHOLE_FILES) else nodeid
+
+    def pytest_xdist_make_scheduler(config, log):
+        return _Scheduling(config, log)

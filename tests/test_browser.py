@@ -34,8 +34,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import browser_support as bs
 import notebook_support as ns
 
-# one JupyterLab and one Chromium: every browser test in one pytest-xdist worker
-pytestmark = [pytest.mark.browser, pytest.mark.xdist_group("browser")]
+# one JupyterLab and one Chromium: the whole file runs in one pytest-xdist worker
+# (conftest.WHOLE_FILES)
+pytestmark = pytest.mark.browser
 
 ROOT = bs.ROOT
 NOTEBOOKS = ns.NOTEBOOKS
