@@ -282,15 +282,15 @@ def draw_mesh(
 def _add_without_autoscale(ax, coll) -> None:
     """Add a polygon collection to a 3-D axes without mplot3d's autoscaling.
 
-    :func:`fit_view` sets the limits.  mplot3d's own autoscale (matplotlib
-    >= 3.9, ``autolim=True``) reads ``Poly3DCollection._faces``, which for
+    :func:`fit_view` sets the limits.  mplot3d's own autoscale (``autolim=True``;
+    seen with matplotlib 3.11) reads ``Poly3DCollection._faces``, which for
     faces of several sizes is padded with uninitialised memory: now and then
     a garbage float overflows or is NaN and ``set_xlim`` raises "Axis limits
     cannot be NaN or Inf" (seen in a notebook's slider sweep).
     """
     try:
         ax.add_collection3d(coll, autolim=False)
-    except TypeError:  # matplotlib < 3.9: no autolim, and no autoscale here either
+    except TypeError:  # an older matplotlib without autolim
         ax.add_collection3d(coll)
 
 
