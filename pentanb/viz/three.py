@@ -283,9 +283,7 @@ class MeshView(W.VBox):
         the geometry objects, renderer, camera and controls are kept, so the
         viewpoint stays where the reader left it (unless ``fit``).
         """
-        if not isinstance(mesh, (Mesh, Drawing)):
-            raise TypeError(f"expected a pentanb.Mesh or a Drawing, got {type(mesh).__name__}")
-        b = self._show(mesh)
+        b = self._show(mesh)  # as_drawing refuses anything but a Mesh or a Drawing
         # no frame is drawn half-updated: the browser waits for the last array
         with self.renderer.hold():
             self._write(b)
