@@ -255,6 +255,79 @@ def test_explorer_slider_updates_geometry_in_place():
     assert "pentagons" in e.counts.value
 
 
+def test_explorer_close_frees_the_explorer_and_its_meshes():
+    import gc
+    import weakref
+
+    e = pentanb.explore("cube", iterations=0)
+    e.iterations.value = 1
+    v = e.view
+    inside = [e, e.shape, e.scheme, e.iterations, e.duals, e.scale, e.progress, e.status]
+    inside += [e.counts, v, v.renderer, v.scene, v.camera, v.controls, v.legend, v.wireframe]
+    inside += [v.faces, v.edges, v.points, v.face_geometry, v.face_material, v.headlight]
+    inside += list(v.face_geometry.attributes.values()) + list(v.edge_geometry.attributes.values())
+    assert all(w.comm is not None for w in inside)
+    alive = weakref.ref(e), weakref.ref(e.mesh), weakref.ref(v.renderer)
+    e.close()
+    e.close()  # twice is harmless
+    assert [type(w).__name__ for w in inside if w.comm is not None] == []
+    del e, v, inside
+    gc.collect()
+    assert [r() for r in alive] == [None, None, None]
+
+
+def test_plain_close_would_keep_the_explorer_alive():
+    # what Explorer.close mends: ipywidgets' own close() leaves the sliders
+    # open, and their observers keep the explorer (and its cache) alive
+    import gc
+    import weakref
+
+    import ipywidgets
+
+    e = pentanb.explore("cube", iterations=0)
+    alive = weakref.ref(e)
+    ipywidgets.Widget.close(e)
+    del e
+    gc.collect()
+    assert alive() is not None
+    alive().close()
+
+
+def test_view_close_leaves_a_shared_camera_open(tmp_path):
+    like = pentanb.view(shapes.cube())
+    box = three.slider_stack([shapes.cube(), shapes.tetrahedron()], ["a", "b"], like)
+    first, second = box.children[3].children
+    assert first.camera is second.camera
+    first.close()
+    assert first.renderer.comm is None and first.face_geometry.comm is None
+    assert second.camera.comm is not None and second.renderer.comm is not None
+    assert first.mesh is None
+    # its links are closed with it: a link left open with a closed end makes
+    # every later export fail ('NoneType' object has no attribute 'comm_id')
+    html.export_html(pentanb.view(shapes.cube()), tmp_path / "after.html", offline=False)
+
+
+def test_step_through_and_panel_close_everything_inside():
+    s = pentanb.step_through(shapes.cube())
+    inside = [s.step, s.caption, s.view, s.view.renderer, s.view.face_geometry]
+    s.close()
+    assert [w for w in inside if w.comm is not None] == []
+
+    def draw(n=1):
+        return pentanb.subdivide(shapes.cube(), "pentagonalize", n)
+
+    p = widgets.panel(draw, n=(0, 2))
+    assert p.view is not None
+    inside = [*p.controls.values(), p.output, p.view, p.view.renderer, p.view.points]
+    p.close()
+    assert [w for w in inside if w.comm is not None] == []
+
+
+def test_close_tree_refuses_what_is_not_a_widget():
+    with pytest.raises(TypeError, match=r"ipywidgets\.Widget, got Mesh"):
+        three.close_tree(shapes.cube())
+
+
 def test_explorer_controls_follow_scheme_options():
     e = pentanb.explore("cube", "pentagonalize")
     assert e.scale.disabled

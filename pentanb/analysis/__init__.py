@@ -20,28 +20,8 @@ stays numpy-only.)
 
 from __future__ import annotations
 
-from .measures import (
-    angle_spread,
-    best_fit_planes,
-    canonical_configuration,
-    configuration_counts,
-    corner_angles,
-    crease_angles,
-    edge_length_spread,
-    edge_lengths,
-    edge_profile,
-    edge_waviness,
-    face_configurations,
-    face_planarity,
-    lateral_amplitude,
-    normal_angles,
-    planarity,
-    radius_spread,
-    ray_distances,
-    region_geometry,
-    uniformity,
-    vertex_configurations,
-)
+from . import measures
+from .measures import *  # noqa: F403  (the names of measures.__all__)
 from .spectral import (
     CharacteristicMap,
     ContinuityRow,
@@ -64,24 +44,5 @@ __all__ = [
     "ContinuityRow",
     "table_markdown",
     "ring_contraction",
-    "vertex_configurations",
-    "face_configurations",
-    "canonical_configuration",
-    "configuration_counts",
-    "radius_spread",
-    "normal_angles",
-    "ray_distances",
-    "edge_waviness",
-    "edge_lengths",
-    "edge_length_spread",
-    "corner_angles",
-    "angle_spread",
-    "uniformity",
-    "face_planarity",
-    "planarity",
-    "best_fit_planes",
-    "region_geometry",
-    "crease_angles",
-    "edge_profile",
-    "lateral_amplitude",
+    *(name for name in measures.__all__ if name != "BOX_EDGES"),
 ]

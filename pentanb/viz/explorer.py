@@ -22,7 +22,7 @@ from ..mesh import Mesh, MeshError
 from ..schemes.registry import SCHEMES, Scheme, get_scheme
 from ..subdivision import predict_counts, subdivide
 from .drawing import counts_text, error_html
-from .three import MeshView, slider_stack
+from .three import MeshView, close_tree, slider_stack
 from .widgets import integer_argument, number_argument
 
 __all__ = ["Explorer", "explore", "MAX_DUALS", "SCALE_RANGE"]
@@ -331,6 +331,19 @@ class Explorer(W.HBox):
     def mesh(self) -> Mesh | None:
         """The mesh shown."""
         return self.view.mesh
+
+    def close(self) -> None:
+        """Close the explorer and every widget inside it; empty its cache.
+
+        ipywidgets' own ``close()`` would leave the sliders open, and their
+        observers would keep the explorer and every cached mesh alive
+        (see :func:`pentanb.viz.three.close_tree`).
+        """
+        # (ipywidgets calls close() from __del__ too, also when __init__ failed)
+        getattr(self, "_cache", {}).clear()
+        self._cache_corners = 0
+        getattr(self, "_meshes", {}).clear()
+        close_tree(self)
 
     # -- export -------------------------------------------------------------
     def static_copy(self, levels: int | None = None) -> W.Widget:

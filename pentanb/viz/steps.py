@@ -15,7 +15,7 @@ from ..mesh import Mesh
 from ..schemes.registry import Scheme
 from .drawing import Drawing
 from .stages import check_stage_arguments, stages
-from .three import MeshView, slider_stack
+from .three import MeshView, close_tree, slider_stack
 from .widgets import integer_argument
 
 __all__ = ["StepThrough", "step_through"]
@@ -72,6 +72,10 @@ class StepThrough(W.VBox):
         k = change["new"]
         self.caption.value = self._caption(k)
         self.view.update(self.stages[k][1])
+
+    def close(self) -> None:
+        """Close the step-through and every widget inside it (``close_tree``)."""
+        close_tree(self)
 
     def static_copy(self) -> W.Widget:
         """A kernel-free copy (one view per stage, slider linked in the browser)."""

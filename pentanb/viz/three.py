@@ -63,10 +63,86 @@ from .drawing import (
     mesh_buffers,
 )
 
-__all__ = ["MeshView", "view", "slider_stack"]
+__all__ = ["MeshView", "view", "slider_stack", "close_tree"]
 
 
 _VERSIONS = itertools.count(1)
+
+
+# attribute of a widget listing the jslink/jsdlink widgets made with it
+LINKS = "_pentanb_links"
+
+
+def _linked(a: tuple[W.Widget, str], b: tuple[W.Widget, str], *, one_way: bool = False):
+    """``jslink(a, b)`` (or ``jsdlink``), listed on both widgets for :func:`close_tree`."""
+    link = (W.jsdlink if one_way else W.jslink)(a, b)
+    for w in (a[0], b[0]):
+        if not hasattr(w, LINKS):
+            setattr(w, LINKS, [])
+        getattr(w, LINKS).append(link)
+    return link
+
+
+def _widgets_in(value: object) -> list[W.Widget]:
+    """The widgets a trait value holds (itself, or in a list, tuple or dict)."""
+    if isinstance(value, W.Widget):
+        return [value]
+    if isinstance(value, dict):
+        value = list(value.values())
+    if isinstance(value, (list, tuple)):
+        return [x for x in value if isinstance(x, W.Widget)]
+    return []
+
+
+def close_tree(widget: W.Widget, keep: Sequence[W.Widget] = ()) -> int:
+    """Close ``widget`` and every widget it holds, through its synced traits.
+
+    ipywidgets' ``close()`` closes one widget: its children (and a pythreejs
+    view's renderer, scene, geometries and buffers) stay registered, with
+    the observers that point back at their parent, so nothing of the tree
+    can be freed.  This walks the traits that are synced with the browser
+    (``children``, ``scene``, ``geometry``, ``attributes``, ...) and closes
+    every widget found, each once, the innermost first, with
+    ``ipywidgets.Widget.close``.  The browser links that pentanb made with
+    a widget (listed in its ``LINKS`` attribute) are closed with it, and a
+    camera that a :class:`MeshView` shares with other views stays open.
+
+    Parameters
+    ----------
+    widget : ipywidgets.Widget
+    keep : sequence of ipywidgets.Widget
+        Widgets to leave open, and not to walk into (a camera shared with
+        other views).
+
+    Returns
+    -------
+    int
+        How many widgets were closed.
+    """
+    if not isinstance(widget, W.Widget):
+        raise TypeError(f"close_tree() expects an ipywidgets.Widget, got {type(widget).__name__}")
+    kept = {id(w) for w in keep}
+    seen: set[int] = set()
+    order: list[W.Widget] = []
+    stack = [widget]
+    while stack:
+        w = stack.pop()
+        if id(w) in seen or id(w) in kept:
+            continue
+        seen.add(id(w))
+        order.append(w)
+        # the browser links made with it (a link left open with a closed end
+        # breaks ipywidgets' embedding of every later page)
+        stack.extend(getattr(w, LINKS, ()))
+        if isinstance(w, MeshView) and not getattr(w, "_own_camera", True):
+            kept.add(id(w.camera))  # a camera shared with other views stays open
+        for name in w.keys:
+            if name.startswith("_"):  # _model_name, _view_module, ...
+                continue
+            stack.extend(_widgets_in(getattr(w, name, None)))
+    for w in reversed(order):
+        W.Widget.close(w)  # not a subclass's close(), which may call this one
+    return len(order)
 
 
 def _set_array(attribute, array) -> None:
@@ -204,12 +280,16 @@ class MeshView(W.VBox):
                 children=[self.headlight],
             )
             objects.append(self.camera)
+            self._own_camera = True
         else:
             # a camera shared with other views stays outside every scene (an
             # object has one parent); the light follows it through a link
             self.camera = camera
+            self._own_camera = False
             self.headlight.position = tuple(camera.position)
-            self._light_link = W.jsdlink((camera, "position"), (self.headlight, "position"))
+            self._light_link = _linked(
+                (camera, "position"), (self.headlight, "position"), one_way=True
+            )
             objects.append(self.headlight)
             centre = np.asarray(target if target is not None else centre, dtype=np.float64)
         self.scene = P3.Scene(children=objects, background=background)
@@ -231,7 +311,7 @@ class MeshView(W.VBox):
             value=bool(edges), description="edges", indent=False, layout=W.Layout(width="auto")
         )
         self._edges_present = bool(b.edge_count)
-        self._link = W.jslink((self.wireframe, "value"), (self.edges, "visible"))
+        self._link = _linked((self.wireframe, "value"), (self.edges, "visible"))
         self.legend = W.HTML(self._legend() if legend else "")
         self._show_legend = legend
         bottom = [self.legend] + ([self.wireframe] if toggle else [])
@@ -329,6 +409,15 @@ class MeshView(W.VBox):
 
     def _set_point_size(self, radius: float) -> None:
         self.point_material.size = float(self._point_size or radius * 0.09)
+
+    def close(self) -> None:
+        """Close the view and every widget inside it, so that its arrays can be freed.
+
+        A camera given to the constructor (shared with other views) is left
+        open.
+        """
+        close_tree(self)
+        self._mesh, self._drawing = None, None
 
     # -- embedding ----------------------------------------------------------
     def copy(self, mesh: Mesh | Drawing | None = None, **kwargs) -> MeshView:
@@ -450,10 +539,10 @@ def slider_stack(
         continuous_update=True,
         layout=W.Layout(width="420px"),
     )
-    W.jslink((slider, "value"), (stack, "selected_index"))
-    W.jslink((slider, "value"), (texts, "selected_index"))
+    _linked((slider, "value"), (stack, "selected_index"))
+    _linked((slider, "value"), (texts, "selected_index"))
     for v in views[1:]:
-        W.jslink((views[0].wireframe, "value"), (v.wireframe, "value"))
+        _linked((views[0].wireframe, "value"), (v.wireframe, "value"))
     box = W.VBox([W.HTML(title), slider, texts, stack])
     box.add_class("pentanb-static")
     return box

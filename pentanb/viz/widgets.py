@@ -30,7 +30,7 @@ import ipywidgets as W
 from IPython.display import clear_output
 
 from ..mesh import Mesh
-from .three import MeshView
+from .three import MeshView, close_tree
 
 __all__ = ["Panel", "panel", "control", "integer_argument", "number_argument"]
 
@@ -236,6 +236,11 @@ class Panel(W.VBox):
             name: None if getattr(w, "disabled", False) else w.value
             for name, w in self.controls.items()
         }
+
+    def close(self) -> None:
+        """Close the panel and every widget inside it (``close_tree``)."""
+        self.mesh = None
+        close_tree(self)
 
     def _on_change(self, change) -> None:
         owner = next(n for n, w in self.controls.items() if w is change["owner"])
