@@ -305,6 +305,10 @@ def test_view_close_leaves_a_shared_camera_open(tmp_path):
     # its links are closed with it: a link left open with a closed end makes
     # every later export fail ('NoneType' object has no attribute 'comm_id')
     html.export_html(pentanb.view(shapes.cube()), tmp_path / "after.html", offline=False)
+    # the whole box closes the camera too (nothing else holds it)
+    assert three.close_tree(box) > 0
+    assert second.camera.comm is None and second.renderer.comm is None
+    assert three.close_tree(box) == 0  # nothing left open
 
 
 def test_step_through_and_panel_close_everything_inside():

@@ -69,17 +69,23 @@ __all__ = ["MeshView", "view", "slider_stack", "close_tree"]
 _VERSIONS = itertools.count(1)
 
 
-# attribute of a widget listing the jslink/jsdlink widgets made with it
-LINKS = "_pentanb_links"
+# attribute of a widget listing the widgets to close with it (the browser
+# links made with it; the camera that the views of a slider_stack share)
+OWNED = "_pentanb_owned"
+
+
+def _own(owner: W.Widget, widget: W.Widget) -> None:
+    """List ``widget`` among those :func:`close_tree` closes with ``owner``."""
+    if not hasattr(owner, OWNED):
+        setattr(owner, OWNED, [])
+    getattr(owner, OWNED).append(widget)
 
 
 def _linked(a: tuple[W.Widget, str], b: tuple[W.Widget, str], *, one_way: bool = False):
-    """``jslink(a, b)`` (or ``jsdlink``), listed on both widgets for :func:`close_tree`."""
+    """``jslink(a, b)`` (or ``jsdlink``), closed with either end by :func:`close_tree`."""
     link = (W.jsdlink if one_way else W.jslink)(a, b)
-    for w in (a[0], b[0]):
-        if not hasattr(w, LINKS):
-            setattr(w, LINKS, [])
-        getattr(w, LINKS).append(link)
+    _own(a[0], link)
+    _own(b[0], link)
     return link
 
 
@@ -104,8 +110,9 @@ def close_tree(widget: W.Widget, keep: Sequence[W.Widget] = ()) -> int:
     (``children``, ``scene``, ``geometry``, ``attributes``, ...) and closes
     every widget found, each once, the innermost first, with
     ``ipywidgets.Widget.close``.  The browser links that pentanb made with
-    a widget (listed in its ``LINKS`` attribute) are closed with it, and a
-    camera that a :class:`MeshView` shares with other views stays open.
+    a widget are closed with it; a camera that a :class:`MeshView` shares
+    with other views stays open, unless the :func:`slider_stack` that made
+    it is closed whole.
 
     Parameters
     ----------
@@ -117,32 +124,40 @@ def close_tree(widget: W.Widget, keep: Sequence[W.Widget] = ()) -> int:
     Returns
     -------
     int
-        How many widgets were closed.
+        How many open widgets were closed.
     """
     if not isinstance(widget, W.Widget):
         raise TypeError(f"close_tree() expects an ipywidgets.Widget, got {type(widget).__name__}")
     kept = {id(w) for w in keep}
+    shared: set[int] = set()  # cameras shared by the views met: not walked into
     seen: set[int] = set()
     order: list[W.Widget] = []
     stack = [widget]
     while stack:
         w = stack.pop()
-        if id(w) in seen or id(w) in kept:
+        if id(w) in seen or id(w) in kept or id(w) in shared:
             continue
         seen.add(id(w))
         order.append(w)
-        # the browser links made with it (a link left open with a closed end
-        # breaks ipywidgets' embedding of every later page)
-        stack.extend(getattr(w, LINKS, ()))
         if isinstance(w, MeshView) and not getattr(w, "_own_camera", True):
-            kept.add(id(w.camera))  # a camera shared with other views stays open
+            shared.add(id(w.camera))
         for name in w.keys:
             if name.startswith("_"):  # _model_name, _view_module, ...
                 continue
             stack.extend(_widgets_in(getattr(w, name, None)))
+    # then what they own: the browser links made with them (a link left open
+    # with a closed end breaks ipywidgets' embedding of every later page), and
+    # the camera of a slider_stack closed whole
+    for w in list(order):
+        for x in getattr(w, OWNED, ()):
+            if id(x) not in seen and id(x) not in kept:
+                seen.add(id(x))
+                order.append(x)
+    n = 0
     for w in reversed(order):
+        n += w.comm is not None
         W.Widget.close(w)  # not a subclass's close(), which may call this one
-    return len(order)
+    return n
 
 
 def _set_array(attribute, array) -> None:
@@ -544,5 +559,6 @@ def slider_stack(
     for v in views[1:]:
         _linked((views[0].wireframe, "value"), (v.wireframe, "value"))
     box = W.VBox([W.HTML(title), slider, texts, stack])
+    _own(box, camera)  # closed with the whole box, not with one view
     box.add_class("pentanb-static")
     return box
