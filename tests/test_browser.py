@@ -45,6 +45,8 @@ NOTEBOOKS = ns.NOTEBOOKS
 RUN_TIMEOUT = 240
 #: Seconds to wait for a picture to appear or to change.
 DRAW_TIMEOUT = 45
+#: seconds to wait for the sweep's stdout once the kernel is idle
+SWEEP_GRACE = 30
 
 
 @pytest.fixture(scope="module")
@@ -185,8 +187,11 @@ JS_RESULT = """(upto) => {
         last += Array.isArray(o.text) ? o.text.join('') : o.text;
     }
   });
+  const tail = w.content.widgets[w.content.widgets.length - 1].model;
   return {run: window.__pentanbRun, errors: errors, missing: missing,
-          mimetypes: [...mimetypes], cells: w.content.widgets.length, last: last};
+          mimetypes: [...mimetypes], cells: w.content.widgets.length, last: last,
+          tail: {count: tail.executionCount,
+                 outputs: tail.outputs.toJSON().map(o => o.output_type + ' ' + (o.name || ''))}};
 }"""
 
 JS_SHUTDOWN = """async () => {
@@ -204,6 +209,19 @@ def _run(page, last: bool, name: str) -> dict:
     page.wait_for_function(JS_DONE, timeout=RUN_TIMEOUT * 1000, polling=500)
     cells = page.evaluate(JS_RESULT, 10**6)["cells"]
     result = page.evaluate(JS_RESULT, cells if last else cells - 1)
+    if last and not result["errors"] and "SWEEP " not in result["last"]:
+        # the kernel is idle, but its stdout may still be on its way to the
+        # page (seen twice in a busy suite: the sweep's line missing at first)
+        def arrived():
+            r = page.evaluate(JS_RESULT, cells)
+            return r if "SWEEP " in r["last"] else None
+
+        late = _poll(arrived, SWEEP_GRACE)
+        result = late or page.evaluate(JS_RESULT, cells)
+        assert late, (
+            f"{name}: the sweep's line never reached the page; its cell: {result['tail']}, "
+            f"the last cell's stdout: {result['last'][-500:]!r}"
+        )
     errors = [re.sub(r"\x1b\[[0-9;]*m", "", e) for e in result["errors"]]  # no ANSI colours
     assert not errors, f"{name}: cells failed:\n" + "\n".join(errors)
     assert result["run"]["ok"], f"{name}: run failed: {result['run']}"
