@@ -26,6 +26,7 @@ from __future__ import annotations
 import re
 import sys
 import time
+import warnings
 from pathlib import Path
 
 import pytest
@@ -216,8 +217,15 @@ def _run(page, last: bool, name: str) -> dict:
             r = page.evaluate(JS_RESULT, cells)
             return r if "SWEEP " in r["last"] else None
 
+        t = time.monotonic()
         late = _poll(arrived, SWEEP_GRACE)
         result = late or page.evaluate(JS_RESULT, cells)
+        if late:  # in the warnings summary: how often, and how late
+            warnings.warn(
+                f"{name}: the sweep's line reached the page "
+                f"{time.monotonic() - t:.1f} s after the kernel went idle",
+                stacklevel=1,
+            )
         assert late, (
             f"{name}: the sweep's line never reached the page; its cell: {result['tail']}, "
             f"the last cell's stdout: {result['last'][-500:]!r}"
