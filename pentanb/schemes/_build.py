@@ -198,6 +198,32 @@ def output(
     return Mesh._new(vertices, corners, offsets, twin=twin, rings=rings, dual_of=dual_of)
 
 
+def remeshed(
+    mesh: Mesh,
+    vertices: np.ndarray,
+    corners: np.ndarray,
+    offsets: np.ndarray,
+    dt: np.dtype,
+    twin_of: Callable[[Any, np.dtype], np.ndarray],
+    rings_of: Callable[[Any, np.dtype], Rings],
+) -> Mesh:
+    """:func:`output` of a remeshing of ``mesh``, its connectivity written from ``mesh``'s.
+
+    The output's twins and vertex rings are ``twin_of(faces, dt)`` and
+    ``rings_of(faces, dt)``, run only when first asked for, ``faces`` being
+    ``mesh``'s faces without its positions (so the output does not keep
+    them alive).
+    """
+    faces = mesh._faces_only()
+    return output(
+        vertices,
+        corners,
+        offsets,
+        twin=lambda: twin_of(faces, dt),
+        rings=lambda: rings_of(faces, dt),
+    )
+
+
 def scale_safe(op: _Op) -> _Op:
     """Decorator: run a remeshing operator safely on huge coordinates.
 

@@ -35,6 +35,7 @@ from ._build import (
     index_dtype,
     inverse,
     output,
+    remeshed,
     scale_safe,
     start_at_max,
 )
@@ -109,14 +110,7 @@ def loop_remesh(mesh: Mesh) -> Mesh:
     vertices = np.empty((n + E, 3))
     vertices[:n] = mesh.vertices
     edge_points(mesh, 1, out=vertices[n:])
-    source = mesh._faces_only()
-    return output(
-        vertices,
-        corners,
-        offsets,
-        twin=lambda: _loop_twin(source, dt),
-        rings=lambda: _loop_rings(source, dt),
-    )
+    return remeshed(mesh, vertices, corners, offsets, dt, _loop_twin, _loop_rings)
 
 
 def _loop_twin(m, dt: np.dtype) -> np.ndarray:
@@ -181,14 +175,7 @@ def sqrt3_remesh(mesh: Mesh) -> Mesh:
     vertices = np.empty((n + F, 3))
     vertices[:n] = mesh.vertices
     vertices[n:] = mesh.face_centroids
-    source = mesh._faces_only()
-    return output(
-        vertices,
-        corners,
-        offsets,
-        twin=lambda: _sqrt3_twin(source, dt),
-        rings=lambda: _sqrt3_rings(source, dt),
-    )
+    return remeshed(mesh, vertices, corners, offsets, dt, _sqrt3_twin, _sqrt3_rings)
 
 
 def _sqrt3_twin(m, dt: np.dtype) -> np.ndarray:
@@ -239,14 +226,7 @@ def vertex_insertion(mesh: Mesh) -> Mesh:
     vertices[:n] = mesh.vertices
     edge_points(mesh, 1, out=vertices[n : n + E])
     vertices[n + E :] = mesh.face_centroids
-    source = mesh._faces_only()
-    return output(
-        vertices,
-        corners,
-        offsets,
-        twin=lambda: _insertion_twin(source, dt),
-        rings=lambda: _insertion_rings(source, dt),
-    )
+    return remeshed(mesh, vertices, corners, offsets, dt, _insertion_twin, _insertion_rings)
 
 
 def _insertion_twin(m, dt: np.dtype) -> np.ndarray:
@@ -341,14 +321,8 @@ def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     offsets = np.concatenate(
         [mesh.offsets, np.arange(H + 4, 3 * H + 1, 4, dtype=dt), 3 * H + ring_off[1:].astype(dt)]
     )
-    source = mesh._faces_only()
-    return output(
-        _corner_points(mesh, s),
-        corners,
-        offsets,
-        twin=lambda: _cutting_twin(source, dt),
-        rings=lambda: _cutting_rings(source, dt),
-    )
+    points = _corner_points(mesh, s)
+    return remeshed(mesh, points, corners, offsets, dt, _cutting_twin, _cutting_rings)
 
 
 def _edge_slot(m, h: np.ndarray, per: int, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
@@ -437,14 +411,7 @@ def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     vertices = np.empty((n + H, 3))
     vertices[:n] = mesh.vertices
     vertices[n:] = _corner_points(mesh, s)
-    source = mesh._faces_only()
-    return output(
-        vertices,
-        corners,
-        offsets,
-        twin=lambda: _hexagons_twin(source, dt),
-        rings=lambda: _hexagons_rings(source, dt),
-    )
+    return remeshed(mesh, vertices, corners, offsets, dt, _hexagons_twin, _hexagons_rings)
 
 
 def _hex_slot(m, h: np.ndarray, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
@@ -519,14 +486,7 @@ def honeycomb(mesh: Mesh) -> Mesh:
     offsets = np.concatenate([mesh.offsets, H + 2 * ring_off[1:].astype(dt)])
     v = mesh.vertices
     points = (v[mesh.corners] + v[mesh.head] + mesh.face_centroids[mesh.halfedge_face]) / 3.0
-    source = mesh._faces_only()
-    return output(
-        points,
-        corners,
-        offsets,
-        twin=lambda: _honeycomb_twin(source, dt),
-        rings=lambda: _honeycomb_rings(source, dt),
-    )
+    return remeshed(mesh, points, corners, offsets, dt, _honeycomb_twin, _honeycomb_rings)
 
 
 def _honeycomb_twin(m, dt: np.dtype) -> np.ndarray:

@@ -17,6 +17,7 @@ from ._build import (
     edge_points,
     index_dtype,
     output,
+    remeshed,
     scale_safe,
     start_at_max,
 )
@@ -91,6 +92,9 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     vertices[:n] = mesh.vertices
     edge_points(mesh, 2, out=vertices[n : n + 2 * E])
     vertices[n + 2 * E :] = mesh.face_centroids
+    # the twins' producer holds the input's twins and offsets only, not its
+    # faces (whose cached connectivity would then stay alive until the
+    # output's twins are asked for, maybe an iteration later)
     twin_in, offsets_in, source = mesh.twin, mesh.offsets, mesh._faces_only()
     return output(
         vertices,
@@ -238,14 +242,7 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     face_offsets = np.empty(F + H + 1, dtype=dt)
     face_offsets[: F + 1] = offsets
     face_offsets[F + 1 :] = np.arange(H + 5, 6 * H + 1, 5, dtype=dt)
-    source = mesh._faces_only()
-    return output(
-        vertices,
-        corners,
-        face_offsets,
-        twin=lambda: _preserved_twin(source, dt),
-        rings=lambda: _preserved_rings(source, dt),
-    )
+    return remeshed(mesh, vertices, corners, face_offsets, dt, _preserved_twin, _preserved_rings)
 
 
 def _preserved_twin(mesh, dt: np.dtype) -> np.ndarray:
