@@ -76,6 +76,26 @@ def merged_icosahedron() -> Mesh:
     return merge_faces(ico, [3, 4, 5, 6, 7, 8, 9])
 
 
+def faces_sharing_two_edges() -> tuple[np.ndarray, list[list[int]]]:
+    """A 3 x 3 quad torus with two neighbouring quads merged into a hexagon.
+
+    Quad 0, ``[2, 5, 3, 0]``, then meets the hexagon (face 7) along
+    ``(2, 5)`` and along ``(0, 3)``: faces sharing two edges, which the
+    constructor refuses.  Returns the vertices and the face lists.
+    """
+    faces = [
+        [2, 5, 3, 0],
+        [3, 6, 7, 4],
+        [4, 7, 8, 5],
+        [5, 8, 6, 3],
+        [6, 0, 1, 7],
+        [7, 1, 2, 8],
+        [8, 2, 0, 6],
+        [1, 0, 3, 4, 5, 2],
+    ]
+    return shapes.torus(3, 3).vertices, faces
+
+
 def two_cubes() -> Mesh:
     """Two disjoint cubes (two components, genus 0 each)."""
     c = shapes.cube()

@@ -15,7 +15,16 @@ import re
 
 import numpy as np
 import pytest
-from helpers import OPERATORS, check_sealed, check_valid, corpus, face_lists, same_mesh, two_cubes
+from helpers import (
+    OPERATORS,
+    check_sealed,
+    check_valid,
+    corpus,
+    face_lists,
+    faces_sharing_two_edges,
+    same_mesh,
+    two_cubes,
+)
 
 from pentanb import Mesh, MeshError, dual, pentagonalize, shapes, subdivide
 from pentanb.mesh import fan_triangle_corners
@@ -627,25 +636,13 @@ def test_two_valent_vertex_is_refused():
 
 
 def test_faces_sharing_two_edges_are_refused():
-    # a 3 x 3 quad torus with two neighbouring quads merged into a hexagon:
-    # quad [2, 5, 3, 0] now meets the hexagon along (2, 5) and along (0, 3)
-    t = shapes.torus(3, 3)
-    faces = [
-        [2, 5, 3, 0],
-        [3, 6, 7, 4],
-        [4, 7, 8, 5],
-        [5, 8, 6, 3],
-        [6, 0, 1, 7],
-        [7, 1, 2, 8],
-        [8, 2, 0, 6],
-        [1, 0, 3, 4, 5, 2],
-    ]
+    vertices, faces = faces_sharing_two_edges()
     with pytest.raises(
         MeshError,
         match=r"faces 0 and 7 share more than one edge "
         r"\(\(2, 5\) and \(0, 3\)\)",
     ):
-        Mesh(t.vertices, faces)
+        Mesh(vertices, faces)
 
 
 def test_face_means_of_scalar_and_vector_values():

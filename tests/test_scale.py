@@ -20,7 +20,7 @@ import functools
 
 import numpy as np
 import pytest
-from helpers import CORPUS_NAMES, check_valid, corpus, face_lists
+from helpers import CORPUS_NAMES, check_valid, corpus, face_lists, faces_sharing_two_edges
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -86,20 +86,7 @@ def broken_meshes() -> dict[str, tuple[np.ndarray, list[list[int]]]]:
     out["vertex with two fans"] = (v7, tetra_faces(0, 1, 2, 3) + tetra_faces(3, 4, 5, 6))
     out["unused vertex"] = (np.concatenate([cube_v, [[5.0, 5, 5]]]), cube_faces())
     out["2-valent vertex"] = ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 1]])
-    t = shapes.torus(3, 3)
-    out["faces sharing two edges"] = (
-        t.vertices,
-        [
-            [2, 5, 3, 0],
-            [3, 6, 7, 4],
-            [4, 7, 8, 5],
-            [5, 8, 6, 3],
-            [6, 0, 1, 7],
-            [7, 1, 2, 8],
-            [8, 2, 0, 6],
-            [1, 0, 3, 4, 5, 2],
-        ],
-    )
+    out["faces sharing two edges"] = faces_sharing_two_edges()
     # the same failures among faces of one size and of more than 16 sides
     big = shapes.torus(20, 3)
     faces = face_lists(big)
