@@ -289,6 +289,24 @@ def slider(table: Table, runs: int, clock) -> dict:
             note=f"{median(faults):,.0f} page faults",
         )
         out[name] = [float(x) for x in times]
+    # what a move sends to the browser: the indexed buffers against the three
+    # rows per triangle (and two per edge) of the unindexed drawing
+    from pentanb.viz.drawing import buffers, drawing, mesh_buffers
+
+    for name in pb.SCHEMES:
+        m = pb.subdivide(base, name, 1, 2)
+        sent = mesh_buffers(m)
+        flat = buffers(drawing(m))
+        fields = ("position", "color", "index", "edge_position", "edge_color", "edge_index")
+        indexed = sum(getattr(sent, k).nbytes for k in fields)
+        unindexed = sum(getattr(flat, k).nbytes for k in fields[:2] + fields[3:5])
+        table.add(
+            sec,
+            f"bytes sent per move, {name}",
+            indexed / 1e6,
+            "MB",
+            note=f"three rows per triangle: {unindexed / 1e6:.2f} MB ({unindexed / indexed:.2f}x)",
+        )
     # the machine's speed: the table has trimesh's subdivide() of this
     # mesh at 11 ms (and 170 ms at 327,680 triangles) where its targets were set
     import trimesh

@@ -64,20 +64,27 @@ def fan(mesh):
 
 
 def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
-    pos = arr(v.face_geometry.attributes["position"])
-    col = arr(v.face_geometry.attributes["color"]) / 255
-    assert pos.dtype == np.float32 and arr(v.face_geometry.attributes["color"]).dtype == np.uint8
-    assert v.face_geometry.attributes["color"].normalized  # bytes read as [0, 1]
-    assert v.face_geometry.index is None  # three rows per triangle, no index
+    fa = v.face_geometry.attributes
+    pos, idx = arr(fa["position"]), arr(fa["index"])
+    col = arr(fa["color"]) / 255
+    assert pos.dtype == np.float32 and arr(fa["color"]).dtype == np.uint8
+    assert idx.dtype == np.uint32 and idx.ndim == 1  # WebGL's index: one flat uint32 array
+    assert fa["color"].normalized  # bytes read as [0, 1]
+    assert len(pos) == len(col) and int(idx.max()) < len(pos)
     tris, owner = fan(mesh)
     # every polygon is the fan of triangles from its first corner
-    assert len(pos) == len(col) == 3 * len(tris) == 3 * (len(mesh.corners) - 2 * mesh.n_faces)
-    np.testing.assert_allclose(pos, mesh.vertices[tris].reshape(-1, 3), atol=1e-6)
+    assert len(idx) == 3 * len(tris) == 3 * (len(mesh.corners) - 2 * mesh.n_faces)
+    np.testing.assert_allclose(pos[idx], mesh.vertices[tris].reshape(-1, 3), atol=1e-6)
     # each triangle has the colour of its face's size, on its three corners
     sizes = np.array([len(f) for f in face_lists(mesh)])
-    np.testing.assert_array_equal(col, np.repeat(face_rgb(sizes[owner]), 3, axis=0))  # exact
+    np.testing.assert_array_equal(col[idx], np.repeat(face_rgb(sizes[owner]), 3, axis=0))  # exact
+    # indexed: the vertices once per face size present, not three rows per triangle
+    assert len(pos) == len(set(sizes.tolist())) * mesh.n_vertices
     # edges: both ends of every edge, in the edge colour
-    seg = arr(v.edge_geometry.attributes["position"]).reshape(-1, 2, 3)
+    ea = v.edge_geometry.attributes
+    eidx = arr(ea["index"])
+    assert eidx.dtype == np.uint32
+    seg = arr(ea["position"])[eidx].reshape(-1, 2, 3)
     expected = {
         tuple(sorted((f[i], f[(i + 1) % len(f)]))) for f in face_lists(mesh) for i in range(len(f))
     }
@@ -87,7 +94,7 @@ def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
         np.sort(mesh.vertices[np.array(sorted(expected))].reshape(len(seg), -1), axis=0),
         atol=1e-6,
     )
-    ecol = arr(v.edge_geometry.attributes["color"]) / 255
+    ecol = arr(ea["color"])[eidx] / 255
     np.testing.assert_array_equal(ecol, np.tile(hex_to_rgb(EDGE_COLOR), (len(ecol), 1)))
 
 
@@ -912,16 +919,27 @@ def test_explore_accepts_conway_notation():
 
 
 def _same_buffers(a, b):
-    import dataclasses
-
-    for f in dataclasses.fields(a):
-        x, y = getattr(a, f.name), getattr(b, f.name)
-        if isinstance(x, np.ndarray):
-            assert x.dtype == y.dtype and x.shape == y.shape, f.name
-            assert np.array_equal(x, y), f.name
-            assert y.flags.writeable and y.flags.c_contiguous, f.name
-        else:
-            assert x == y, f.name
+    """``b`` draws what ``a`` draws: the same triangles, colours and segments, in order."""
+    drawn = {
+        "triangles": lambda x: x.triangles(),
+        "triangle colors": lambda x: x.triangle_colors(),
+        "segments": lambda x: x.segments(),
+        "segment colors": lambda x: x.edge_color[x.edge_index][: 2 * x.edge_count],
+        "point_position": lambda x: x.point_position,
+        "point_color": lambda x: x.point_color,
+    }
+    for name, what in drawn.items():
+        x, y = what(a), what(b)
+        assert x.dtype == y.dtype and x.shape == y.shape, name
+        assert np.array_equal(x, y), name
+    for name in ("edge_count", "point_count"):
+        assert getattr(a, name) == getattr(b, name), name
+    for name in ("position", "color", "index", "edge_position", "edge_color", "edge_index"):
+        x, y = getattr(a, name), getattr(b, name)
+        assert x.dtype == y.dtype, name
+        assert y.flags.writeable and y.flags.c_contiguous, name
+    assert int(b.index.max()) < len(b.position) == len(b.color)
+    assert int(b.edge_index.max()) < len(b.edge_position) == len(b.edge_color)
 
 
 def test_mesh_buffers_are_the_drawings_buffers(corpus_mesh):
@@ -932,17 +950,37 @@ def test_mesh_buffers_are_the_drawings_buffers(corpus_mesh):
     )
 
 
-@pytest.mark.parametrize("text", ["dgC", "k4P6", "ddgT", "tI"])
+@pytest.mark.parametrize("text", ["dgC", "k4P6", "ddgT", "tI", "bbP5"])
 def test_mesh_buffers_of_mixed_and_uniform_faces(text):
     m = pentanb.conway(text)
     _same_buffers(drawing_module.buffers(drawing_module.drawing(m)), drawing_module.mesh_buffers(m))
+
+
+def test_mesh_buffers_hold_the_vertices_once_per_face_size():
+    m = pentanb.conway("dgC")  # 32 triangles and 6 squares on 24 vertices
+    b = drawing_module.mesh_buffers(m)
+    assert b.position.shape == (2 * 24, 3) and b.index.shape == (3 * (32 + 2 * 6),)
+    v = m.vertices.astype(np.float32)
+    assert np.array_equal(b.position, np.concatenate([v, v]))
+    triangle, square = (drawing_module._bytes(face_rgb(k)) for k in (3, 4))
+    assert (b.color[:24] == triangle).all() and (b.color[24:] == square).all()
+    assert b.edge_position.shape == (24, 3) and b.edge_index.shape == (2 * 60,)
+    one = drawing_module.mesh_buffers(shapes.dodecahedron())  # one size: one copy
+    assert one.position.shape == (20, 3)
+    # six face sizes on 360 vertices: six copies would be more rows than three
+    # per triangle corner (716 triangles), so the rows are per corner
+    many = pentanb.conway("bbP5")
+    assert len(set(many.face_sizes.tolist())) == 6 and many.n_vertices == 360
+    fallback = drawing_module.mesh_buffers(many)
+    assert fallback.position.shape == (3 * 716, 3)
+    assert np.array_equal(fallback.index, np.arange(3 * 716))
 
 
 def test_mesh_buffers_comparison_fails_on_a_moved_vertex_or_other_faces():
     m = pentanb.conway("dgC")  # triangles and quads
     general = drawing_module.buffers(drawing_module.drawing(m))
     moved = m.with_vertices(m.vertices + np.eye(len(m.vertices), 3)[::-1] * 1e-3)
-    with pytest.raises(AssertionError, match="position"):
+    with pytest.raises(AssertionError, match="triangles"):
         _same_buffers(general, drawing_module.mesh_buffers(moved))
     with pytest.raises(AssertionError):  # the gyro of the cube: other faces, other colours
         _same_buffers(general, drawing_module.mesh_buffers(pentanb.conway("gC")))
@@ -955,6 +993,7 @@ def test_a_view_updated_with_a_mesh_carries_its_drawing_and_legend():
     assert v.mesh is n
     assert np.array_equal(v.drawing.vertices, n.vertices)
     assert "32 triangles" in v.legend.value and "V = 24, E = 60, F = 38" in v.legend.value
-    assert np.array_equal(arr(v.face_geometry.attributes["position"]).shape, (3 * (32 + 12), 3))
+    assert arr(v.face_geometry.attributes["index"]).shape == (3 * (32 + 12),)
+    assert arr(v.face_geometry.attributes["position"]).shape == (2 * 24, 3)  # two face sizes
     with pytest.raises(TypeError, match=r"expected a pentanb\.Mesh or a Drawing, got str"):
         v.update("cube")

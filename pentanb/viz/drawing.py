@@ -8,13 +8,20 @@ step-through.
 How a mesh becomes WebGL buffers
 --------------------------------
 A polygon face is drawn as the fan of triangles from its first corner,
-:meth:`pentanb.Mesh.fan_triangles`.  So that each face keeps one flat
-colour, the buffers are per *triangle corner*, not per vertex: the
-``position`` buffer holds ``vertices[triangles]`` (three rows per triangle)
-and ``color`` the colour of each triangle's face on its three rows.  Flat
-shading (``MeshPhongMaterial`` with ``flatShading``) needs no normals.
-Edges are one ``LineSegments`` whose ``position`` holds the two ends of
-every edge; marked points are one ``Points``.
+:meth:`pentanb.Mesh.fan_triangles`, in one flat colour: the colour of its
+number of sides.  The buffers are *indexed*: ``position`` holds the
+vertices and ``index`` three rows of it per triangle.  A vertex has one
+colour in WebGL, so a vertex shared by faces of S different sizes is held S
+times: ``position`` is the vertex array once per face size present (S
+copies, S = 1 for a mesh of one face size) with ``color`` that size's colour
+on its copy, and a triangle's corners point into the copy of its face's
+size.  For the meshes of the explorer's slider (a few face sizes) that is
+1.3-2.3x fewer bytes to compute and to send to the browser than three rows
+per triangle (``benchmarks/bench_pipeline.py`` measures it).
+Flat shading (``MeshPhongMaterial`` with ``flatShading``) needs no normals.
+Edges are one indexed ``LineSegments`` over the vertices; marked points are
+one ``Points``.  A general :class:`Drawing` (any colour per face) gets three
+rows per triangle and an index that counts through them.
 """
 
 from __future__ import annotations
@@ -197,40 +204,70 @@ def _rows(colors: ArrayLike | None, default: str, n: int, repeat: int) -> NDArra
 
 @dataclass(frozen=True)
 class Buffers:
-    """The arrays WebGL draws a :class:`Drawing` from.
+    """The arrays WebGL draws a :class:`Drawing` from (indexed: see the module notes).
 
     Positions are float32; colours are bytes (uint8, 0 .. 255), drawn as
-    normalized attributes, a quarter of the bytes of float colours.
+    normalized attributes, a quarter of the bytes of float colours; indices
+    are uint32 (one dtype always: WebGL keeps a buffer's index type).
 
     Attributes
     ----------
-    position : (3T, 3) float32
-        Three rows per triangle: its corners.
-    color : (3T, 3) uint8
-        The colour of the triangle's face, on its three rows.
-    edge_position : (2S, 3) float32
-        Two rows per segment: its ends.
-    edge_color : (2S, 3) uint8
+    position : (P, 3) float32
+        The rows the triangles are drawn from.
+    color : (P, 3) uint8
+        The colour of every row: a triangle takes the colour of its face.
+    index : (3T,) uint32
+        Triangle ``t`` is rows ``index[3t : 3t + 3]`` of ``position``.
+    edge_position : (Q, 3) float32
+    edge_color : (Q, 3) uint8
+    edge_index : (2S,) uint32
+        Segment ``s`` joins rows ``edge_index[2s]`` and ``edge_index[2s + 1]``.
     point_position : (k, 3) float32
     point_color : (k, 3) uint8
     edge_count, point_count : int
         S and k.  WebGL buffers are never empty: no triangle, segment or
-        point becomes one hidden point, and these counts say how many there
-        really are.
+        point becomes one hidden point (and a degenerate triangle or
+        segment on it), and these counts say how many there really are.
     """
 
     position: NDArray[np.float32]
     color: NDArray[np.uint8]
+    index: NDArray[np.uint32]
     edge_position: NDArray[np.float32]
     edge_color: NDArray[np.uint8]
+    edge_index: NDArray[np.uint32]
     point_position: NDArray[np.float32]
     point_color: NDArray[np.uint8]
     edge_count: int
     point_count: int
 
+    def triangles(self) -> NDArray[np.float32]:
+        """(T, 3, 3) float32: the corners of every triangle drawn."""
+        return self.position[self.index].reshape(-1, 3, 3)
+
+    def triangle_colors(self) -> NDArray[np.uint8]:
+        """(T, 3, 3) uint8: the colour of every triangle's corners."""
+        return self.color[self.index].reshape(-1, 3, 3)
+
+    def segments(self) -> NDArray[np.float32]:
+        """(S, 2, 3) float32: the ends of every segment drawn (no placeholder)."""
+        return self.edge_position[self.edge_index].reshape(-1, 2, 3)[: self.edge_count]
+
+
+def _counting(n: int, width: int) -> NDArray[np.uint32]:
+    """The index of unindexed rows: 0 .. n - 1 (a degenerate primitive on row 0 if n is 0)."""
+    return np.arange(n, dtype=np.uint32) if n else np.zeros(width, np.uint32)
+
+
+def _index(rows: NDArray) -> NDArray[np.uint32]:
+    """Row indices as a flat, writeable uint32 array (WebGL's widest index type)."""
+    if rows.size and int(rows.max()) >= 2**32:
+        raise ValueError(f"{int(rows.max()) + 1:,} rows are more than a WebGL index can address")
+    return rows.astype(np.uint32).reshape(-1)
+
 
 def buffers(d: Drawing) -> Buffers:
-    """The WebGL arrays of a drawing (see :class:`Buffers`)."""
+    """The WebGL arrays of a drawing (see :class:`Buffers`): three rows per triangle."""
     position = np.asarray(d.vertices, dtype=np.float32)[d.triangles].reshape(-1, 3)
     color = _rows(np.asarray(d.face_colors)[d.triangle_face], "#000000", 0, 3)
     seg = np.asarray(d.segments, dtype=np.float32).reshape(-1, 3)
@@ -247,8 +284,10 @@ def buffers(d: Drawing) -> Buffers:
     return Buffers(
         position=np.ascontiguousarray(position) if len(position) else centre.copy(),
         color=np.ascontiguousarray(color) if len(position) else hidden.copy(),
-        edge_position=seg if len(seg) else np.repeat(centre, 2, axis=0),
-        edge_color=seg_color if len(seg) else np.zeros((2, 3), np.uint8),
+        index=_counting(len(position), 3),
+        edge_position=seg if len(seg) else centre.copy(),
+        edge_color=seg_color if len(seg) else hidden.copy(),
+        edge_index=_counting(len(seg), 2),
         point_position=pts if len(pts) else centre.copy(),
         point_color=pt_color if len(pts) else hidden.copy(),
         edge_count=len(seg) // 2,
@@ -257,13 +296,17 @@ def buffers(d: Drawing) -> Buffers:
 
 
 def mesh_buffers(mesh: Mesh) -> Buffers:
-    """``buffers(drawing(mesh))``, the same arrays bit for bit, straight from the mesh.
+    """The explorer's buffers of a mesh: what ``buffers(drawing(mesh))`` draws, indexed.
 
-    The explorer's path: no float64 copies of the triangles and edges, the
-    positions cast to float32 once and gathered once, the face colours
-    looked up as bytes per face size (one row when every face has the same
-    size).  The fan triangles and edges come from the mesh's connectivity
-    caches, which the dual of a dual shares with the mesh it came from.
+    The same triangles with the same colours, in the same order
+    (``triangles()`` and ``triangle_colors()`` of both are equal bit for
+    bit), and the same segments in the same order; but ``position`` is the
+    vertices cast to float32 once per face size present, not three rows per
+    triangle.  When that would be more rows than three per triangle (a mesh
+    with very many face sizes), the rows are per triangle corner as in
+    :func:`buffers`.  The fan triangles and edges come from the mesh's
+    connectivity caches, which the dual of a dual shares with the mesh it
+    came from.
     """
     if not isinstance(mesh, Mesh):
         raise TypeError(f"mesh_buffers() expects a pentanb.Mesh, got {type(mesh).__name__}")
@@ -271,20 +314,34 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
     edges = mesh.edges
     if not len(triangles) or not len(edges):
         return buffers(drawing(mesh))
-    v = np.asarray(mesh.vertices, dtype=np.float32)
-    position = v.take(triangles.reshape(-1), axis=0)
+    v = mesh.vertices.astype(np.float32)  # a copy: the view's array, writeable
+    n = len(v)
     sizes = mesh.face_sizes
     low, high = int(sizes.min()), int(sizes.max())
     table = _bytes(face_rgb(np.arange(low, high + 1)))
-    if low == high:
-        color = _same_rows(table[0], len(position))
+    if low == high:  # one size, one copy of the vertices
+        position, color, index = v, _same_rows(table[0], n), _index(triangles)
     else:
-        color = np.repeat(table[sizes[triangle_face] - low], 3, axis=0)
+        present = np.flatnonzero(np.bincount(sizes - low))  # sizes - low, ascending
+        copies = len(present)
+        if copies * n <= 3 * len(triangles):
+            slot = np.zeros(high - low + 1, np.int64)
+            slot[present] = np.arange(copies)
+            position = np.tile(v, (copies, 1))
+            color = np.repeat(table[present], n, axis=0)
+            shift = slot[sizes[triangle_face] - low] * n
+            index = _index(triangles + shift[:, None])
+        else:  # three rows per triangle corner
+            position = v.take(triangles.reshape(-1), axis=0)
+            color = np.repeat(table[sizes[triangle_face] - low], 3, axis=0)
+            index = _counting(len(position), 3)
     return Buffers(
         position=position,
         color=color,
-        edge_position=v.take(edges.reshape(-1), axis=0),
-        edge_color=_rows(None, EDGE_COLOR, len(edges), 2),
+        index=index,
+        edge_position=v,
+        edge_color=_same_rows(_bytes(hex_to_rgb(EDGE_COLOR)), n),
+        edge_index=_index(edges),
         point_position=v[:1].copy(),
         point_color=np.zeros((1, 3), np.uint8),
         edge_count=len(edges),

@@ -176,7 +176,7 @@ def _set_array(attribute, array) -> None:
 
 
 def _replace_pair(position, new_position, color, new_color) -> None:
-    """Replace a position and a colour buffer, the longer array first.
+    """Replace a position and a colour buffer (unindexed), the longer array first.
 
     Growing, the colours go first; shrinking, the positions: at no moment is
     the position buffer longer than the colour buffer it is drawn with.
@@ -185,6 +185,24 @@ def _replace_pair(position, new_position, color, new_color) -> None:
         _set_array(color, new_color)
         _set_array(position, new_position)
     else:
+        _set_array(position, new_position)
+        _set_array(color, new_color)
+
+
+def _replace(position, new_position, color, new_color, index, new_index) -> None:
+    """Replace the arrays of an indexed geometry so that no index outruns the rows.
+
+    Growing, the colours go first, then the positions, then the index;
+    shrinking, the index first, then the positions, then the colours: at no
+    moment does the index point past the rows of either attribute, nor
+    (between them) the position buffer outrun the colour buffer.
+    """
+    if len(new_position) >= len(position.array):
+        _set_array(color, new_color)
+        _set_array(position, new_position)
+        _set_array(index, new_index)
+    else:
+        _set_array(index, new_index)
         _set_array(position, new_position)
         _set_array(color, new_color)
 
@@ -233,8 +251,13 @@ class MeshView(W.VBox):
             # colours are bytes, read by WebGL as normalized values in [0, 1]
             return P3.BufferAttribute(array=a, normalized=a.dtype == np.uint8)
 
+        # pythreejs hands an attribute named "index" to three.js's setIndex()
         self.face_geometry = P3.BufferGeometry(
-            attributes={"position": attr(b.position), "color": attr(b.color)},
+            attributes={
+                "position": attr(b.position),
+                "color": attr(b.color),
+                "index": attr(b.index),
+            },
         )
         self.face_material = P3.MeshPhongMaterial(
             vertexColors="VertexColors",
@@ -252,7 +275,11 @@ class MeshView(W.VBox):
         )
 
         self.edge_geometry = P3.BufferGeometry(
-            attributes={"position": attr(b.edge_position), "color": attr(b.edge_color)}
+            attributes={
+                "position": attr(b.edge_position),
+                "color": attr(b.edge_color),
+                "index": attr(b.edge_index),
+            }
         )
         self.edges = P3.LineSegments(
             self.edge_geometry,
@@ -403,8 +430,10 @@ class MeshView(W.VBox):
         pa = self.point_geometry.attributes
         # the position buffer sets how many vertices are drawn: never let it
         # be longer than the colour buffer, not even between two messages
-        _replace_pair(fa["position"], b.position, fa["color"], b.color)
-        _replace_pair(ea["position"], b.edge_position, ea["color"], b.edge_color)
+        _replace(fa["position"], b.position, fa["color"], b.color, fa["index"], b.index)
+        _replace(
+            ea["position"], b.edge_position, ea["color"], b.edge_color, ea["index"], b.edge_index
+        )
         _replace_pair(pa["position"], b.point_position, pa["color"], b.point_color)
         self.points.visible = bool(b.point_count)
         self._edges_present = bool(b.edge_count)
