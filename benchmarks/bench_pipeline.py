@@ -21,6 +21,11 @@ measured in this run, as a ratio or a per-face figure with its target:
    trimesh's ``export`` and ``load`` (at most 1.0x), and the peak memory while
    reading over the size of the arrays read (at most 3x);
 
+When numba is installed (``pip install -e .[jit]``), the rows of 2., 3. and
+4.'s time ratio are measured twice, alternating run by run: the numpy path
+and the optional compiled kernels (:mod:`pentanb._jit`), the latter marked
+"compiled kernels".  Every other row is the numpy path.
+
 Two diagnoses ride along, without targets: page faults (memory the kernel
 hands over fresh) per slider move and per 1,000 faces of the pipeline, with
 the per-face ratio of 4. again in a child process whose glibc malloc keeps
@@ -62,7 +67,11 @@ from pathlib import Path
 import numpy as np
 
 import pentanb as pb
+from pentanb import _jit
 from pentanb.subdivision import default_max_bytes
+
+#: the optional compiled kernels (numba) can be measured beside the numpy path
+COMPILED = _jit.available()
 
 CLOCKS = {"wall": time.perf_counter, "cpu": time.process_time}
 
@@ -189,6 +198,19 @@ def pipeline(v, f):
     return pb.smooth(pb.pentagonalize(pb.Mesh(v, f)), duals=2)
 
 
+def on_path(compiled: bool, fn: Callable[[], object]) -> Callable[[], object]:
+    """``fn`` run with the compiled kernels on or off (the switch is not timed apart)."""
+
+    def run():
+        _jit.use_jit(compiled)
+        try:
+            return fn()
+        finally:
+            _jit.use_jit(False)
+
+    return run
+
+
 # ---------------------------------------------------------------------- sections
 def speed(table: Table, runs: int, clock) -> dict:
     import trimesh
@@ -210,6 +232,7 @@ def speed(table: Table, runs: int, clock) -> dict:
         {
             "trimesh subdivide_loop": lambda: remesh.subdivide_loop(v, f),
             "pipeline": lambda: pipeline(v, f),
+            **({"pipeline, compiled": on_path(True, lambda: pipeline(v, f))} if COMPILED else {}),
         },
         runs,
         clock,
@@ -234,15 +257,18 @@ def speed(table: Table, runs: int, clock) -> dict:
         1.0,
         note=f"runs {r1.min():.2f}-{r1.max():.2f}",
     )
-    r2 = np.array(t["pipeline"]) / np.array(t["trimesh subdivide_loop"])
-    table.add(
-        sec,
-        "2. smooth(pentagonalize(Mesh(V, F)), 2) / subdivide_loop",
-        median(r2),
-        "x",
-        0.25,
-        note=f"{len(r2)} runs: {', '.join(f'{x:.3f}' for x in sorted(r2))}",
-    )
+    for case, suffix in (("pipeline", ""), ("pipeline, compiled", ", compiled kernels")):
+        if case not in t:
+            continue
+        r2 = np.array(t[case]) / np.array(t["trimesh subdivide_loop"])
+        table.add(
+            sec,
+            f"2. smooth(pentagonalize(Mesh(V, F)), 2) / subdivide_loop{suffix}",
+            median(r2),
+            "x",
+            0.25,
+            note=f"{len(r2)} runs: {', '.join(f'{x:.3f}' for x in sorted(r2))}",
+        )
     return {k: [float(x) for x in xs] for k, xs in t.items()}
 
 
@@ -263,32 +289,39 @@ def slider(table: Table, runs: int, clock) -> dict:
     print("\none slider move at 20,480 faces: iterations 0 -> 1 in explore(), two duals")
     out = {}
     sec = "slider move (20,480 faces, explorer)"
+    paths = (False, True) if COMPILED else (False,)
     for name, scheme in pb.SCHEMES.items():
-        times, faults = [], []
+        times: dict[bool, list[float]] = {p: [] for p in paths}
+        faults: dict[bool, list[int]] = {p: [] for p in paths}
         for r in range(runs + 1):
-            e = pb.explore(base, name, iterations=0, duals=2, max_faces=10**6)
-            gc.collect()
-            a = minor_faults()
-            t = clock()
-            e.iterations.value = 1  # the explorer's own path: compute, buffers, legend
-            dt = clock() - t
-            b = minor_faults()
-            assert e.mesh is not None and e.mesh is not base, "no new mesh shown"
-            if r:  # the first is a warm-up
-                times.append(dt)
-                faults.append(b - a)
-            e.close()
-        ms = 1000 * median(times)
+            for compiled in paths:  # numpy and compiled alternate, run after run
+                _jit.use_jit(compiled)
+                e = pb.explore(base, name, iterations=0, duals=2, max_faces=10**6)
+                gc.collect()
+                a = minor_faults()
+                t = clock()
+                e.iterations.value = 1  # the explorer's own path: compute, buffers, legend
+                dt = clock() - t
+                b = minor_faults()
+                assert e.mesh is not None and e.mesh is not base, "no new mesh shown"
+                if r:  # the first is a warm-up
+                    times[compiled].append(dt)
+                    faults[compiled].append(b - a)
+                e.close()
+                _jit.use_jit(False)
         target = 10.0 if scheme.family == "pentagonal" else 15.0
-        table.add(
-            sec,
-            f"3. {name} + 2 duals",
-            ms,
-            "ms",
-            target,
-            note=f"{median(faults):,.0f} page faults",
-        )
-        out[name] = [float(x) for x in times]
+        for compiled in paths:
+            table.add(
+                sec,
+                f"3. {name} + 2 duals" + (", compiled kernels" if compiled else ""),
+                1000 * median(times[compiled]),
+                "ms",
+                target,
+                note=f"{median(faults[compiled]):,.0f} page faults",
+            )
+        out[name] = [float(x) for x in times[False]]
+        if COMPILED:
+            out[name + ", compiled"] = [float(x) for x in times[True]]
     # what a move sends to the browser: the indexed buffers against the three
     # rows per triangle (and two per edge) of the unindexed drawing
     from pentanb.viz.drawing import buffers, drawing, mesh_buffers
@@ -323,19 +356,20 @@ def slider(table: Table, runs: int, clock) -> dict:
         note=f"{ref_ms / ISSUE_TRIMESH_MS:.1f}x the {ISSUE_TRIMESH_MS:g} ms of the issue's machine",
     )
     for name in ("pentagonalize", "preserve_pentagons"):
-        if name in out:
-            table.add(
-                sec,
-                f"{name} + 2 duals / trimesh subdivide()",
-                median(out[name]) * 1000 / ref_ms,
-                "x",
-                note=f"the 10 ms target is {10 / ISSUE_TRIMESH_MS:.2f}x on the issue's machine",
-            )
+        for key, suffix in ((name, ""), (name + ", compiled", ", compiled kernels")):
+            if key in out:
+                table.add(
+                    sec,
+                    f"{name} + 2 duals{suffix} / trimesh subdivide()",
+                    median(out[key]) * 1000 / ref_ms,
+                    "x",
+                    note=f"the 10 ms target is {10 / ISSUE_TRIMESH_MS:.2f}x on the issue's machine",
+                )
     out["trimesh subdivide"] = [float(x) for x in ref]
     return out
 
 
-def linear_times(runs: int, clock) -> dict:
+def linear_times(runs: int, clock, compiled: bool = False) -> dict:
     """Seconds and page faults of the pipeline, small and large alternating, one process."""
     v1, f1 = icosphere(7)
     v2, f2 = icosphere(9)
@@ -345,7 +379,7 @@ def linear_times(runs: int, clock) -> dict:
     def counted(name, v, f):
         def run():
             a = minor_faults()
-            pipeline(v, f)
+            on_path(compiled, lambda: pipeline(v, f))()
             faults[name].append(minor_faults() - a)
 
         return run
@@ -399,6 +433,18 @@ def linear(table: Table, runs: int, clock, clock_name: str) -> dict:
             "",
             note="memory the kernel hands over fresh",
         )
+    if COMPILED:
+        fast = linear_times(runs, clock, compiled=True)
+        s1, l1 = per_face(fast)
+        table.add(
+            sec,
+            "4. per-face time 5,242,880 / 327,680, compiled kernels",
+            l1 / s1,
+            "x",
+            1.3,
+            note=f"{1e6 * s1:.2f} and {1e6 * l1:.2f} us per face",
+        )
+        run["compiled"] = fast
     kept = linear_keeping_freed_memory(runs, clock_name)
     if kept is not None:
         s2, l2 = per_face(kept)
@@ -560,6 +606,7 @@ def main(argv=None) -> int:
     if not args.no_warm:
         np.ones(400_000_000).sum()  # 3.2 GB, touched once and freed
     clock = CLOCKS[args.clock]
+    _jit.use_jit(False)  # the numpy path, except where a row says "compiled kernels"
     if args.linear_times:  # linear()'s child process: the runs it was given
         Path(args.linear_times).write_text(json.dumps(linear_times(args.runs, clock)))
         return 0

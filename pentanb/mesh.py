@@ -38,6 +38,8 @@ from typing import Any, Generic, TypeVar, overload
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from . import _jit
+
 __all__ = ["Mesh", "MeshError", "fan_triangle_corners"]
 
 IntArray = NDArray[np.signedinteger[Any]]
@@ -1427,11 +1429,19 @@ def _face_means(
             )
         return out
     m, d = offsets.size - 1, values.shape[1]
-    out = np.empty((m, d))
     if m == 0:
-        return out
+        return np.empty((m, d))
     if not values.flags.c_contiguous:
         values = np.ascontiguousarray(values)
+    jit = _jit.kernels(corners.size)
+    if jit is not None:  # the same sums in the same order, compiled
+        if k and k < 8:
+            return jit.face_means_uniform(values, corners, k)  # type: ignore[no-any-return]
+        if not k:
+            sizes = np.diff(offsets)
+            if 3 <= int(sizes.min()) and int(sizes.max()) <= 8:
+                return jit.face_means_mixed(values, corners, offsets)  # type: ignore[no-any-return]
+    out = np.empty((m, d))
     if k and k < 8:
         block = _BLOCK
         corner_rows = corners.reshape(m, k)

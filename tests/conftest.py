@@ -11,6 +11,11 @@ from hypothesis import settings
 
 sys.path.insert(0, os.path.dirname(__file__))
 
+# The suite checks the numpy path, pentanb's reference, everywhere (notebook
+# kernels inherit this); tests/test_jit.py switches the optional compiled
+# kernels on and compares them with it.  PENTANB_JIT=1 runs everything compiled.
+os.environ.setdefault("PENTANB_JIT", "0")
+
 # Under CI the property tests draw the same examples on every run (a failure
 # there is reproducible, never luck); elsewhere they explore new ones.
 settings.register_profile("ci", derandomize=True, print_blob=True)

@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .. import _jit
 from ..mesh import Mesh
 from .colors import EDGE_COLOR, face_color, face_label, face_rgb, hex_to_rgb
 
@@ -259,11 +260,10 @@ def _counting(n: int, width: int) -> NDArray[np.uint32]:
     return np.arange(n, dtype=np.uint32) if n else np.zeros(width, np.uint32)
 
 
-def _index(rows: NDArray) -> NDArray[np.uint32]:
-    """Row indices as a flat, writeable uint32 array (WebGL's widest index type)."""
-    if rows.size and int(rows.max()) >= 2**32:
-        raise ValueError(f"{int(rows.max()) + 1:,} rows are more than a WebGL index can address")
-    return rows.astype(np.uint32).reshape(-1)
+def _addressable(rows: int) -> None:
+    """ValueError when a uint32 index cannot address ``rows`` rows."""
+    if rows > 2**32:
+        raise ValueError(f"{rows:,} rows are more than a WebGL index can address")
 
 
 def buffers(d: Drawing) -> Buffers:
@@ -306,45 +306,58 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
     with very many face sizes), the rows are per triangle corner as in
     :func:`buffers`.  The fan triangles and edges come from the mesh's
     connectivity caches, which the dual of a dual shares with the mesh it
-    came from.
+    came from; with the optional compiled kernels (:mod:`pentanb._jit`), on
+    a large mesh, they are written from the faces straight into uint32.
     """
     if not isinstance(mesh, Mesh):
         raise TypeError(f"mesh_buffers() expects a pentanb.Mesh, got {type(mesh).__name__}")
-    triangles, triangle_face = mesh.fan_triangles()
-    edges = mesh.edges
-    if not len(triangles) or not len(edges):
+    sizes = mesh.face_sizes
+    if not mesh.n_faces or int(sizes.min()) < 3:
         return buffers(drawing(mesh))
     v = mesh.vertices.astype(np.float32)  # a copy: the view's array, writeable
     n = len(v)
-    sizes = mesh.face_sizes
     low, high = int(sizes.min()), int(sizes.max())
     table = _bytes(face_rgb(np.arange(low, high + 1)))
-    if low == high:  # one size, one copy of the vertices
-        position, color, index = v, _same_rows(table[0], n), _index(triangles)
+    present = np.flatnonzero(np.bincount(sizes - low))  # sizes - low, ascending
+    copies = len(present)
+    triangles = len(mesh.corners) - 2 * mesh.n_faces
+    jit = _jit.kernels(len(mesh.corners))
+    if copies * n > 3 * triangles:  # more copies than triangle corners: rows per corner
+        tri, tri_face = mesh.fan_triangles()
+        position = v.take(tri.reshape(-1), axis=0)
+        color = np.repeat(table[sizes[tri_face] - low], 3, axis=0)
+        index = _counting(len(position), 3)
     else:
-        present = np.flatnonzero(np.bincount(sizes - low))  # sizes - low, ascending
-        copies = len(present)
-        if copies * n <= 3 * len(triangles):
-            slot = np.zeros(high - low + 1, np.int64)
-            slot[present] = np.arange(copies)
+        if copies == 1:  # one size, one copy of the vertices
+            position, color = v, _same_rows(table[present[0]], n)
+        else:
             position = np.tile(v, (copies, 1))
             color = np.repeat(table[present], n, axis=0)
-            shift = slot[sizes[triangle_face] - low] * n
-            index = _index(triangles + shift[:, None])
-        else:  # three rows per triangle corner
-            position = v.take(triangles.reshape(-1), axis=0)
-            color = np.repeat(table[sizes[triangle_face] - low], 3, axis=0)
-            index = _counting(len(position), 3)
+        _addressable(len(position))
+        slot = np.zeros(high - low + 1, np.int64)
+        slot[present] = np.arange(copies) * n
+        if jit is not None:
+            shift = slot[sizes - low] if copies > 1 else slot[:0]
+            index = jit.fan_index(mesh.corners, mesh.offsets, shift)
+        else:
+            tri, tri_face = mesh.fan_triangles()
+            if copies > 1:
+                tri = tri + slot[sizes[tri_face] - low][:, None]
+            index = tri.astype(np.uint32).reshape(-1)
+    if jit is not None:
+        edge_index = jit.edge_index(mesh.corners, mesh.offsets)
+    else:
+        edge_index = mesh.edges.astype(np.uint32).reshape(-1)
     return Buffers(
         position=position,
         color=color,
         index=index,
         edge_position=v,
         edge_color=_same_rows(_bytes(hex_to_rgb(EDGE_COLOR)), n),
-        edge_index=_index(edges),
+        edge_index=edge_index,
         point_position=v[:1].copy(),
         point_color=np.zeros((1, 3), np.uint8),
-        edge_count=len(edges),
+        edge_count=len(edge_index) // 2,
         point_count=0,
     )
 

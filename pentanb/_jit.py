@@ -1,0 +1,215 @@
+"""Optional compiled kernels (numba) for the loops a slider move and a large pipeline spend most in.
+
+pentanb's reference path is numpy.  When `numba <https://numba.pydata.org>`_
+is installed (``pip install pentanb[jit]``), a few kernels replace whole-array
+passes by one loop each, giving the *same results bit for bit*:
+
+* the mean of the corners of every face (:meth:`pentanb.Mesh.face_centroids`,
+  the dual's vertices), summed in the order the numpy path sums them;
+* the explorer's WebGL index arrays: the fan triangles of every face and
+  the edges, written straight into uint32 (:func:`pentanb.viz.drawing.mesh_buffers`).
+
+They run only on meshes of at least :data:`MIN_CORNERS` corners, where a
+compiled loop pays for itself; smaller meshes never load numba.  The first
+call in a process compiles a kernel (about a second; numba caches the
+machine code on disk, so later processes load it).
+
+Switch them with the environment variable ``PENTANB_JIT`` (``0``: off,
+``1``: on, refused without numba) read at import, or at run time with
+:func:`use_jit`.  ``benchmarks/bench_pipeline.py`` reports both paths.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+__all__ = ["MIN_CORNERS", "available", "enabled", "use_jit", "kernels"]
+
+#: Meshes with fewer corners than this keep the numpy path.
+MIN_CORNERS = 1 << 14
+
+_state: dict[str, Any] = {"on": None, "kernels": None}
+
+
+def available() -> bool:
+    """True when numba can be imported."""
+    try:
+        import numba  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def _require() -> None:
+    if not available():
+        raise ImportError(
+            "the compiled kernels need numba, which is not installed: "
+            "pip install 'pentanb[jit]' (or set PENTANB_JIT=0)"
+        )
+
+
+def enabled() -> bool:
+    """Whether the kernels are used (default: when numba is installed)."""
+    if _state["on"] is None:
+        flag = os.environ.get("PENTANB_JIT", "").strip().lower()
+        if flag in ("0", "false", "no", "off"):
+            _state["on"] = False
+        elif flag in ("1", "true", "yes", "on"):
+            _require()
+            _state["on"] = True
+        elif flag == "":
+            _state["on"] = available()
+        else:
+            raise ValueError(f"PENTANB_JIT must be 0 or 1, got {flag!r}")
+    return bool(_state["on"])
+
+
+def use_jit(on: bool) -> bool:
+    """Use the compiled kernels (True) or the numpy path (False); returns the previous choice.
+
+    Raises
+    ------
+    TypeError
+        ``on`` is not a bool.
+    ImportError
+        ``on`` is True and numba is not installed.
+    """
+    if not isinstance(on, (bool, np.bool_)):
+        raise TypeError(f"use_jit() expects True or False, got {type(on).__name__}")
+    before = enabled()
+    if on:
+        _require()
+    _state["on"] = bool(on)
+    return before
+
+
+def kernels(corners: int) -> Any | None:
+    """The compiled kernels for a mesh of ``corners`` corners, or None (use numpy)."""
+    if corners < MIN_CORNERS or not enabled():
+        return None
+    if _state["kernels"] is None:
+        _state["kernels"] = _compile()
+    return _state["kernels"]
+
+
+def _compile() -> Any:
+    """Define the kernels (numba compiles each on its first call, per argument types)."""
+    import numba
+
+    jit: Callable = numba.njit(cache=True, nogil=True)
+
+    @jit
+    def face_means_uniform(values, corners, k):  # pragma: no cover - compiled
+        # acc = v[c0]; acc += v[c1]; ...; acc / k: the numpy path's order,
+        # every coordinate on its own (three at once for points)
+        m, d = corners.size // k, values.shape[1]
+        out = np.empty((m, d))
+        if d == 3:
+            for f in range(m):
+                c = corners[f * k]
+                x, y, z = values[c, 0], values[c, 1], values[c, 2]
+                for j in range(1, k):
+                    c = corners[f * k + j]
+                    x += values[c, 0]
+                    y += values[c, 1]
+                    z += values[c, 2]
+                out[f, 0], out[f, 1], out[f, 2] = x / k, y / k, z / k
+            return out
+        for f in range(m):
+            for i in range(d):
+                acc = values[corners[f * k], i]
+                for j in range(1, k):
+                    acc += values[corners[f * k + j], i]
+                out[f, i] = acc / k
+        return out
+
+    @jit
+    def face_means_mixed(values, corners, offsets):  # pragma: no cover - compiled
+        # faces of at most 8 corners: (v[c1] + v[c2] + ... ) + v[c0], over the size,
+        # as np.add.reduceat adds them (the numpy path's order)
+        m, d = offsets.size - 1, values.shape[1]
+        out = np.empty((m, d))
+        if d == 3:
+            for f in range(m):
+                a, b = offsets[f], offsets[f + 1]
+                c = corners[a + 1]
+                x, y, z = values[c, 0], values[c, 1], values[c, 2]
+                for h in range(a + 2, b):
+                    c = corners[h]
+                    x += values[c, 0]
+                    y += values[c, 1]
+                    z += values[c, 2]
+                c = corners[a]
+                x += values[c, 0]
+                y += values[c, 1]
+                z += values[c, 2]
+                n = b - a
+                out[f, 0], out[f, 1], out[f, 2] = x / n, y / n, z / n
+            return out
+        for f in range(m):
+            a, b = offsets[f], offsets[f + 1]
+            for i in range(d):
+                acc = values[corners[a + 1], i]
+                for h in range(a + 2, b):
+                    acc += values[corners[h], i]
+                acc += values[corners[a], i]
+                out[f, i] = acc / (b - a)
+        return out
+
+    @jit
+    def fan_index(corners, offsets, shift):  # pragma: no cover - compiled
+        # face f's triangles (c0, c_{j+1}, c_{j+2}), each vertex plus shift[f]
+        m = offsets.size - 1
+        T = 0
+        for f in range(m):
+            T += max(offsets[f + 1] - offsets[f] - 2, 0)
+        out = np.empty(3 * T, np.uint32)
+        t = 0
+        for f in range(m):
+            a, b = offsets[f], offsets[f + 1]
+            s = shift[f] if shift.size else 0
+            first = corners[a] + s
+            for c in range(a + 1, b - 1):
+                out[t] = first
+                out[t + 1] = corners[c] + s
+                out[t + 2] = corners[c + 1] + s
+                t += 3
+        return out
+
+    @jit
+    def edge_index(corners, offsets):  # pragma: no cover - compiled
+        # every edge once, as (tail, head) of its half-edge with tail < head,
+        # in half-edge order (Mesh.edges)
+        m = offsets.size - 1
+        E = 0
+        for f in range(m):
+            a, b = offsets[f], offsets[f + 1]
+            for c in range(a, b):
+                h = c + 1 if c + 1 < b else a
+                if corners[c] < corners[h]:
+                    E += 1
+        out = np.empty(2 * E, np.uint32)
+        e = 0
+        for f in range(m):
+            a, b = offsets[f], offsets[f + 1]
+            for c in range(a, b):
+                h = c + 1 if c + 1 < b else a
+                if corners[c] < corners[h]:
+                    out[e] = corners[c]
+                    out[e + 1] = corners[h]
+                    e += 2
+        return out
+
+    class Kernels:
+        pass
+
+    k = Kernels()
+    k.face_means_uniform = face_means_uniform  # type: ignore[attr-defined]
+    k.face_means_mixed = face_means_mixed  # type: ignore[attr-defined]
+    k.fan_index = fan_index  # type: ignore[attr-defined]
+    k.edge_index = edge_index  # type: ignore[attr-defined]
+    return k

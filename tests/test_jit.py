@@ -1,0 +1,205 @@
+"""The optional compiled kernels (:mod:`pentanb._jit`) against the numpy path, bit for bit.
+
+The rest of the suite runs the numpy path (``tests/conftest.py`` sets
+``PENTANB_JIT=0``); here the kernels are switched on for meshes of every
+size and must give the same arrays, byte for byte.  Without numba these
+tests are skipped, except on CI, where numba is in the test extra and its
+absence fails them.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import sys
+
+import numpy as np
+import pytest
+from browser_support import skip_or_fail
+from helpers import prism
+
+import pentanb
+from pentanb import _jit, shapes
+from pentanb.mesh import _face_means
+from pentanb.viz import drawing
+
+
+@pytest.fixture
+def compiled(monkeypatch):
+    """The kernels, used for meshes of any size for the test's duration."""
+    if not _jit.available():
+        skip_or_fail("numba is not installed (pip install 'pentanb[jit]')")
+    monkeypatch.setattr(_jit, "MIN_CORNERS", 0)
+    before = _jit.use_jit(True)
+    yield _jit.kernels(0)
+    _jit.use_jit(before)
+
+
+def both(fn):
+    """``fn()`` by the numpy path, then by the kernels."""
+    _jit.use_jit(False)
+    a = fn()
+    _jit.use_jit(True)
+    return a, fn()
+
+
+def same_bytes(a: np.ndarray, b: np.ndarray) -> bool:
+    """Equal dtype, shape and bytes (so -0.0 and 0.0 differ, and every NaN payload)."""
+    return a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()
+
+
+def fresh(m: pentanb.Mesh) -> pentanb.Mesh:
+    """The same mesh without its caches."""
+    return pentanb.Mesh.from_csr(m.vertices, m.corners, m.offsets, validate=False)
+
+
+# -- the face means ------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("d", [1, 3, 5])
+def test_face_means_are_the_numpy_sums_bit_for_bit(corpus_mesh, compiled, d):
+    rng = np.random.default_rng(d)
+    values = rng.standard_normal((corpus_mesh.n_vertices, d)) * 10.0 ** rng.integers(
+        -8, 8, (corpus_mesh.n_vertices, 1)
+    )
+    k = corpus_mesh._uniform_size
+    a, b = both(lambda: _face_means(values, corpus_mesh.corners, corpus_mesh.offsets, k, 1.0))
+    assert same_bytes(a, b)
+
+
+def test_face_centroids_of_every_scheme_are_the_same_compiled(compiled):
+    base = shapes.icosahedron()
+    for name in pentanb.SCHEMES:
+        m = pentanb.subdivide(base, name, 1, 0)
+        a, b = both(lambda m=m: fresh(m).face_centroids)
+        assert same_bytes(a, b), name
+
+
+def test_the_kernels_add_in_the_numpy_paths_order(compiled):
+    # 1e16 + 1 + 1 is 1e16 left to right but 1e16 + 2 with the ones added first:
+    # the expected values are Python's sums in the order each path documents
+    big = 1e16
+    values = np.array([[big], [1.0], [1.0], [1.0]])
+    # one size (uniform path): v[c0] + v[c1] + v[c2], left to right
+    uniform = _face_means(values, np.array([0, 1, 2, 3, 1, 2]), np.array([0, 3, 6]), 3, big)
+    assert uniform[0, 0] == ((big + 1.0) + 1.0) / 3 and uniform[1, 0] == ((1.0 + 1.0) + 1.0) / 3
+    # mixed sizes: (v[c1] + v[c2] + ...) + v[c0], as np.add.reduceat adds them
+    corners, offsets = np.array([0, 1, 2, 0, 1, 2, 3]), np.array([0, 3, 7])
+    mixed = _face_means(values, corners, offsets, 0, big)
+    assert mixed[0, 0] == ((1.0 + 1.0) + big) / 3
+    assert mixed[1, 0] == (((1.0 + 1.0) + 1.0) + big) / 4
+    # and the two orders do differ here, so the test can tell them apart
+    assert ((big + 1.0) + 1.0) / 3 != ((1.0 + 1.0) + big) / 3
+    _jit.use_jit(False)
+    assert same_bytes(mixed, _face_means(values, corners, offsets, 0, big))
+
+
+def test_faces_of_more_than_eight_corners_keep_the_numpy_sums(compiled, monkeypatch):
+    m = prism(12)  # two 12-gons and twelve squares: numpy's pairwise sums for the 12-gons
+
+    def refuse(*args):
+        raise AssertionError("the mixed kernel ran on a face of more than 8 corners")
+
+    monkeypatch.setattr(compiled, "face_means_mixed", refuse)
+    a, b = both(lambda: fresh(m).face_centroids)
+    assert same_bytes(a, b)
+
+
+def test_small_meshes_never_load_the_kernels(monkeypatch):
+    monkeypatch.setitem(_jit._state, "on", True)
+    monkeypatch.setitem(_jit._state, "kernels", None)
+
+    def refuse():
+        raise AssertionError("numba was loaded for a small mesh")
+
+    monkeypatch.setattr(_jit, "_compile", refuse)
+    m = pentanb.pentagonalize(shapes.cube())
+    assert len(m.corners) < _jit.MIN_CORNERS
+    assert np.isfinite(fresh(m).face_centroids).all()
+    assert drawing.mesh_buffers(fresh(m)).index.size == 3 * (len(m.corners) - 2 * m.n_faces)
+    with pytest.raises(AssertionError, match="small mesh"):
+        _jit.kernels(_jit.MIN_CORNERS)
+
+
+# -- the WebGL index arrays ----------------------------------------------------------
+
+
+def test_edge_index_is_the_meshs_edges(corpus_mesh, compiled):
+    got = compiled.edge_index(corpus_mesh.corners, corpus_mesh.offsets)
+    assert got.dtype == np.uint32
+    assert np.array_equal(got.reshape(-1, 2), corpus_mesh.edges)
+
+
+def same_buffers(a: drawing.Buffers, b: drawing.Buffers) -> None:
+    for f in dataclasses.fields(a):
+        x, y = getattr(a, f.name), getattr(b, f.name)
+        if isinstance(x, np.ndarray):
+            assert same_bytes(x, y), f.name
+            assert y.flags.writeable and y.flags.c_contiguous, f.name
+        else:
+            assert x == y, f.name
+
+
+@pytest.mark.parametrize("text", ["C", "dgC", "k4P6", "ddgT", "tI", "bbP5", "pD"])
+def test_mesh_buffers_are_the_same_compiled(text, compiled):
+    m = pentanb.conway(text)
+    a, b = both(lambda: drawing.mesh_buffers(fresh(m)))
+    same_buffers(a, b)
+
+
+def test_mesh_buffers_of_every_scheme_with_duals_are_the_same_compiled(compiled):
+    base = shapes.octahedron()
+    for name in pentanb.SCHEMES:
+        m = pentanb.subdivide(base, name, 2, 2)
+        a, b = both(lambda m=m: drawing.mesh_buffers(fresh(m)))
+        same_buffers(a, b)
+
+
+def test_buffers_comparison_fails_on_a_moved_vertex_or_another_fan(compiled):
+    m = shapes.cube()
+    a = drawing.mesh_buffers(m)
+    moved = m.with_vertices(m.vertices + np.eye(8, 3) * 1e-3)
+    with pytest.raises(AssertionError, match="position"):
+        same_buffers(a, drawing.mesh_buffers(moved))
+    # the same squares fanned from their second corner: other triangles
+    turned = np.roll(m.corners.reshape(-1, 4), -1, axis=1).reshape(-1)
+    other = pentanb.Mesh.from_csr(m.vertices, turned, m.offsets)
+    with pytest.raises(AssertionError, match="index"):
+        same_buffers(a, drawing.mesh_buffers(other))
+
+
+def test_subdivision_is_the_same_compiled(compiled):
+    for name in ("pentagonalize", "preserve_pentagons", "honeycomb"):
+        a, b = both(lambda name=name: pentanb.subdivide(shapes.cube(), name, 2, 2))
+        assert same_bytes(a.vertices, b.vertices) and same_bytes(a.corners, b.corners), name
+
+
+# -- the switch ----------------------------------------------------------------------
+
+
+def test_use_jit_takes_a_bool():
+    with pytest.raises(TypeError, match="use_jit\\(\\) expects True or False, got int"):
+        _jit.use_jit(1)  # type: ignore[arg-type]
+
+
+def test_without_numba_the_kernels_are_refused_by_name(monkeypatch):
+    monkeypatch.setitem(sys.modules, "numba", None)  # import numba raises ImportError
+    monkeypatch.setitem(_jit._state, "on", None)
+    assert not _jit.available()
+    with pytest.raises(ImportError, match=r"pip install 'pentanb\[jit\]'"):
+        _jit.use_jit(True)
+    monkeypatch.setenv("PENTANB_JIT", "")
+    assert not _jit.enabled()  # default: off without numba, numpy path
+    assert _jit.kernels(10**9) is None
+    monkeypatch.setitem(_jit._state, "on", None)
+    monkeypatch.setenv("PENTANB_JIT", "1")
+    with pytest.raises(ImportError, match="numba, which is not installed"):
+        _jit.enabled()
+
+
+def test_the_environment_switch_is_read_strictly(monkeypatch):
+    monkeypatch.setitem(_jit._state, "on", None)
+    monkeypatch.setenv("PENTANB_JIT", "maybe")
+    with pytest.raises(ValueError, match="PENTANB_JIT must be 0 or 1, got 'maybe'"):
+        _jit.enabled()
+    monkeypatch.setenv("PENTANB_JIT", "0")
+    assert not _jit.enabled() and _jit.kernels(10**9) is None
