@@ -1436,11 +1436,11 @@ def _face_means(
     jit = _jit.kernels(corners.size)
     if jit is not None:  # the same sums in the same order, compiled
         if k and k < 8:
-            return jit.face_means_uniform(values, corners, k)  # type: ignore[no-any-return]
+            return jit.face_means_uniform(values, corners, k)
         if not k:
             sizes = np.diff(offsets)
             if 3 <= int(sizes.min()) and int(sizes.max()) <= 8:
-                return jit.face_means_mixed(values, corners, offsets)  # type: ignore[no-any-return]
+                return jit.face_means_mixed(values, corners, offsets)
     out = np.empty((m, d))
     if k and k < 8:
         block = _BLOCK
