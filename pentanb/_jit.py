@@ -183,26 +183,60 @@ def _compile() -> Any:
     @jit
     def edge_index(corners, offsets):  # pragma: no cover - compiled
         # every edge once, as (tail, head) of its half-edge with tail < head,
-        # in half-edge order (Mesh.edges)
+        # in half-edge order (Mesh.edges); written without branches (the
+        # comparison is a coin toss), the slot advancing only for a forward one
         m = offsets.size - 1
         E = 0
         for f in range(m):
             a, b = offsets[f], offsets[f + 1]
-            for c in range(a, b):
-                h = c + 1 if c + 1 < b else a
-                if corners[c] < corners[h]:
-                    E += 1
-        out = np.empty(2 * E, np.uint32)
+            for c in range(a, b - 1):
+                E += corners[c] < corners[c + 1]
+            E += corners[b - 1] < corners[a]
+        out = np.empty(2 * E + 2, np.uint32)
         e = 0
         for f in range(m):
             a, b = offsets[f], offsets[f + 1]
             for c in range(a, b):
                 h = c + 1 if c + 1 < b else a
-                if corners[c] < corners[h]:
-                    out[e] = corners[c]
-                    out[e + 1] = corners[h]
-                    e += 2
+                out[e] = corners[c]
+                out[e + 1] = corners[h]
+                e += 2 * (corners[c] < corners[h])
+        return out[: 2 * E]
+
+    @jit
+    def start_at_max(ring, offsets, k):  # pragma: no cover - compiled
+        # every ring (CSR, or k each when offsets is empty) turned to start at
+        # its largest entry, order kept
+        out = np.empty_like(ring)
+        n = ring.size // k if offsets.size == 0 else offsets.size - 1
+        for v in range(n):
+            if offsets.size == 0:
+                a, b = v * k, v * k + k
+            else:
+                a, b = offsets[v], offsets[v + 1]
+            top = a
+            for i in range(a + 1, b):
+                if ring[i] > ring[top]:
+                    top = i
+            j = a
+            for i in range(top, b):
+                out[j] = ring[i]
+                j += 1
+            for i in range(a, top):
+                out[j] = ring[i]
+                j += 1
         return out
+
+    @jit
+    def edge_points(vertices, edges, t, out):  # pragma: no cover - compiled
+        # point j of edge e: a * (1 - t[j]) + b * t[j], as the numpy path rounds it
+        k = t.size
+        for e in range(edges.shape[0]):
+            a, b = edges[e, 0], edges[e, 1]
+            for j in range(k):
+                s, w = 1.0 - t[j], t[j]
+                for i in range(3):
+                    out[e * k + j, i] = vertices[a, i] * s + vertices[b, i] * w
 
     class Kernels:
         pass
@@ -212,4 +246,6 @@ def _compile() -> Any:
     k.face_means_mixed = face_means_mixed  # type: ignore[attr-defined]
     k.fan_index = fan_index  # type: ignore[attr-defined]
     k.edge_index = edge_index  # type: ignore[attr-defined]
+    k.start_at_max = start_at_max  # type: ignore[attr-defined]
+    k.edge_points = edge_points  # type: ignore[attr-defined]
     return k

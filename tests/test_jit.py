@@ -167,10 +167,56 @@ def test_buffers_comparison_fails_on_a_moved_vertex_or_another_fan(compiled):
         same_buffers(a, drawing.mesh_buffers(other))
 
 
-def test_subdivision_is_the_same_compiled(compiled):
-    for name in ("pentagonalize", "preserve_pentagons", "honeycomb"):
-        a, b = both(lambda name=name: pentanb.subdivide(shapes.cube(), name, 2, 2))
-        assert same_bytes(a.vertices, b.vertices) and same_bytes(a.corners, b.corners), name
+@pytest.mark.parametrize("name", list(pentanb.SCHEMES))
+def test_subdivision_is_the_same_compiled(compiled, name):
+    # positions (edge points, centroids), faces and rings (start_at_max) of
+    # every scheme, two iterations with their duals
+    a, b = both(lambda: pentanb.subdivide(shapes.cube(), name, 2, 2))
+    for attr in ("vertices", "corners", "offsets"):
+        assert same_bytes(getattr(a, attr), getattr(b, attr)), attr
+    for x, y in zip(a.vertex_ring, b.vertex_ring):
+        assert same_bytes(x, y)
+    assert same_bytes(a.twin, b.twin)
+
+
+def test_start_at_max_is_the_numpy_permutation(compiled):
+    from pentanb.schemes._build import start_at_max
+
+    rng = np.random.default_rng(5)
+    sizes = rng.integers(1, 9, 500)
+    offsets = np.concatenate([[0], np.cumsum(sizes)])
+    ring = rng.permutation(offsets[-1])
+    for dt in (np.int32, np.int64):
+        a, b = both(lambda dt=dt: start_at_max(ring.astype(dt), offsets.astype(dt)))
+        assert same_bytes(a, b)
+        # every ring starts at its largest entry and keeps its cyclic order
+        _jit.use_jit(True)
+        for v in (0, 7, 499):
+            got = b[offsets[v] : offsets[v + 1]]
+            r = ring[offsets[v] : offsets[v + 1]]
+            assert got[0] == r.max()
+            assert np.array_equal(got, np.roll(r, -int(r.argmax())))
+    rows = rng.permutation(600)
+    a, b = both(lambda: start_at_max(rows, None, 4))
+    assert same_bytes(a, b)
+
+
+@pytest.mark.parametrize("k", [1, 2, 3])
+def test_edge_points_are_the_numpy_points(compiled, k):
+    from pentanb.schemes._build import edge_points
+
+    rng = np.random.default_rng(k)
+    m = shapes.torus()
+    moved = m.with_vertices(m.vertices * rng.uniform(0.1, 1e6, (m.n_vertices, 1)))
+    a, b = both(lambda: edge_points(fresh(moved), k))
+    assert same_bytes(a, b)
+    t = (np.arange(k) + 1.0) / (k + 1)
+    e = moved.edges
+    expect = (
+        moved.vertices[e[:, 0], None] * (1 - t[:, None])
+        + moved.vertices[e[:, 1], None] * (t[:, None])
+    )
+    assert np.array_equal(b, expect.reshape(-1, 3))
 
 
 # -- the switch ----------------------------------------------------------------------

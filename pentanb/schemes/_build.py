@@ -13,6 +13,7 @@ from typing import Any, TypeVar
 
 import numpy as np
 
+from .. import _jit
 from ..mesh import _SAFE_EXTENT, Mesh, MeshError, Rings, _index_dtype
 
 _Op = TypeVar("_Op", bound=Callable[..., Mesh])
@@ -49,6 +50,10 @@ def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray
     res = np.empty((E * k, 3)) if out is None else out
     rows = res.reshape(E, k, 3)
     t = np.arange(1, k + 1, dtype=np.float64) / (k + 1)
+    jit = _jit.kernels(2 * E)
+    if jit is not None and v.flags.c_contiguous:  # the same products and sums, compiled
+        jit.edge_points(v, edges, t, res)
+        return res
     for a in range(0, E, BLOCK):
         ends = edges[a : a + BLOCK]
         pa, pb = v.take(ends[:, 0], axis=0), v.take(ends[:, 1], axis=0)
@@ -146,6 +151,10 @@ def start_at_max(ring: np.ndarray, offsets: np.ndarray | None, k: int = 0) -> np
     (H,) int
         A new array.
     """
+    jit = _jit.kernels(ring.size)
+    if jit is not None:  # the same permutation, compiled
+        csr = ring[:0] if offsets is None else offsets  # empty: k half-edges each
+        return jit.start_at_max(ring, csr, max(k, 1))
     if k:
         rows = ring.reshape(-1, k)
         first = rows.argmax(axis=1)
