@@ -21,7 +21,9 @@ Switch them with the environment variable ``PENTANB_JIT`` (``0``: off,
 
 from __future__ import annotations
 
+import importlib.util
 import os
+import warnings
 from collections.abc import Callable
 from typing import Any
 
@@ -36,12 +38,11 @@ _state: dict[str, Any] = {"on": None, "kernels": None}
 
 
 def available() -> bool:
-    """True when numba can be imported."""
+    """True when numba is installed (found, not imported: importing it takes a while)."""
     try:
-        import numba  # noqa: F401
-    except ImportError:
+        return importlib.util.find_spec("numba") is not None
+    except (ImportError, ValueError):  # a module "numba" set to None, or without a spec
         return False
-    return True
 
 
 def _require() -> None:
@@ -92,7 +93,17 @@ def kernels(corners: int) -> Any | None:
     if corners < MIN_CORNERS or not enabled():
         return None
     if _state["kernels"] is None:
-        _state["kernels"] = _compile()
+        try:
+            _state["kernels"] = _compile()
+        except ImportError as err:  # installed but broken (e.g. built for another numpy)
+            warnings.warn(
+                f"numba is installed but could not be loaded ({err}); pentanb uses its "
+                "numpy path (set PENTANB_JIT=0 to skip the attempt)",
+                RuntimeWarning,
+                stacklevel=2,
+            )
+            _state["on"] = False
+            return None
     return _state["kernels"]
 
 

@@ -242,6 +242,21 @@ def test_without_numba_the_kernels_are_refused_by_name(monkeypatch):
         _jit.enabled()
 
 
+def test_a_numba_that_fails_to_load_falls_back_to_numpy_with_a_warning(monkeypatch):
+    def broken():
+        raise ImportError("numba built for another numpy")
+
+    monkeypatch.setitem(_jit._state, "on", True)
+    monkeypatch.setitem(_jit._state, "kernels", None)
+    monkeypatch.setattr(_jit, "_compile", broken)
+    with pytest.warns(RuntimeWarning, match="could not be loaded .numba built for another"):
+        assert _jit.kernels(10**9) is None
+    assert not _jit.enabled()
+    m = pentanb.pentagonalize(shapes.cube())
+    monkeypatch.setattr(_jit, "MIN_CORNERS", 0)
+    assert np.array_equal(fresh(m).face_centroids, m.face_centroids)
+
+
 def test_the_environment_switch_is_read_strictly(monkeypatch):
     monkeypatch.setitem(_jit._state, "on", None)
     monkeypatch.setenv("PENTANB_JIT", "maybe")
