@@ -249,6 +249,46 @@ def _compile() -> Any:
                 for i in range(3):
                     out[e * k + j, i] = vertices[a, i] * s + vertices[b, i] * w
 
+    @jit
+    def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
+        # twin of every half-edge u -> w: the one half-edge w -> u, found among
+        # w's outgoing half-edges (a counting sort by tail); an empty array when
+        # some half-edge has no such partner or more than one, or is a loop
+        # (exactly when the numpy path's sorted keys fail to pair)
+        H = tail.size
+        fail = np.empty(0, tail.dtype)
+        if head.size == 0:  # faces of k corners: heads from the tails
+            head = np.empty_like(tail)
+            for h in range(H):
+                head[h] = tail[h + 1] if (h + 1) % k else tail[h + 1 - k]
+        start = np.zeros(n + 1, np.int64)
+        for h in range(H):
+            if tail[h] < 0 or tail[h] >= n:  # out of range: no pairing (and no stray write)
+                return fail
+            start[tail[h] + 1] += 1
+        for v in range(n):
+            start[v + 1] += start[v]
+        fill = start[:-1].copy()
+        out_of = np.empty(H, tail.dtype)  # half-edges by tail
+        for h in range(H):
+            u = tail[h]
+            out_of[fill[u]] = h
+            fill[u] += 1
+        twin = np.empty(H, tail.dtype)
+        for h in range(H):
+            u, w = tail[h], head[h]
+            if u == w:
+                return fail
+            found = 0
+            for i in range(start[w], start[w + 1]):
+                g = out_of[i]
+                if head[g] == u:
+                    twin[h] = g
+                    found += 1
+            if found != 1:
+                return fail
+        return twin
+
     class Kernels:
         pass
 
@@ -259,4 +299,5 @@ def _compile() -> Any:
     k.edge_index = edge_index  # type: ignore[attr-defined]
     k.start_at_max = start_at_max  # type: ignore[attr-defined]
     k.edge_points = edge_points  # type: ignore[attr-defined]
+    k.pair_twins = pair_twins  # type: ignore[attr-defined]
     return k

@@ -1316,6 +1316,10 @@ def _pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) -
     H = tail.size
     if H % 2:
         return None
+    jit = _jit.kernels(H)
+    if jit is not None and n > 0:  # each half-edge's partner among its head's (compiled)
+        got = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
+        return got if got.size == H else None
     twin = np.empty(H, dtype=tail.dtype)
     index_bits = max(int(H - 1).bit_length(), 1)
     vertex_bits = max(int(n - 1).bit_length(), 1)

@@ -120,6 +120,60 @@ def test_small_meshes_never_load_the_kernels(monkeypatch):
         _jit.kernels(_jit.MIN_CORNERS)
 
 
+# -- the twins ------------------------------------------------------------------------
+
+
+def test_twins_are_the_numpy_twins(corpus_mesh, compiled):
+    from pentanb.mesh import _pair_twins
+
+    m = corpus_mesh
+    k = m._uniform_size
+    for head in ([None] if k else []) + [m.head]:
+        a, b = both(lambda head=head: _pair_twins(m.corners, head, m.n_vertices, k))
+        assert a is not None and same_bytes(a, b)
+    a, b = both(lambda: fresh(m).twin)
+    assert same_bytes(a, b)
+
+
+@pytest.mark.parametrize(
+    "faces",
+    [
+        [[0, 1, 2], [0, 1, 3]],  # the directed edge 0 -> 1 twice
+        [[0, 1, 2], [1, 0, 3]],  # edges 1-2, 2-0, 0-3, 3-1 without a partner
+        [[0, 0, 1, 2], [2, 1, 0, 0]],  # the loop 0 -> 0
+        [[0, 1, 2], [2, 1, 0], [0, 1, 2], [2, 1, 0]],  # every edge four times
+    ],
+)
+def test_half_edges_that_do_not_pair_give_none_both_ways(compiled, faces):
+    from pentanb.mesh import _pair_twins
+
+    f = np.array(faces)
+    tail = f.reshape(-1).astype(np.int32)
+    a, b = both(lambda: _pair_twins(tail, None, 4, f.shape[1]))
+    assert a is None and b is None
+
+
+def test_twins_of_indices_out_of_range_are_refused_not_written(compiled):
+    from pentanb.mesh import _pair_twins
+
+    tail = np.array([0, 1, 2, 2, 1, 7], dtype=np.int32)  # vertex 7 of 4
+    assert compiled.pair_twins(tail, tail[:0], 3, 4).size == 0
+    assert _pair_twins(tail, None, 4, 3) is None
+
+
+def test_bad_meshes_get_the_same_message_compiled(compiled):
+    # the constructor's messages come from the exact checker either way
+    bad = [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]]  # one face turned the wrong way
+    v = shapes.tetrahedron().vertices
+    messages = []
+    for on in (False, True):
+        _jit.use_jit(on)
+        with pytest.raises(pentanb.MeshError) as err:
+            pentanb.Mesh(v, bad)
+        messages.append(str(err.value))
+    assert messages[0] == messages[1] and "edge" in messages[0]
+
+
 # -- the WebGL index arrays ----------------------------------------------------------
 
 
