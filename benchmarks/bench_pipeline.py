@@ -26,6 +26,11 @@ When numba is installed (``pip install -e .[jit]``), the rows of 2., 3. and
 and the optional compiled kernels (:mod:`pentanb._jit`), the latter marked
 "compiled kernels".  Every other row is the numpy path.
 
+4.'s time ratio is also measured with every run inside one
+``pentanb.keep_freed_memory()`` block (glibc only: malloc serves the arrays
+from its heap and keeps what is freed), the opt-in for building meshes of
+millions of faces.
+
 Two diagnoses ride along, without targets: page faults (memory the kernel
 hands over fresh) per slider move and per 1,000 faces of the pipeline, with
 the per-face ratio of 4. again in a child process whose glibc malloc keeps
@@ -53,6 +58,7 @@ Run::
 from __future__ import annotations
 
 import argparse
+import contextlib
 import gc
 import json
 import os
@@ -369,8 +375,11 @@ def slider(table: Table, runs: int, clock) -> dict:
     return out
 
 
-def linear_times(runs: int, clock, compiled: bool = False) -> dict:
-    """Seconds and page faults of the pipeline, small and large alternating, one process."""
+def linear_times(runs: int, clock, compiled: bool = False, keep: bool = False) -> dict:
+    """Seconds and page faults of the pipeline, small and large alternating, one process.
+
+    ``keep``: every run inside one ``pentanb.keep_freed_memory()`` block.
+    """
     v1, f1 = icosphere(7)
     v2, f2 = icosphere(9)
     assert len(f1) == 327_680 and len(f2) == 5_242_880
@@ -385,9 +394,10 @@ def linear_times(runs: int, clock, compiled: bool = False) -> dict:
         return run
 
     # alternate small and large, so that both see the same machine
-    t = alternate(
-        {"small": counted("small", v1, f1), "large": counted("large", v2, f2)}, runs, clock
-    )
+    with pb.keep_freed_memory() if keep else contextlib.nullcontext():
+        t = alternate(
+            {"small": counted("small", v1, f1), "large": counted("large", v2, f2)}, runs, clock
+        )
     return {
         "seconds": {k: [float(x) for x in xs] for k, xs in t.items()},
         "faults": {k: xs[1:] for k, xs in faults.items()},  # the warm-up round left out
@@ -445,6 +455,20 @@ def linear(table: Table, runs: int, clock, clock_name: str) -> dict:
             note=f"{1e6 * s1:.2f} and {1e6 * l1:.2f} us per face",
         )
         run["compiled"] = fast
+    if pb._malloc.supported():
+        held = linear_times(runs, clock, keep=True)
+        s3, l3 = per_face(held)
+        table.add(
+            sec,
+            "4. per-face time 5,242,880 / 327,680, in one pentanb.keep_freed_memory() block",
+            l3 / s3,
+            "x",
+            1.3,
+            note=f"{1e6 * s3:.2f} and {1e6 * l3:.2f} us per face; "
+            f"{1000 * median(held['faults']['large']) / held['faces']['large']:.1f} "
+            "page faults per 1,000 faces at 5,242,880",
+        )
+        run["keep_freed_memory"] = held
     kept = linear_keeping_freed_memory(runs, clock_name)
     if kept is not None:
         s2, l2 = per_face(kept)
@@ -456,7 +480,7 @@ def linear(table: Table, runs: int, clock, clock_name: str) -> dict:
             note=f"a child process with {' '.join(f'{k}={v}' for k, v in KEEP_FREED.items())}: "
             f"{1e6 * s2:.2f} and {1e6 * l2:.2f} us per face",
         )
-        run["keeping_freed_memory"] = kept
+        run["keeping_freed_memory_child"] = kept
     mem = {}
     v2, f2 = icosphere(9)
     for label, (v, f) in {"1,310,720": icosphere(8), "5,242,880": (v2, f2)}.items():

@@ -14,6 +14,8 @@ load when a drawing function is first called.
 from __future__ import annotations
 
 from . import shapes, topology
+from ._jit import use_jit
+from ._malloc import keep_freed_memory
 from .io import read, write
 from .mesh import Mesh, MeshError
 from .notation import conway
@@ -70,6 +72,8 @@ __all__ = [
     "canonical",
     "planarize",
     "ConvergenceError",
+    "use_jit",
+    "keep_freed_memory",
 ]
 
 # drawing functions: imported on first use, so that `import pentanb` needs numpy only

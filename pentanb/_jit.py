@@ -15,8 +15,8 @@ call in a process compiles a kernel (about a second; numba caches the
 machine code on disk, so later processes load it).
 
 Switch them with the environment variable ``PENTANB_JIT`` (``0``: off,
-``1``: on, refused without numba) read at import, or at run time with
-:func:`use_jit`.  ``benchmarks/bench_pipeline.py`` reports both paths.
+``1``: on, refused without numba), read when first needed, or at run time
+with :func:`pentanb.use_jit`.  ``benchmarks/bench_pipeline.py`` reports both paths.
 """
 
 from __future__ import annotations
