@@ -443,32 +443,28 @@ def linear(table: Table, runs: int, clock, clock_name: str) -> dict:
             "",
             note="memory the kernel hands over fresh",
         )
+    variants = {}
     if COMPILED:
-        fast = linear_times(runs, clock, compiled=True)
-        s1, l1 = per_face(fast)
+        variants["compiled"] = ("compiled kernels", dict(compiled=True))
+    if pb._malloc.supported():
+        variants["keep_freed_memory"] = (
+            "in one pentanb.keep_freed_memory() block",
+            dict(keep=True),
+        )
+    for key, (label, how) in variants.items():
+        other = linear_times(runs, clock, **how)
+        s1, l1 = per_face(other)
+        faults = 1000 * median(other["faults"]["large"]) / other["faces"]["large"]
         table.add(
             sec,
-            "4. per-face time 5,242,880 / 327,680, compiled kernels",
+            f"4. per-face time 5,242,880 / 327,680, {label}",
             l1 / s1,
             "x",
             1.3,
-            note=f"{1e6 * s1:.2f} and {1e6 * l1:.2f} us per face",
+            note=f"{1e6 * s1:.2f} and {1e6 * l1:.2f} us per face; "
+            f"{faults:.1f} page faults per 1,000 faces at 5,242,880",
         )
-        run["compiled"] = fast
-    if pb._malloc.supported():
-        held = linear_times(runs, clock, keep=True)
-        s3, l3 = per_face(held)
-        table.add(
-            sec,
-            "4. per-face time 5,242,880 / 327,680, in one pentanb.keep_freed_memory() block",
-            l3 / s3,
-            "x",
-            1.3,
-            note=f"{1e6 * s3:.2f} and {1e6 * l3:.2f} us per face; "
-            f"{1000 * median(held['faults']['large']) / held['faces']['large']:.1f} "
-            "page faults per 1,000 faces at 5,242,880",
-        )
-        run["keep_freed_memory"] = held
+        run[key] = other
     kept = linear_keeping_freed_memory(runs, clock_name)
     if kept is not None:
         s2, l2 = per_face(kept)

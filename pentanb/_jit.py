@@ -7,12 +7,17 @@ passes by one loop each, giving the *same results bit for bit*:
 * the mean of the corners of every face (:meth:`pentanb.Mesh.face_centroids`,
   the dual's vertices), summed in the order the numpy path sums them;
 * the explorer's WebGL index arrays: the fan triangles of every face and
-  the edges, written straight into uint32 (:func:`pentanb.viz.drawing.mesh_buffers`).
+  the edges, written straight into uint32 (:func:`pentanb.viz.drawing.mesh_buffers`);
+* vertex rings turned to start at their largest half-edge (the rings the
+  operators write for their outputs), and the points that split edges;
+* twin pairing, by a counting sort of the half-edges on their tails (linear,
+  where the numpy path sorts packed keys), refusing exactly what it refuses.
 
 They run only on meshes of at least :data:`MIN_CORNERS` corners, where a
 compiled loop pays for itself; smaller meshes never load numba.  The first
-call in a process compiles a kernel (about a second; numba caches the
-machine code on disk, so later processes load it).
+use in a process compiles the kernels it needs (about 2 s for an explorer's
+first move with an empty cache); numba caches the machine code on disk, so
+later processes load it.
 
 Switch them with the environment variable ``PENTANB_JIT`` (``0``: off,
 ``1``: on, refused without numba), read when first needed, or at run time
