@@ -35,11 +35,12 @@ shows these messages; none comes from pentanb and none affects the drawing:
   ``HemisphereLight`` riding on the camera, so its views never print it;
   user code that adds such lights will.
 
-``GL_INVALID_OPERATION ... Insufficient buffer size`` would be a real error (a
-position buffer drawn against a shorter colour buffer); :meth:`MeshView.update`
-avoids it by replacing the longer array first and giving every replaced array
-a new, higher ``version`` (see :func:`_set_array`), and the browser tests fail
-on it.
+``GL_INVALID_OPERATION ... Insufficient buffer size`` would be a real error (an
+index pointing past the rows of the position or colour buffer, or a position
+buffer drawn against a shorter colour buffer); :meth:`MeshView.update` avoids
+it by replacing the arrays in an order that never lets that happen
+(:func:`_replace`) and giving every replaced array a new, higher ``version``
+(see :func:`_set_array`), and the browser tests fail on it.
 """
 
 from __future__ import annotations
@@ -428,8 +429,9 @@ class MeshView(W.VBox):
         fa = self.face_geometry.attributes
         ea = self.edge_geometry.attributes
         pa = self.point_geometry.attributes
-        # the position buffer sets how many vertices are drawn: never let it
-        # be longer than the colour buffer, not even between two messages
+        # the index says which rows are drawn, the position buffer how many
+        # points are: never let either outrun the arrays it reads, not even
+        # between two messages
         _replace(fa["position"], b.position, fa["color"], b.color, fa["index"], b.index)
         _replace(
             ea["position"], b.edge_position, ea["color"], b.edge_color, ea["index"], b.edge_index
