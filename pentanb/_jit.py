@@ -75,18 +75,34 @@ def enabled() -> bool:
 
 
 def use_jit(on: bool) -> bool:
-    """Use the compiled kernels (True) or the numpy path (False); returns the previous choice.
+    """Use the compiled kernels (True) or the numpy path (False), from now on.
+
+    The kernels give the same results bit for bit; they run on meshes of at
+    least :data:`MIN_CORNERS` corners (smaller ones always take numpy).
+
+    Parameters
+    ----------
+    on : bool
+
+    Returns
+    -------
+    bool
+        The previous choice (to restore it: ``use_jit(previous)``).
 
     Raises
     ------
     TypeError
         ``on`` is not a bool.
     ImportError
-        ``on`` is True and numba is not installed.
+        ``on`` is True and numba is not installed (the message says what to
+        install).
     """
     if not isinstance(on, (bool, np.bool_)):
         raise TypeError(f"use_jit() expects True or False, got {type(on).__name__}")
-    before = enabled()
+    try:
+        before = enabled()
+    except ValueError:  # a PENTANB_JIT that is neither 0 nor 1: the call overrides it
+        before = False
     if on:
         _require()
     _state["on"] = bool(on)

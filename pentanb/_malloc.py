@@ -108,9 +108,14 @@ def keep_freed_memory() -> Iterator[bool]:
         yield False
         return
     with _lock:
+        if _state["depth"] == 0:
+            try:
+                _set(libc, _KEEP)
+            except OSError:  # refused: undo what was set, enter nothing
+                for param, value in _AFTER.items():
+                    libc.mallopt(param, value)
+                raise
         _state["depth"] += 1
-        if _state["depth"] == 1:
-            _set(libc, _KEEP)
     try:
         yield True
     finally:

@@ -316,5 +316,8 @@ def test_the_environment_switch_is_read_strictly(monkeypatch):
     monkeypatch.setenv("PENTANB_JIT", "maybe")
     with pytest.raises(ValueError, match="PENTANB_JIT must be 0 or 1, got 'maybe'"):
         _jit.enabled()
+    _jit.use_jit(False)  # an explicit choice overrides the bad variable
+    assert not _jit.enabled()
+    monkeypatch.setitem(_jit._state, "on", None)
     monkeypatch.setenv("PENTANB_JIT", "0")
     assert not _jit.enabled() and _jit.kernels(10**9) is None

@@ -63,6 +63,11 @@ def test_a_refused_setting_is_an_oserror_naming_it(fake):
     with pytest.raises(OSError, match=r"glibc refused mallopt\(-3, 2147483647\)"):
         with pentanb.keep_freed_memory():
             pass
+    assert fake.calls == [("mallopt", -3, 2**31 - 1)] + AFTER[:2]  # what was set, undone
+    assert _malloc._state["depth"] == 0  # the next block tries again
+    fake.accept = 1
+    with pentanb.keep_freed_memory():
+        assert fake.calls[-2:] == KEEP
 
 
 def test_without_glibc_the_block_changes_nothing(monkeypatch):
