@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import types
 import warnings
 from collections.abc import Callable
 from typing import Any
@@ -310,15 +311,12 @@ def _compile() -> Any:
                 return fail
         return twin
 
-    class Kernels:
-        pass
-
-    k = Kernels()
-    k.face_means_uniform = face_means_uniform  # type: ignore[attr-defined]
-    k.face_means_mixed = face_means_mixed  # type: ignore[attr-defined]
-    k.fan_index = fan_index  # type: ignore[attr-defined]
-    k.edge_index = edge_index  # type: ignore[attr-defined]
-    k.start_at_max = start_at_max  # type: ignore[attr-defined]
-    k.edge_points = edge_points  # type: ignore[attr-defined]
-    k.pair_twins = pair_twins  # type: ignore[attr-defined]
-    return k
+    return types.SimpleNamespace(
+        face_means_uniform=face_means_uniform,
+        face_means_mixed=face_means_mixed,
+        fan_index=fan_index,
+        edge_index=edge_index,
+        start_at_max=start_at_max,
+        edge_points=edge_points,
+        pair_twins=pair_twins,
+    )

@@ -48,12 +48,12 @@ def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray
     edges, v = mesh.edges, mesh.vertices
     E = edges.shape[0]
     res = np.empty((E * k, 3)) if out is None else out
-    rows = res.reshape(E, k, 3)
     t = np.arange(1, k + 1, dtype=np.float64) / (k + 1)
     jit = _jit.kernels(2 * E)
     if jit is not None and v.flags.c_contiguous:  # the same products and sums, compiled
         jit.edge_points(v, edges, t, res)
         return res
+    rows = res.reshape(E, k, 3)
     for a in range(0, E, BLOCK):
         ends = edges[a : a + BLOCK]
         pa, pb = v.take(ends[:, 0], axis=0), v.take(ends[:, 1], axis=0)

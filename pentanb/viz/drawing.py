@@ -353,7 +353,7 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
         color=color,
         index=index,
         edge_position=v,
-        edge_color=_same_rows(_bytes(hex_to_rgb(EDGE_COLOR)), n),
+        edge_color=_rows(None, EDGE_COLOR, n, 1),
         edge_index=edge_index,
         point_position=v[:1].copy(),
         point_color=np.zeros((1, 3), np.uint8),

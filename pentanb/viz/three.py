@@ -176,36 +176,21 @@ def _set_array(attribute, array) -> None:
         attribute.version = next(_VERSIONS) << 20
 
 
-def _replace_pair(position, new_position, color, new_color) -> None:
-    """Replace a position and a colour buffer (unindexed), the longer array first.
+def _replace(position, new_position, color, new_color, index=None, new_index=None) -> None:
+    """Replace a geometry's arrays so that nothing drawn outruns the rows it reads.
 
-    Growing, the colours go first; shrinking, the positions: at no moment is
-    the position buffer longer than the colour buffer it is drawn with.
+    Growing, the colours go first, then the positions, then the index (if
+    the geometry has one); shrinking, the index first, then the positions,
+    then the colours: at no moment does the index point past the rows of
+    either attribute, nor the position buffer outrun the colour buffer.
     """
-    if len(new_position) >= len(position.array):
-        _set_array(color, new_color)
-        _set_array(position, new_position)
-    else:
-        _set_array(position, new_position)
-        _set_array(color, new_color)
-
-
-def _replace(position, new_position, color, new_color, index, new_index) -> None:
-    """Replace the arrays of an indexed geometry so that no index outruns the rows.
-
-    Growing, the colours go first, then the positions, then the index;
-    shrinking, the index first, then the positions, then the colours: at no
-    moment does the index point past the rows of either attribute, nor
-    (between them) the position buffer outrun the colour buffer.
-    """
-    if len(new_position) >= len(position.array):
-        _set_array(color, new_color)
-        _set_array(position, new_position)
-        _set_array(index, new_index)
-    else:
-        _set_array(index, new_index)
-        _set_array(position, new_position)
-        _set_array(color, new_color)
+    steps = [(color, new_color), (position, new_position)]
+    if index is not None:
+        steps.append((index, new_index))
+    if len(new_position) < len(position.array):
+        steps.reverse()
+    for attribute, array in steps:
+        _set_array(attribute, array)
 
 
 class MeshView(W.VBox):
@@ -436,7 +421,7 @@ class MeshView(W.VBox):
         _replace(
             ea["position"], b.edge_position, ea["color"], b.edge_color, ea["index"], b.edge_index
         )
-        _replace_pair(pa["position"], b.point_position, pa["color"], b.point_color)
+        _replace(pa["position"], b.point_position, pa["color"], b.point_color)
         self.points.visible = bool(b.point_count)
         self._edges_present = bool(b.edge_count)
         self.edges.visible = bool(self.wireframe.value and b.edge_count)
