@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import threading
 import types
 import warnings
 from collections.abc import Callable
@@ -35,7 +36,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["MIN_CORNERS", "available", "enabled", "use_jit", "kernels"]
+__all__ = ["MIN_CORNERS", "MIN_SPLIT", "available", "enabled", "use_jit", "kernels", "threads"]
 
 #: Meshes with fewer corners than this keep the numpy path.
 MIN_CORNERS = 1 << 14
@@ -129,20 +130,74 @@ def kernels(corners: int) -> Any | None:
     return _state["kernels"]
 
 
+def threads() -> int:
+    """Threads the kernels split their work over: the CPUs this process may use, at most 8."""
+    try:
+        n = len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):  # not Linux
+        n = os.cpu_count() or 1
+    return max(1, min(n, 8))
+
+
+#: Work items (faces, edges, vertices) below which a kernel runs on one thread.
+MIN_SPLIT = 1 << 14
+
+_pool: dict[str, Any] = {"executor": None, "pid": None}
+_pool_lock = threading.Lock()
+
+
+def _executor() -> Any:
+    """The worker threads (started on first use, again in a forked child)."""
+    with _pool_lock:
+        if _pool["executor"] is None or _pool["pid"] != os.getpid():
+            from concurrent.futures import ThreadPoolExecutor
+
+            _pool["executor"] = ThreadPoolExecutor(
+                max_workers=threads() - 1, thread_name_prefix="pentanb-kernel"
+            )
+            _pool["pid"] = os.getpid()
+        return _pool["executor"]
+
+
+def split(n: int, kernel: Callable[..., None], *args: Any) -> None:
+    """Run ``kernel(*args, lo, hi)`` over ``range(n)`` cut into one part per thread.
+
+    The kernels release the GIL and write disjoint parts of their output,
+    so the parts run at once; the calling thread runs the first.  Below
+    :data:`MIN_SPLIT` items, or with one CPU, it is one call.
+    """
+    parts = min(threads(), n // MIN_SPLIT)
+    if parts <= 1:
+        kernel(*args, 0, n)
+        return
+    cuts = [n * i // parts for i in range(parts + 1)]
+    pool = _executor()
+    rest = [pool.submit(kernel, *args, cuts[i], cuts[i + 1]) for i in range(1, parts)]
+    try:
+        kernel(*args, cuts[0], cuts[1])
+    finally:
+        for future in rest:
+            future.result()
+
+
 def _compile() -> Any:
-    """Define the kernels (numba compiles each on its first call, per argument types)."""
+    """Define the kernels (numba compiles each on its first call, per argument types).
+
+    Those whose items are independent (faces, edges, vertices) fill a range
+    ``lo:hi`` of a given output and run through :func:`split`; the
+    namespace returned holds functions with the numpy path's arguments.
+    """
     import numba
 
     jit: Callable = numba.njit(cache=True, nogil=True)
 
     @jit
-    def face_means_uniform(values, corners, k):  # pragma: no cover - compiled
+    def face_means_uniform_part(values, corners, k, out, lo, hi):  # pragma: no cover - compiled
         # acc = v[c0]; acc += v[c1]; ...; acc / k: the numpy path's order,
         # every coordinate on its own (three at once for points)
-        m, d = corners.size // k, values.shape[1]
-        out = np.empty((m, d))
+        d = values.shape[1]
         if d == 3:
-            for f in range(m):
+            for f in range(lo, hi):
                 c = corners[f * k]
                 x, y, z = values[c, 0], values[c, 1], values[c, 2]
                 for j in range(1, k):
@@ -151,23 +206,26 @@ def _compile() -> Any:
                     y += values[c, 1]
                     z += values[c, 2]
                 out[f, 0], out[f, 1], out[f, 2] = x / k, y / k, z / k
-            return out
-        for f in range(m):
+            return
+        for f in range(lo, hi):
             for i in range(d):
                 acc = values[corners[f * k], i]
                 for j in range(1, k):
                     acc += values[corners[f * k + j], i]
                 out[f, i] = acc / k
+
+    def face_means_uniform(values, corners, k):
+        out = np.empty((corners.size // k, values.shape[1]))
+        split(len(out), face_means_uniform_part, values, corners, k, out)
         return out
 
     @jit
-    def face_means_mixed(values, corners, offsets):  # pragma: no cover - compiled
+    def face_means_mixed_part(values, corners, offsets, out, lo, hi):  # pragma: no cover
         # faces of at most 8 corners: (v[c1] + v[c2] + ... ) + v[c0], over the size,
         # as np.add.reduceat adds them (the numpy path's order)
-        m, d = offsets.size - 1, values.shape[1]
-        out = np.empty((m, d))
+        d = values.shape[1]
         if d == 3:
-            for f in range(m):
+            for f in range(lo, hi):
                 a, b = offsets[f], offsets[f + 1]
                 c = corners[a + 1]
                 x, y, z = values[c, 0], values[c, 1], values[c, 2]
@@ -182,8 +240,8 @@ def _compile() -> Any:
                 z += values[c, 2]
                 n = b - a
                 out[f, 0], out[f, 1], out[f, 2] = x / n, y / n, z / n
-            return out
-        for f in range(m):
+            return
+        for f in range(lo, hi):
             a, b = offsets[f], offsets[f + 1]
             for i in range(d):
                 acc = values[corners[a + 1], i]
@@ -191,58 +249,70 @@ def _compile() -> Any:
                     acc += values[corners[h], i]
                 acc += values[corners[a], i]
                 out[f, i] = acc / (b - a)
+
+    def face_means_mixed(values, corners, offsets):
+        out = np.empty((offsets.size - 1, values.shape[1]))
+        split(len(out), face_means_mixed_part, values, corners, offsets, out)
         return out
 
     @jit
-    def fan_index(corners, offsets, shift):  # pragma: no cover - compiled
-        # face f's triangles (c0, c_{j+1}, c_{j+2}), each vertex plus shift[f]
-        m = offsets.size - 1
-        T = 0
-        for f in range(m):
-            T += max(offsets[f + 1] - offsets[f] - 2, 0)
-        out = np.empty(3 * T, np.uint32)
-        t = 0
-        for f in range(m):
+    def fan_index_part(corners, offsets, slot, low, out, lo, hi):  # pragma: no cover
+        # face f's triangles (c0, c_{j+1}, c_{j+2}), each vertex plus the shift
+        # slot[size - low] of its size (none when slot is empty), from row
+        # offsets[f] - 2 f (faces of at least 3 corners)
+        shifted = slot.size > 0
+        for f in range(lo, hi):
             a, b = offsets[f], offsets[f + 1]
-            s = shift[f] if shift.size else 0
+            s = slot[b - a - low] if shifted else 0
             first = corners[a] + s
+            t = 3 * (a - 2 * f)
             for c in range(a + 1, b - 1):
                 out[t] = first
                 out[t + 1] = corners[c] + s
                 out[t + 2] = corners[c + 1] + s
                 t += 3
+
+    def fan_index(corners, offsets, slot, low):
+        # every face has at least 3 corners (the caller checks): T = H - 2F triangles
+        m = offsets.size - 1
+        out = np.empty(3 * (corners.size - 2 * m), np.uint32)
+        split(m, fan_index_part, corners, offsets, slot, low, out)
         return out
 
     @jit
-    def edge_index(corners, offsets):  # pragma: no cover - compiled
+    def edge_index_fill(corners, offsets, out):  # pragma: no cover - compiled
         # every edge once, as (tail, head) of its half-edge with tail < head,
-        # in half-edge order (Mesh.edges); written without branches (the
-        # comparison is a coin toss), the slot advancing only for a forward one
-        m = offsets.size - 1
-        E = 0
+        # in half-edge order (Mesh.edges); -1 if there are more than out holds
+        m, e, room = offsets.size - 1, 0, out.size
         for f in range(m):
             a, b = offsets[f], offsets[f + 1]
-            for c in range(a, b - 1):
-                E += corners[c] < corners[c + 1]
-            E += corners[b - 1] < corners[a]
-        out = np.empty(2 * E + 2, np.uint32)
-        e = 0
-        for f in range(m):
-            a, b = offsets[f], offsets[f + 1]
-            for c in range(a, b):
-                h = c + 1 if c + 1 < b else a
-                out[e] = corners[c]
-                out[e + 1] = corners[h]
-                e += 2 * (corners[c] < corners[h])
-        return out[: 2 * E]
+            prev = corners[a]
+            for c in range(a + 1, b + 1):
+                cur = corners[c] if c < b else corners[a]
+                if prev < cur:
+                    if e + 2 > room:
+                        return -1
+                    out[e] = prev
+                    out[e + 1] = cur
+                    e += 2
+                prev = cur
+        return e
+
+    def edge_index(corners, offsets):
+        # a closed mesh has H / 2 edges, which one pass fills; a mesh built
+        # unchecked may have more (a second pass into room for H) or fewer
+        out = np.empty(2 * (corners.size // 2), np.uint32)
+        e = edge_index_fill(corners, offsets, out)
+        if e < 0:  # more than H / 2 (at most one per half-edge)
+            out = np.empty(2 * corners.size, np.uint32)
+            e = edge_index_fill(corners, offsets, out)
+        return out if e == out.size else out[:e].copy()
 
     @jit
-    def start_at_max(ring, offsets, k):  # pragma: no cover - compiled
+    def start_at_max_part(ring, offsets, k, out, lo, hi):  # pragma: no cover - compiled
         # every ring (CSR, or k each when offsets is empty) turned to start at
         # its largest entry, order kept
-        out = np.empty_like(ring)
-        n = ring.size // k if offsets.size == 0 else offsets.size - 1
-        for v in range(n):
+        for v in range(lo, hi):
             if offsets.size == 0:
                 a, b = v * k, v * k + k
             else:
@@ -258,18 +328,26 @@ def _compile() -> Any:
             for i in range(a, top):
                 out[j] = ring[i]
                 j += 1
+
+    def start_at_max(ring, offsets, k):
+        out = np.empty_like(ring)
+        n = ring.size // k if offsets.size == 0 else offsets.size - 1
+        split(n, start_at_max_part, ring, offsets, k, out)
         return out
 
     @jit
-    def edge_points(vertices, edges, t, out):  # pragma: no cover - compiled
+    def edge_points_part(vertices, edges, t, out, lo, hi):  # pragma: no cover - compiled
         # point j of edge e: a * (1 - t[j]) + b * t[j], as the numpy path rounds it
         k = t.size
-        for e in range(edges.shape[0]):
+        for e in range(lo, hi):
             a, b = edges[e, 0], edges[e, 1]
             for j in range(k):
                 s, w = 1.0 - t[j], t[j]
                 for i in range(3):
                     out[e * k + j, i] = vertices[a, i] * s + vertices[b, i] * w
+
+    def edge_points(vertices, edges, t, out):
+        split(edges.shape[0], edge_points_part, vertices, edges, t, out)
 
     @jit
     def pair_twins(tail, head, k, n):  # pragma: no cover - compiled

@@ -332,13 +332,13 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
             position, color = v, _same_rows(table[present[0]], n)
         else:
             position = np.tile(v, (copies, 1))
-            color = np.repeat(table[present], n, axis=0)
+            rows = b"".join(table[p].tobytes() * n for p in present)
+            color = np.frombuffer(bytearray(rows), dtype=np.uint8).reshape(-1, 3)
         _addressable(len(position))
         slot = np.zeros(high - low + 1, np.int64)
         slot[present] = np.arange(copies) * n
-        if jit is not None:
-            shift = slot[sizes - low] if copies > 1 else slot[:0]
-            index = jit.fan_index(mesh.corners, mesh.offsets, shift)
+        if jit is not None:  # (a k-gon's rows are shifted by slot[k - low])
+            index = jit.fan_index(mesh.corners, mesh.offsets, slot if copies > 1 else slot[:0], low)
         else:
             tri, tri_face = mesh.fan_triangles()
             if copies > 1:
