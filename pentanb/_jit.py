@@ -220,13 +220,46 @@ def _compile() -> Any:
         return out
 
     @jit
+    def bracket(values, corners, a, b, i):  # pragma: no cover - compiled
+        # values[corners[a:b], i] summed as numpy's pairwise sum adds them
+        # (at most 128 terms): left to right below 8; else eight running
+        # sums, joined pairwise, then the remainder left to right
+        n = b - a
+        if n < 8:
+            acc = values[corners[a], i]
+            for h in range(a + 1, b):
+                acc += values[corners[h], i]
+            return acc
+        r0, r1 = values[corners[a], i], values[corners[a + 1], i]
+        r2, r3 = values[corners[a + 2], i], values[corners[a + 3], i]
+        r4, r5 = values[corners[a + 4], i], values[corners[a + 5], i]
+        r6, r7 = values[corners[a + 6], i], values[corners[a + 7], i]
+        h = a + 8
+        while h < b - n % 8:
+            r0 += values[corners[h], i]
+            r1 += values[corners[h + 1], i]
+            r2 += values[corners[h + 2], i]
+            r3 += values[corners[h + 3], i]
+            r4 += values[corners[h + 4], i]
+            r5 += values[corners[h + 5], i]
+            r6 += values[corners[h + 6], i]
+            r7 += values[corners[h + 7], i]
+            h += 8
+        acc = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+        while h < b:
+            acc += values[corners[h], i]
+            h += 1
+        return acc
+
+    @jit
     def face_means_mixed_part(values, corners, offsets, out, lo, hi):  # pragma: no cover
-        # faces of at most 8 corners: (v[c1] + v[c2] + ... ) + v[c0], over the size,
-        # as np.add.reduceat adds them (the numpy path's order)
+        # faces of at most 129 corners: v[c0] + (v[c1] + v[c2] + ...), over the
+        # size, as np.add.reduceat adds them (the numpy path's order)
         d = values.shape[1]
-        if d == 3:
-            for f in range(lo, hi):
-                a, b = offsets[f], offsets[f + 1]
+        for f in range(lo, hi):
+            a, b = offsets[f], offsets[f + 1]
+            n = b - a
+            if d == 3 and n <= 8:  # three coordinates at once
                 c = corners[a + 1]
                 x, y, z = values[c, 0], values[c, 1], values[c, 2]
                 for h in range(a + 2, b):
@@ -238,17 +271,12 @@ def _compile() -> Any:
                 x += values[c, 0]
                 y += values[c, 1]
                 z += values[c, 2]
-                n = b - a
                 out[f, 0], out[f, 1], out[f, 2] = x / n, y / n, z / n
-            return
-        for f in range(lo, hi):
-            a, b = offsets[f], offsets[f + 1]
+                continue
             for i in range(d):
-                acc = values[corners[a + 1], i]
-                for h in range(a + 2, b):
-                    acc += values[corners[h], i]
+                acc = bracket(values, corners, a + 1, b, i)
                 acc += values[corners[a], i]
-                out[f, i] = acc / (b - a)
+                out[f, i] = acc / n
 
     def face_means_mixed(values, corners, offsets):
         out = np.empty((offsets.size - 1, values.shape[1]))
@@ -350,6 +378,49 @@ def _compile() -> Any:
         split(edges.shape[0], edge_points_part, vertices, edges, t, out)
 
     @jit
+    def gather_part(table, index, out, lo, hi):  # pragma: no cover - compiled
+        for i in range(lo, hi):
+            out[i] = table[index[i]]
+
+    def gather(table, index):
+        # table[index] for 1-d arrays (indices in range: the caller's arrays)
+        out = np.empty(index.size, table.dtype)
+        split(index.size, gather_part, table, index, out)
+        return out
+
+    @jit
+    def halfedge_face_part(offsets, out, lo, hi):  # pragma: no cover - compiled
+        for f in range(lo, hi):
+            for h in range(offsets[f], offsets[f + 1]):
+                out[h] = f
+
+    def halfedge_face(offsets, n_corners):
+        # the face of every half-edge: np.repeat(arange(F), sizes)
+        out = np.empty(n_corners, offsets.dtype)
+        split(offsets.size - 1, halfedge_face_part, offsets, out)
+        return out
+
+    @jit
+    def scaled_copies_part(values, points, offsets, s, out, lo, hi):  # pragma: no cover
+        # every face's points scaled by s about their mean: c + (p - c) * s,
+        # c = ((p1 + p2 + ...) + p0) / size, np.add.reduceat's order (at most 8)
+        for f in range(lo, hi):
+            a, b = offsets[f], offsets[f + 1]
+            n = b - a
+            for i in range(3):
+                acc = values[points[a + 1], i]
+                for h in range(a + 2, b):
+                    acc += values[points[h], i]
+                acc += values[points[a], i]
+                c = acc / n
+                for h in range(a, b):
+                    out[h, i] = c + (values[points[h], i] - c) * s
+
+    def scaled_copies(values, points, offsets, s, out):
+        # faces of 3 to 8 corners (the caller checks)
+        split(offsets.size - 1, scaled_copies_part, values, points, offsets, s, out)
+
+    @jit
     def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
         # twin of every half-edge u -> w: the one half-edge w -> u, found among
         # w's outgoing half-edges (a counting sort by tail); an empty array when
@@ -396,5 +467,8 @@ def _compile() -> Any:
         edge_index=edge_index,
         start_at_max=start_at_max,
         edge_points=edge_points,
+        gather=gather,
+        halfedge_face=halfedge_face,
+        scaled_copies=scaled_copies,
         pair_twins=pair_twins,
     )

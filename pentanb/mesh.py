@@ -1230,6 +1230,9 @@ def _uniform_size(offsets: np.ndarray, n_corners: int) -> int:
 
 
 def _halfedge_face(offsets: np.ndarray, n_corners: int, k: int) -> IntArray:
+    jit = _jit.kernels(n_corners)
+    if jit is not None:  # the same array, each face's run written in one loop
+        return jit.halfedge_face(offsets, n_corners)
     faces = np.arange(offsets.size - 1, dtype=offsets.dtype)
     return np.repeat(faces, k if k else np.diff(offsets))
 
@@ -1443,7 +1446,7 @@ def _face_means(
             return jit.face_means_uniform(values, corners, k)
         if not k:
             sizes = np.diff(offsets)
-            if 3 <= int(sizes.min()) and int(sizes.max()) <= 8:
+            if 3 <= int(sizes.min()) and int(sizes.max()) <= 129:
                 return jit.face_means_mixed(values, corners, offsets)
     out = np.empty((m, d))
     if k and k < 8:

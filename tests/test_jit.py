@@ -10,7 +10,11 @@ absence fails them.
 from __future__ import annotations
 
 import dataclasses
+import os
+import signal
 import sys
+import time
+import warnings
 
 import numpy as np
 import pytest
@@ -23,12 +27,21 @@ from pentanb.mesh import _face_means
 from pentanb.viz import drawing
 
 
-@pytest.fixture
-def compiled(monkeypatch):
-    """The kernels, used for meshes of any size for the test's duration."""
+@pytest.fixture(params=["one thread", "three threads"])
+def compiled(monkeypatch, request):
+    """The kernels, used for meshes of any size for the test's duration.
+
+    Twice: on one thread, and with every kernel's items cut into three
+    parts run by threads at once (whatever this machine's CPUs).
+    """
     if not _jit.available():
         skip_or_fail("numba is not installed (pip install 'pentanb[jit]')")
     monkeypatch.setattr(_jit, "MIN_CORNERS", 0)
+    if request.param == "one thread":
+        monkeypatch.setattr(_jit, "threads", lambda: 1)
+    else:
+        monkeypatch.setattr(_jit, "threads", lambda: 3)
+        monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
     before = _jit.use_jit(True)
     yield _jit.kernels(0)
     _jit.use_jit(before)
@@ -93,11 +106,37 @@ def test_the_kernels_add_in_the_numpy_paths_order(compiled):
     assert same_bytes(mixed, _face_means(values, corners, offsets, 0, big))
 
 
-def test_faces_of_more_than_eight_corners_keep_the_numpy_sums(compiled, monkeypatch):
-    m = prism(12)  # two 12-gons and twelve squares: numpy's pairwise sums for the 12-gons
+@pytest.mark.parametrize("n", [9, 12, 16, 17, 30, 128, 129])
+def test_long_faces_are_summed_pairwise_as_numpy_does(compiled, n):
+    # a face of n corners: v[c0] + (v[c1] + ... ), the bracket numpy's
+    # pairwise sum from 8 terms on (eight running sums); values of very
+    # different sizes, chosen so that a plain left-to-right sum differs in
+    # the last bits (the comparison can tell the orders apart)
+    m = prism(n)  # two n-gons and n squares
+    for seed in range(100):
+        rng = np.random.default_rng(seed)
+        values = rng.standard_normal((m.n_vertices, 3)) * 10.0 ** rng.integers(
+            -8, 8, (m.n_vertices, 1)
+        )
+        top = values[m.corners[:n]]
+        seq = top[1].copy()
+        for row in top[2:]:
+            seq += row
+        seq += top[0]
+        if not np.array_equal(seq, np.add.reduceat(top, [0], axis=0)[0]):
+            break
+    else:
+        pytest.fail("no values found on which the two orders differ")
+    a, b = both(lambda: _face_means(values, m.corners, m.offsets, 0, 1.0))
+    assert same_bytes(a, b)
+    assert not np.array_equal(b[0], seq / n)
+
+
+def test_faces_of_more_than_129_corners_keep_the_numpy_sums(compiled, monkeypatch):
+    m = prism(130)  # numpy's pairwise sum splits 129 or more terms in two halves
 
     def refuse(*args):
-        raise AssertionError("the mixed kernel ran on a face of more than 8 corners")
+        raise AssertionError("the mixed kernel ran on a face of more than 129 corners")
 
     monkeypatch.setattr(compiled, "face_means_mixed", refuse)
     a, b = both(lambda: fresh(m).face_centroids)
@@ -321,3 +360,65 @@ def test_the_environment_switch_is_read_strictly(monkeypatch):
     monkeypatch.setitem(_jit._state, "on", None)
     monkeypatch.setenv("PENTANB_JIT", "0")
     assert not _jit.enabled() and _jit.kernels(10**9) is None
+
+
+# -- the threads ---------------------------------------------------------------------
+
+
+def test_split_covers_every_item_once_in_parts(monkeypatch):
+    monkeypatch.setattr(_jit, "threads", lambda: 3)
+    monkeypatch.setattr(_jit, "MIN_SPLIT", 10)
+    seen = []
+
+    def kernel(out, lo, hi):
+        seen.append((lo, hi))
+        out[lo:hi] += 1
+
+    for n, parts in ((0, 1), (9, 1), (25, 2), (31, 3), (1000, 3)):
+        seen.clear()
+        out = np.zeros(n, int)
+        _jit.split(n, kernel, out)
+        assert (out == 1).all() and len(seen) == parts, (n, seen)
+        assert sorted(seen)[0][0] == 0 and sorted(seen)[-1][1] == n
+
+
+def test_a_kernel_error_in_a_thread_reaches_the_caller(monkeypatch):
+    monkeypatch.setattr(_jit, "threads", lambda: 2)
+    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
+
+    def kernel(lo, hi):
+        if lo > 0:
+            raise IndexError(f"part {lo}:{hi}")
+
+    with pytest.raises(IndexError, match="part 5:10"):
+        _jit.split(10, kernel)
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
+def test_a_forked_child_gets_its_own_threads(compiled, monkeypatch):
+    # the parent's worker threads do not exist in a forked child: work handed
+    # to them there would wait for ever; the child starts threads of its own
+    monkeypatch.setattr(_jit, "threads", lambda: 2)
+    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
+    m = shapes.icosahedron()
+    expected = fresh(m).face_centroids
+    with warnings.catch_warnings():  # (Python 3.12 warns on forking a threaded process)
+        warnings.simplefilter("ignore", DeprecationWarning)
+        pid = os.fork()
+    if pid == 0:  # the child: exit 0 only if the kernels ran and agreed
+        code = 1
+        try:
+            code = 0 if same_bytes(fresh(m).face_centroids, expected) else 2
+        finally:
+            os._exit(code)
+    deadline = time.monotonic() + 60
+    while True:
+        done, status = os.waitpid(pid, os.WNOHANG)
+        if done:
+            break
+        if time.monotonic() > deadline:
+            os.kill(pid, signal.SIGKILL)
+            os.waitpid(pid, 0)
+            pytest.fail("the forked child hung on the parent's threads")
+        time.sleep(0.05)
+    assert os.waitstatus_to_exitcode(status) == 0

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import _jit
 from ..mesh import Mesh
 from ._build import check_count, check_mesh, check_vertex_faces, inverse, output
 
@@ -64,7 +65,11 @@ def dual(mesh: Mesh) -> Mesh:
     ring, ring_off = mesh.vertex_ring
     k = mesh._uniform_size
     # the dual's face v: the faces round vertex v, in rotation order
-    corners = ring // k if k else mesh.halfedge_face[ring]
+    if k:
+        corners = ring // k
+    else:
+        jit = _jit.kernels(ring.size)
+        corners = jit.gather(mesh.halfedge_face, ring) if jit else mesh.halfedge_face[ring]
     faces = mesh._faces_only()
     out = output(
         mesh.face_centroids,
