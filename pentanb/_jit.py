@@ -403,21 +403,20 @@ def _compile() -> Any:
     @jit
     def scaled_copies_part(values, points, offsets, s, out, lo, hi):  # pragma: no cover
         # every face's points scaled by s about their mean: c + (p - c) * s,
-        # c = ((p1 + p2 + ...) + p0) / size, np.add.reduceat's order (at most 8)
+        # c = (p0 + (p1 + p2 + ...)) / size, np.add.reduceat's order (faces
+        # of at most 129 corners)
         for f in range(lo, hi):
             a, b = offsets[f], offsets[f + 1]
             n = b - a
             for i in range(3):
-                acc = values[points[a + 1], i]
-                for h in range(a + 2, b):
-                    acc += values[points[h], i]
+                acc = bracket(values, points, a + 1, b, i)
                 acc += values[points[a], i]
                 c = acc / n
                 for h in range(a, b):
                     out[h, i] = c + (values[points[h], i] - c) * s
 
     def scaled_copies(values, points, offsets, s, out):
-        # faces of 3 to 8 corners (the caller checks)
+        # faces of 3 to 129 corners (the caller checks)
         split(offsets.size - 1, scaled_copies_part, values, points, offsets, s, out)
 
     @jit

@@ -272,6 +272,17 @@ def test_subdivision_is_the_same_compiled(compiled, name):
     assert same_bytes(a.twin, b.twin)
 
 
+@pytest.mark.parametrize("n", [5, 12, 129, 130])
+def test_preserved_copies_of_long_faces_are_the_same_compiled(compiled, n):
+    # the copies' centres are the faces' means in np.add.reduceat's order
+    # (kernel up to 129 corners, numpy beyond); coordinates of many sizes
+    m = prism(n)
+    rng = np.random.default_rng(n)
+    moved = m.with_vertices(m.vertices * 10.0 ** rng.integers(-6, 6, (m.n_vertices, 1)))
+    a, b = both(lambda: pentanb.preserve_pentagons(fresh(moved), 0.6).vertices)
+    assert same_bytes(a, b)
+
+
 def test_start_at_max_is_the_numpy_permutation(compiled):
     from pentanb.schemes._build import start_at_max
 

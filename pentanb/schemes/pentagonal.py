@@ -221,11 +221,10 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     mid += n
     # the copies: every face's edge midpoints scaled about their mean
     copies, offsets, sizes = vertices[n + E :], mesh.offsets, mesh.face_sizes
-    jit = _jit.kernels(H)
-    compiled = jit is not None and int(sizes.max()) <= 8
-    if compiled:  # the same sums and products, compiled
+    jit = _jit.kernels(H) if int(sizes.max()) <= 129 else None
+    if jit is not None:  # the same sums and products, compiled
         jit.scaled_copies(vertices, mid, offsets, s, copies)
-    for a in range(0, 0 if compiled else F, BLOCK):
+    for a in range(0, 0 if jit is not None else F, BLOCK):
         o = offsets[a : a + BLOCK + 1]
         lo, hi = int(o[0]), int(o[-1])
         p = vertices.take(mid[lo:hi], axis=0)
