@@ -408,6 +408,25 @@ def _compile() -> Any:
         for f in range(lo, hi):
             a, b = offsets[f], offsets[f + 1]
             n = b - a
+            if n <= 8:  # three coordinates at once
+                p = points[a + 1]
+                x, y, z = values[p, 0], values[p, 1], values[p, 2]
+                for h in range(a + 2, b):
+                    p = points[h]
+                    x += values[p, 0]
+                    y += values[p, 1]
+                    z += values[p, 2]
+                p = points[a]
+                x += values[p, 0]
+                y += values[p, 1]
+                z += values[p, 2]
+                x, y, z = x / n, y / n, z / n
+                for h in range(a, b):
+                    p = points[h]
+                    out[h, 0] = x + (values[p, 0] - x) * s
+                    out[h, 1] = y + (values[p, 1] - y) * s
+                    out[h, 2] = z + (values[p, 2] - z) * s
+                continue
             for i in range(3):
                 acc = bracket(values, points, a + 1, b, i)
                 acc += values[points[a], i]
@@ -418,6 +437,101 @@ def _compile() -> Any:
     def scaled_copies(values, points, offsets, s, out):
         # faces of 3 to 129 corners (the caller checks)
         split(offsets.size - 1, scaled_copies_part, values, points, offsets, s, out)
+
+    @jit
+    def pentagonalized_old_part(ring, prv, out, lo, hi):  # pragma: no cover
+        # around an old vertex: 5 prev[h] + 2 for its outgoing h, in its order
+        for i in range(lo, hi):
+            out[i] = 5 * prv[ring[i]] + 2
+
+    @jit
+    def pentagonalized_tri_part(eh, twin, prv, out, lo, hi):  # pragma: no cover
+        # around trisection point 2e (of h = eh[e]) and 2e + 1 (of twin[h]):
+        # 5h, 5 prev[h] + 3, 5 twin[h] + 1
+        H = twin.size
+        for e in range(lo, hi):
+            h = eh[e]
+            t = twin[h]
+            r = H + 6 * e
+            out[r] = 5 * h
+            out[r + 1] = 5 * prv[h] + 3
+            out[r + 2] = 5 * t + 1
+            out[r + 3] = 5 * t
+            out[r + 4] = 5 * prv[t] + 3
+            out[r + 5] = 5 * h + 1
+
+    def pentagonalized_rings(ring, eh, twin, prv):
+        # the vertex rings of pentagonalize(mesh) (pentagonal._pentagonalized_rings)
+        H = twin.size
+        out = np.empty(5 * H, twin.dtype)
+        split(H, pentagonalized_old_part, ring, prv, out)
+        split(eh.size, pentagonalized_tri_part, eh, twin, prv, out)
+        out[4 * H :] = np.arange(4, 5 * H, 5, dtype=out.dtype)  # the centres: 5h + 4
+        return out
+
+    @jit
+    def preserved_old_part(ring, ring_off, prv, H, out, lo, hi):  # pragma: no cover
+        # around old vertex v: H + 5 prev[h] + 1 for its outgoing h, in its
+        # order, turned to start at the largest
+        for v in range(lo, hi):
+            a, b = ring_off[v], ring_off[v + 1]
+            top, best = a, -1
+            for i in range(a, b):
+                x = prv[ring[i]]
+                if x > best:
+                    top, best = i, x
+            j = a
+            for i in range(top, b):
+                out[j] = H + 5 * prv[ring[i]] + 1
+                j += 1
+            for i in range(a, top):
+                out[j] = H + 5 * prv[ring[i]] + 1
+                j += 1
+
+    @jit
+    def rotated(out, r, x0, x1, x2, x3, k):  # pragma: no cover - compiled
+        # out[r:r + k] = (x0, .., x_{k-1}) turned to start at the largest
+        top, best = 0, x0
+        if x1 > best:
+            top, best = 1, x1
+        if x2 > best:
+            top, best = 2, x2
+        if k == 4 and x3 > best:
+            top = 3
+        for i in range(k):
+            j = (top + i) % k
+            out[r + i] = x0 if j == 0 else (x1 if j == 1 else (x2 if j == 2 else x3))
+
+    @jit
+    def preserved_mid_part(eh, twin, prv, base, out, lo, hi):  # pragma: no cover
+        # around the midpoint of edge e (h = eh[e]): H + 5h, H + 5 prev[h] + 2,
+        # H + 5 twin[h], H + 5 prev[twin[h]] + 2, turned to start at the largest
+        H = twin.size
+        for e in range(lo, hi):
+            h = eh[e]
+            t = twin[h]
+            x0, x2 = H + 5 * h, H + 5 * t
+            x1 = H + 5 * prv[h] + 2
+            x3 = H + 5 * prv[t] + 2
+            rotated(out, base + 4 * e, x0, x1, x2, x3, 4)
+
+    @jit
+    def preserved_copy_part(prv, base, out, lo, hi):  # pragma: no cover
+        # around the copy vertex of h: h, H + 5 prev[h] + 3, H + 5h + 4, turned
+        # to start at the largest
+        H = prv.size
+        for h in range(lo, hi):
+            x1 = H + 5 * prv[h] + 3
+            rotated(out, base + 3 * h, h, x1, H + 5 * h + 4, 0, 3)
+
+    def preserved_rings(ring, ring_off, eh, twin, prv):
+        # the vertex rings of preserve_pentagons(mesh) (pentagonal._preserved_rings)
+        H, E = twin.size, eh.size
+        out = np.empty(6 * H, twin.dtype)
+        split(ring_off.size - 1, preserved_old_part, ring, ring_off, prv, H, out)
+        split(E, preserved_mid_part, eh, twin, prv, H, out)
+        split(H, preserved_copy_part, prv, H + 4 * E, out)
+        return out
 
     @jit
     def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
@@ -469,5 +583,7 @@ def _compile() -> Any:
         gather=gather,
         halfedge_face=halfedge_face,
         scaled_copies=scaled_copies,
+        pentagonalized_rings=pentagonalized_rings,
+        preserved_rings=preserved_rings,
         pair_twins=pair_twins,
     )

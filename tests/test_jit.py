@@ -283,6 +283,14 @@ def test_preserved_copies_of_long_faces_are_the_same_compiled(compiled, n):
     assert same_bytes(a, b)
 
 
+@pytest.mark.parametrize("op", [pentanb.pentagonalize, pentanb.preserve_pentagons])
+def test_the_paper_schemes_rings_are_the_numpy_rings(corpus_mesh, compiled, op):
+    # the rings the two schemes write for their outputs (the dual's faces)
+    a, b = both(lambda: op(fresh(corpus_mesh)).vertex_ring)
+    for x, y in zip(a, b):
+        assert same_bytes(x, y)
+
+
 def test_start_at_max_is_the_numpy_permutation(compiled):
     from pentanb.schemes._build import start_at_max
 

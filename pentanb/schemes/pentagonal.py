@@ -137,27 +137,25 @@ def _pentagonalized_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     """
     twin = mesh.twin.astype(dt, copy=False)
     ring, ring_off = mesh.vertex_ring
-    H = mesh.n_halfedges
-    k = mesh._uniform_size
-    if k:  # prev[h] is h - 1, or h + k - 1 at a face's first corner: no gathering
-        prv = None
-    else:
+    H, n = mesh.n_halfedges, ring_off.size - 1
+    offsets = np.empty(n + H + mesh.n_faces + 1, dtype=dt)
+    offsets[: n + 1] = ring_off
+    offsets[n + 1 : n + H + 1] = np.arange(H + 3, 4 * H + 1, 3, dtype=dt)
+    offsets[n + H + 1 :] = mesh.offsets[1:]
+    offsets[n + H + 1 :] += 4 * H
+    eh = mesh.edge_halfedge.astype(dt, copy=False)
+    jit = _jit.kernels(5 * H)
+    if jit is not None:  # the same rings, written in one pass
         prv = mesh.prev.astype(dt, copy=False)
-
-    def before(h: np.ndarray) -> np.ndarray:
-        if prv is not None:
-            return prv[h]
-        p = h.astype(dt)
-        p -= 1
-        p[h % k == 0] += k
-        return p
-
+        return jit.pentagonalized_rings(ring.astype(dt, copy=False), eh, twin, prv), offsets
+    # prev[h] from the offsets: an arange and one scatter, then plain gathers
+    # (cheaper than mesh.prev's cache, and than h - 1 fixed at every first corner)
+    prv = _prev_of(mesh.offsets, H, dt)
     out = np.empty(5 * H, dtype=dt)
     old = out[:H]
-    old[:] = before(ring)
+    old[:] = prv[ring]
     old *= 5
     old += 2
-    eh = mesh.edge_halfedge.astype(dt, copy=False)
     back = twin[eh]
     h = np.empty(H, dtype=dt)  # the half-edge of every trisection point
     h[0::2] = eh
@@ -167,18 +165,12 @@ def _pentagonalized_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     across[1::2] = eh
     del back
     tri = out[H : 4 * H].reshape(H, 3)
-    for s, part in enumerate((h, before(h), across)):
+    for s, part in enumerate((h, prv[h], across)):
         col = part * 5
         col += (0, 3, 1)[s]
         tri[:, s] = col
     centre = out[4 * H :]
     centre[:] = np.arange(4, 5 * H, 5, dtype=dt)
-    n = ring_off.size - 1
-    offsets = np.empty(n + H + mesh.n_faces + 1, dtype=dt)
-    offsets[: n + 1] = ring_off
-    offsets[n + 1 : n + H + 1] = np.arange(H + 3, 4 * H + 1, 3, dtype=dt)
-    offsets[n + H + 1 :] = mesh.offsets[1:]
-    offsets[n + H + 1 :] += 4 * H
     return out, offsets
 
 
@@ -285,8 +277,20 @@ def _preserved_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     ring then starts at its largest half-edge, as derived rings do.
     """
     H, E = mesh.n_halfedges, mesh.n_edges
-    prv, twin = mesh.prev.astype(dt, copy=False), mesh.twin.astype(dt, copy=False)
     ring, ring_off = mesh.vertex_ring
+    n = ring_off.size - 1
+    offsets = np.empty(n + E + H + 1, dtype=dt)
+    offsets[: n + 1] = ring_off
+    offsets[n + 1 : n + E + 1] = np.arange(H + 4, H + 4 * E + 1, 4, dtype=dt)
+    offsets[n + E + 1 :] = np.arange(H + 4 * E + 3, H + 4 * E + 3 * H + 1, 3, dtype=dt)
+    jit = _jit.kernels(6 * H)
+    if jit is not None:  # the same rings, each written turned, in one pass
+        twin = mesh.twin.astype(dt, copy=False)
+        eh = mesh.edge_halfedge.astype(dt, copy=False)
+        ring = ring.astype(dt, copy=False)
+        prv = mesh.prev.astype(dt, copy=False)
+        return jit.preserved_rings(ring, ring_off, eh, twin, prv), offsets
+    prv, twin = mesh.prev.astype(dt, copy=False), mesh.twin.astype(dt, copy=False)
     old = prv[ring] * 5
     old += H + 1
     eh = mesh.edge_halfedge.astype(dt, copy=False)
@@ -312,9 +316,4 @@ def _preserved_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
             start_at_max(copies.reshape(-1), None, 3),
         ]
     )
-    n = ring_off.size - 1
-    offsets = np.empty(n + E + H + 1, dtype=dt)
-    offsets[: n + 1] = ring_off
-    offsets[n + 1 : n + E + 1] = np.arange(H + 4, H + 4 * E + 1, 4, dtype=dt)
-    offsets[n + E + 1 :] = np.arange(H + 4 * E + 3, H + 4 * E + 3 * H + 1, 3, dtype=dt)
     return rings, offsets
