@@ -312,13 +312,15 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
     if not isinstance(mesh, Mesh):
         raise TypeError(f"mesh_buffers() expects a pentanb.Mesh, got {type(mesh).__name__}")
     sizes = mesh.face_sizes
-    if not mesh.n_faces or int(sizes.min()) < 3:
+    if not mesh.n_faces or (mesh._uniform_size or int(sizes.min())) < 3:
         return buffers(drawing(mesh))
     v = mesh.vertices.astype(np.float32)  # a copy: the view's array, writeable
     n = len(v)
-    low, high = int(sizes.min()), int(sizes.max())
+    k = mesh._uniform_size
+    low, high = (k, k) if k else (int(sizes.min()), int(sizes.max()))
     table = _bytes(face_rgb(np.arange(low, high + 1)))
-    present = np.flatnonzero(np.bincount(sizes - low))  # sizes - low, ascending
+    # the sizes present, as sizes - low, ascending
+    present = np.zeros(1, np.int64) if k else np.flatnonzero(np.bincount(sizes - low))
     copies = len(present)
     triangles = len(mesh.corners) - 2 * mesh.n_faces
     jit = _jit.kernels(len(mesh.corners))
