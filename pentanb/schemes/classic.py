@@ -329,8 +329,9 @@ def _edge_slot(m, h: np.ndarray, per: int, forward: int, backward: int, dt: np.d
     """``H + per edge[h] + (forward if h is its edge's forward half-edge else backward)``:
     the corner of a face made for every edge (``per`` corners each, after the H
     copied ones)."""
-    col = affine(m.halfedge_edge[h], per, m.n_halfedges, dt)
-    col += np.where(m._forward[h], forward, backward).astype(dt)
+    col = affine(m.halfedge_edge[h], per, m.n_halfedges + backward, dt)
+    if forward != backward:  # (one byte per half-edge, not a where() of ints)
+        col += m._forward[h].view(np.int8) * np.int8(forward - backward)
     return col
 
 
