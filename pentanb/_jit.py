@@ -182,7 +182,12 @@ def split(n: int, kernel: Callable[..., None], *args: Any) -> None:
         return
     cuts = [n * i // parts for i in range(parts + 1)]
     pool = _executor()
-    rest = [pool.submit(kernel, *args, cuts[i], cuts[i + 1]) for i in range(1, parts)]
+    rest = []
+    for i in range(1, parts):
+        try:
+            rest.append(pool.submit(kernel, *args, cuts[i], cuts[i + 1]))
+        except RuntimeError:  # no thread to run it (say, at interpreter exit): run it here
+            kernel(*args, cuts[i], cuts[i + 1])
     try:
         kernel(*args, cuts[0], cuts[1])
     finally:

@@ -413,6 +413,23 @@ def test_a_kernel_error_in_a_thread_reaches_the_caller(monkeypatch):
         _jit.split(10, kernel)
 
 
+def test_parts_no_thread_can_take_run_on_the_calling_thread(monkeypatch):
+    class Refusing:
+        def submit(self, *args):
+            raise RuntimeError("cannot schedule new futures after interpreter shutdown")
+
+    monkeypatch.setattr(_jit, "threads", lambda: 3)
+    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
+    monkeypatch.setattr(_jit, "_executor", Refusing)
+    out = np.zeros(10, int)
+
+    def kernel(out, lo, hi):
+        out[lo:hi] += 1
+
+    _jit.split(10, kernel, out)
+    assert (out == 1).all()
+
+
 @pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
 def test_a_forked_child_gets_its_own_threads(compiled, monkeypatch):
     # the parent's worker threads do not exist in a forked child: work handed
