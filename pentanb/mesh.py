@@ -504,8 +504,18 @@ class Mesh:
 
     def face_size_histogram(self) -> dict[int, int]:
         """``{n: number of n-gons}``, sorted by n."""
-        sizes, counts = np.unique(self.face_sizes, return_counts=True)
-        return {int(s): int(c) for s, c in zip(sizes, counts)}
+        return dict(self._size_counts)
+
+    @_connectivity
+    def _size_counts(self) -> tuple[tuple[int, int], ...]:
+        """``((n, number of n-gons), ...)`` by n: the face-size histogram, counted once."""
+        k, F = self._uniform_size, self.n_faces
+        if k or not F:
+            return ((k, F),) if F else ()
+        sizes = self.face_sizes
+        low = int(sizes.min())
+        counts = np.bincount(sizes - low)
+        return tuple((low + int(s), int(counts[s])) for s in np.flatnonzero(counts))
 
     def valence_histogram(self) -> dict[int, int]:
         """``{k: number of k-valent vertices}``, sorted by k."""

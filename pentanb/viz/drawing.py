@@ -311,16 +311,15 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
     """
     if not isinstance(mesh, Mesh):
         raise TypeError(f"mesh_buffers() expects a pentanb.Mesh, got {type(mesh).__name__}")
-    sizes = mesh.face_sizes
-    if not mesh.n_faces or (mesh._uniform_size or int(sizes.min())) < 3:
+    counts = mesh._size_counts  # (size, faces) by size, counted once per connectivity
+    if not counts or counts[0][0] < 3:
         return buffers(drawing(mesh))
+    sizes = mesh.face_sizes
     v = mesh.vertices.astype(np.float32)  # a copy: the view's array, writeable
     n = len(v)
-    k = mesh._uniform_size
-    low, high = (k, k) if k else (int(sizes.min()), int(sizes.max()))
+    low, high = counts[0][0], counts[-1][0]
     table = _bytes(face_rgb(np.arange(low, high + 1)))
-    # the sizes present, as sizes - low, ascending
-    present = np.zeros(1, np.int64) if k else np.flatnonzero(np.bincount(sizes - low))
+    present = np.array([size - low for size, _ in counts])  # ascending
     copies = len(present)
     triangles = len(mesh.corners) - 2 * mesh.n_faces
     jit = _jit.kernels(len(mesh.corners))
