@@ -1,0 +1,447 @@
+"""The numba kernels behind :mod:`pentanb._jit` (imported only when they are used).
+
+Every kernel is a module-level function, so numba caches its machine code
+on disk (a kernel calling another defined in a closure would be compiled
+again in every process).  Those named ``*_part`` fill the rows ``lo:hi``
+of an output they are given and run through :func:`pentanb._jit.split`;
+the functions without the suffix take the numpy path's arguments and are
+what :func:`pentanb._jit.kernels` hands out.  Each gives the numpy path's
+results bit for bit; ``tests/test_jit.py`` compares them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numba
+import numpy as np
+
+from ._jit import split
+
+jit: Callable = numba.njit(cache=True, nogil=True)
+
+#: What :func:`pentanb._jit.kernels` hands out.
+__all__ = [
+    "face_means_uniform",
+    "face_means_mixed",
+    "fan_index",
+    "edge_index",
+    "start_at_max",
+    "edge_points",
+    "gather",
+    "halfedge_face",
+    "scaled_copies",
+    "pentagonalized_rings",
+    "preserved_rings",
+    "pair_twins",
+]
+
+
+@jit
+def face_means_uniform_part(values, corners, k, out, lo, hi):  # pragma: no cover - compiled
+    # acc = v[c0]; acc += v[c1]; ...; acc / k: the numpy path's order,
+    # every coordinate on its own (three at once for points)
+    d = values.shape[1]
+    if d == 3:
+        for f in range(lo, hi):
+            c = corners[f * k]
+            x, y, z = values[c, 0], values[c, 1], values[c, 2]
+            for j in range(1, k):
+                c = corners[f * k + j]
+                x += values[c, 0]
+                y += values[c, 1]
+                z += values[c, 2]
+            out[f, 0], out[f, 1], out[f, 2] = x / k, y / k, z / k
+        return
+    for f in range(lo, hi):
+        for i in range(d):
+            acc = values[corners[f * k], i]
+            for j in range(1, k):
+                acc += values[corners[f * k + j], i]
+            out[f, i] = acc / k
+
+
+def face_means_uniform(values, corners, k):
+    out = np.empty((corners.size // k, values.shape[1]))
+    split(len(out), face_means_uniform_part, values, corners, k, out)
+    return out
+
+
+@jit
+def bracket(values, corners, a, b, i):  # pragma: no cover - compiled
+    # values[corners[a:b], i] summed as numpy's pairwise sum adds them
+    # (at most 128 terms): left to right below 8; else eight running
+    # sums, joined pairwise, then the remainder left to right
+    n = b - a
+    if n < 8:
+        acc = values[corners[a], i]
+        for h in range(a + 1, b):
+            acc += values[corners[h], i]
+        return acc
+    r0, r1 = values[corners[a], i], values[corners[a + 1], i]
+    r2, r3 = values[corners[a + 2], i], values[corners[a + 3], i]
+    r4, r5 = values[corners[a + 4], i], values[corners[a + 5], i]
+    r6, r7 = values[corners[a + 6], i], values[corners[a + 7], i]
+    h = a + 8
+    while h < b - n % 8:
+        r0 += values[corners[h], i]
+        r1 += values[corners[h + 1], i]
+        r2 += values[corners[h + 2], i]
+        r3 += values[corners[h + 3], i]
+        r4 += values[corners[h + 4], i]
+        r5 += values[corners[h + 5], i]
+        r6 += values[corners[h + 6], i]
+        r7 += values[corners[h + 7], i]
+        h += 8
+    acc = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+    while h < b:
+        acc += values[corners[h], i]
+        h += 1
+    return acc
+
+
+@jit
+def face_means_mixed_part(values, corners, offsets, out, lo, hi):  # pragma: no cover - compiled
+    # faces of at most 129 corners: v[c0] + (v[c1] + v[c2] + ...), over the
+    # size, as np.add.reduceat adds them (the numpy path's order)
+    d = values.shape[1]
+    for f in range(lo, hi):
+        a, b = offsets[f], offsets[f + 1]
+        n = b - a
+        if d == 3 and n <= 8:  # three coordinates at once
+            c = corners[a + 1]
+            x, y, z = values[c, 0], values[c, 1], values[c, 2]
+            for h in range(a + 2, b):
+                c = corners[h]
+                x += values[c, 0]
+                y += values[c, 1]
+                z += values[c, 2]
+            c = corners[a]
+            x += values[c, 0]
+            y += values[c, 1]
+            z += values[c, 2]
+            out[f, 0], out[f, 1], out[f, 2] = x / n, y / n, z / n
+            continue
+        for i in range(d):
+            acc = bracket(values, corners, a + 1, b, i)
+            acc += values[corners[a], i]
+            out[f, i] = acc / n
+
+
+def face_means_mixed(values, corners, offsets):
+    out = np.empty((offsets.size - 1, values.shape[1]))
+    split(len(out), face_means_mixed_part, values, corners, offsets, out)
+    return out
+
+
+@jit
+def fan_index_part(corners, offsets, slot, low, out, lo, hi):  # pragma: no cover - compiled
+    # face f's triangles (c0, c_{j+1}, c_{j+2}), each vertex plus the shift
+    # slot[size - low] of its size (none when slot is empty), from row
+    # offsets[f] - 2 f (faces of at least 3 corners)
+    shifted = slot.size > 0
+    for f in range(lo, hi):
+        a, b = offsets[f], offsets[f + 1]
+        s = slot[b - a - low] if shifted else 0
+        first = corners[a] + s
+        t = 3 * (a - 2 * f)
+        for c in range(a + 1, b - 1):
+            out[t] = first
+            out[t + 1] = corners[c] + s
+            out[t + 2] = corners[c + 1] + s
+            t += 3
+
+
+def fan_index(corners, offsets, slot, low):
+    # every face has at least 3 corners (the caller checks): T = H - 2F triangles
+    m = offsets.size - 1
+    out = np.empty(3 * (corners.size - 2 * m), np.uint32)
+    split(m, fan_index_part, corners, offsets, slot, low, out)
+    return out
+
+
+@jit
+def edge_index_fill(corners, offsets, out):  # pragma: no cover - compiled
+    # every edge once, as (tail, head) of its half-edge with tail < head,
+    # in half-edge order (Mesh.edges); -1 if there are more than out holds
+    m, e, room = offsets.size - 1, 0, out.size
+    for f in range(m):
+        a, b = offsets[f], offsets[f + 1]
+        prev = corners[a]
+        for c in range(a + 1, b + 1):
+            cur = corners[c] if c < b else corners[a]
+            if prev < cur:
+                if e + 2 > room:
+                    return -1
+                out[e] = prev
+                out[e + 1] = cur
+                e += 2
+            prev = cur
+    return e
+
+
+def edge_index(corners, offsets):
+    # a closed mesh has H / 2 edges, which one pass fills; a mesh built
+    # unchecked may have more (a second pass into room for H) or fewer
+    out = np.empty(2 * (corners.size // 2), np.uint32)
+    e = edge_index_fill(corners, offsets, out)
+    if e < 0:  # more than H / 2 (at most one per half-edge)
+        out = np.empty(2 * corners.size, np.uint32)
+        e = edge_index_fill(corners, offsets, out)
+    return out if e == out.size else out[:e].copy()
+
+
+@jit
+def start_at_max_part(ring, offsets, k, out, lo, hi):  # pragma: no cover - compiled
+    # every ring (CSR, or k each when offsets is empty) turned to start at
+    # its largest entry, order kept
+    for v in range(lo, hi):
+        if offsets.size == 0:
+            a, b = v * k, v * k + k
+        else:
+            a, b = offsets[v], offsets[v + 1]
+        top = a
+        for i in range(a + 1, b):
+            if ring[i] > ring[top]:
+                top = i
+        j = a
+        for i in range(top, b):
+            out[j] = ring[i]
+            j += 1
+        for i in range(a, top):
+            out[j] = ring[i]
+            j += 1
+
+
+def start_at_max(ring, offsets, k):
+    out = np.empty_like(ring)
+    n = ring.size // k if offsets.size == 0 else offsets.size - 1
+    split(n, start_at_max_part, ring, offsets, k, out)
+    return out
+
+
+@jit
+def edge_points_part(vertices, edges, t, out, lo, hi):  # pragma: no cover - compiled
+    # point j of edge e: a * (1 - t[j]) + b * t[j], as the numpy path rounds it
+    k = t.size
+    for e in range(lo, hi):
+        a, b = edges[e, 0], edges[e, 1]
+        for j in range(k):
+            s, w = 1.0 - t[j], t[j]
+            for i in range(3):
+                out[e * k + j, i] = vertices[a, i] * s + vertices[b, i] * w
+
+
+def edge_points(vertices, edges, t, out):
+    split(edges.shape[0], edge_points_part, vertices, edges, t, out)
+
+
+@jit
+def gather_part(table, index, out, lo, hi):  # pragma: no cover - compiled
+    for i in range(lo, hi):
+        out[i] = table[index[i]]
+
+
+def gather(table, index):
+    # table[index] for 1-d arrays (indices in range: the caller's arrays)
+    out = np.empty(index.size, table.dtype)
+    split(index.size, gather_part, table, index, out)
+    return out
+
+
+@jit
+def halfedge_face_part(offsets, out, lo, hi):  # pragma: no cover - compiled
+    for f in range(lo, hi):
+        for h in range(offsets[f], offsets[f + 1]):
+            out[h] = f
+
+
+def halfedge_face(offsets, n_corners):
+    # the face of every half-edge: np.repeat(arange(F), sizes)
+    out = np.empty(n_corners, offsets.dtype)
+    split(offsets.size - 1, halfedge_face_part, offsets, out)
+    return out
+
+
+@jit
+def scaled_copies_part(values, points, offsets, s, out, lo, hi):  # pragma: no cover - compiled
+    # every face's points scaled by s about their mean: c + (p - c) * s,
+    # c = (p0 + (p1 + p2 + ...)) / size, np.add.reduceat's order (faces
+    # of at most 129 corners)
+    for f in range(lo, hi):
+        a, b = offsets[f], offsets[f + 1]
+        n = b - a
+        if n <= 8:  # three coordinates at once
+            p = points[a + 1]
+            x, y, z = values[p, 0], values[p, 1], values[p, 2]
+            for h in range(a + 2, b):
+                p = points[h]
+                x += values[p, 0]
+                y += values[p, 1]
+                z += values[p, 2]
+            p = points[a]
+            x += values[p, 0]
+            y += values[p, 1]
+            z += values[p, 2]
+            x, y, z = x / n, y / n, z / n
+            for h in range(a, b):
+                p = points[h]
+                out[h, 0] = x + (values[p, 0] - x) * s
+                out[h, 1] = y + (values[p, 1] - y) * s
+                out[h, 2] = z + (values[p, 2] - z) * s
+            continue
+        for i in range(3):
+            acc = bracket(values, points, a + 1, b, i)
+            acc += values[points[a], i]
+            c = acc / n
+            for h in range(a, b):
+                out[h, i] = c + (values[points[h], i] - c) * s
+
+
+def scaled_copies(values, points, offsets, s, out):
+    # faces of 3 to 129 corners (the caller checks)
+    split(offsets.size - 1, scaled_copies_part, values, points, offsets, s, out)
+
+
+@jit
+def pentagonalized_old_part(ring, prv, out, lo, hi):  # pragma: no cover - compiled
+    # around an old vertex: 5 prev[h] + 2 for its outgoing h, in its order
+    for i in range(lo, hi):
+        out[i] = 5 * prv[ring[i]] + 2
+
+
+@jit
+def pentagonalized_tri_part(eh, twin, prv, out, lo, hi):  # pragma: no cover - compiled
+    # around trisection point 2e (of h = eh[e]) and 2e + 1 (of twin[h]):
+    # 5h, 5 prev[h] + 3, 5 twin[h] + 1
+    H = twin.size
+    for e in range(lo, hi):
+        h = eh[e]
+        t = twin[h]
+        r = H + 6 * e
+        out[r] = 5 * h
+        out[r + 1] = 5 * prv[h] + 3
+        out[r + 2] = 5 * t + 1
+        out[r + 3] = 5 * t
+        out[r + 4] = 5 * prv[t] + 3
+        out[r + 5] = 5 * h + 1
+
+
+def pentagonalized_rings(ring, eh, twin, prv):
+    # the vertex rings of pentagonalize(mesh) (pentagonal._pentagonalized_rings)
+    H = twin.size
+    out = np.empty(5 * H, twin.dtype)
+    split(H, pentagonalized_old_part, ring, prv, out)
+    split(eh.size, pentagonalized_tri_part, eh, twin, prv, out)
+    out[4 * H :] = np.arange(4, 5 * H, 5, dtype=out.dtype)  # the centres: 5h + 4
+    return out
+
+
+@jit
+def preserved_old_part(ring, ring_off, prv, H, out, lo, hi):  # pragma: no cover - compiled
+    # around old vertex v: H + 5 prev[h] + 1 for its outgoing h, in its
+    # order, turned to start at the largest
+    for v in range(lo, hi):
+        a, b = ring_off[v], ring_off[v + 1]
+        top, best = a, -1
+        for i in range(a, b):
+            x = prv[ring[i]]
+            if x > best:
+                top, best = i, x
+        j = a
+        for i in range(top, b):
+            out[j] = H + 5 * prv[ring[i]] + 1
+            j += 1
+        for i in range(a, top):
+            out[j] = H + 5 * prv[ring[i]] + 1
+            j += 1
+
+
+@jit
+def rotated(out, r, x0, x1, x2, x3, k):  # pragma: no cover - compiled
+    # out[r:r + k] = (x0, .., x_{k-1}) turned to start at the largest
+    top, best = 0, x0
+    if x1 > best:
+        top, best = 1, x1
+    if x2 > best:
+        top, best = 2, x2
+    if k == 4 and x3 > best:
+        top = 3
+    for i in range(k):
+        j = (top + i) % k
+        out[r + i] = x0 if j == 0 else (x1 if j == 1 else (x2 if j == 2 else x3))
+
+
+@jit
+def preserved_mid_part(eh, twin, prv, base, out, lo, hi):  # pragma: no cover - compiled
+    # around the midpoint of edge e (h = eh[e]): H + 5h, H + 5 prev[h] + 2,
+    # H + 5 twin[h], H + 5 prev[twin[h]] + 2, turned to start at the largest
+    H = twin.size
+    for e in range(lo, hi):
+        h = eh[e]
+        t = twin[h]
+        x0, x2 = H + 5 * h, H + 5 * t
+        x1 = H + 5 * prv[h] + 2
+        x3 = H + 5 * prv[t] + 2
+        rotated(out, base + 4 * e, x0, x1, x2, x3, 4)
+
+
+@jit
+def preserved_copy_part(prv, base, out, lo, hi):  # pragma: no cover - compiled
+    # around the copy vertex of h: h, H + 5 prev[h] + 3, H + 5h + 4, turned
+    # to start at the largest
+    H = prv.size
+    for h in range(lo, hi):
+        x1 = H + 5 * prv[h] + 3
+        rotated(out, base + 3 * h, h, x1, H + 5 * h + 4, 0, 3)
+
+
+def preserved_rings(ring, ring_off, eh, twin, prv):
+    # the vertex rings of preserve_pentagons(mesh) (pentagonal._preserved_rings)
+    H, E = twin.size, eh.size
+    out = np.empty(6 * H, twin.dtype)
+    split(ring_off.size - 1, preserved_old_part, ring, ring_off, prv, H, out)
+    split(E, preserved_mid_part, eh, twin, prv, H, out)
+    split(H, preserved_copy_part, prv, H + 4 * E, out)
+    return out
+
+
+@jit
+def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
+    # twin of every half-edge u -> w: the one half-edge w -> u, found among
+    # w's outgoing half-edges (a counting sort by tail); an empty array when
+    # some half-edge has no such partner or more than one, or is a loop
+    # (exactly when the numpy path's sorted keys fail to pair)
+    H = tail.size
+    fail = np.empty(0, tail.dtype)
+    if head.size == 0:  # faces of k corners: heads from the tails
+        head = np.empty_like(tail)
+        for h in range(H):
+            head[h] = tail[h + 1] if (h + 1) % k else tail[h + 1 - k]
+    start = np.zeros(n + 1, np.int64)
+    for h in range(H):
+        if tail[h] < 0 or tail[h] >= n:  # out of range: no pairing (and no stray write)
+            return fail
+        start[tail[h] + 1] += 1
+    for v in range(n):
+        start[v + 1] += start[v]
+    fill = start[:-1].copy()
+    out_of = np.empty(H, tail.dtype)  # half-edges by tail
+    for h in range(H):
+        u = tail[h]
+        out_of[fill[u]] = h
+        fill[u] += 1
+    twin = np.empty(H, tail.dtype)
+    for h in range(H):
+        u, w = tail[h], head[h]
+        if u == w:
+            return fail
+        found = 0
+        for i in range(start[w], start[w + 1]):
+            g = out_of[i]
+            if head[g] == u:
+                twin[h] = g
+                found += 1
+        if found != 1:
+            return fail
+    return twin
