@@ -19,6 +19,8 @@ import numpy as np
 from ._jit import split
 
 jit: Callable = numba.njit(cache=True, nogil=True)
+#: Helpers the kernels call, inlined into them (a call per face costs as much as the face).
+inline: Callable = numba.njit(cache=True, nogil=True, inline="always")
 
 #: What :func:`pentanb._jit.kernels` hands out.
 __all__ = [
@@ -100,32 +102,45 @@ def bracket(values, corners, a, b, i):  # pragma: no cover - compiled
     return acc
 
 
+@inline
+def short_mean(values, corners, a, b):  # pragma: no cover - compiled
+    # the mean point of corners[a:b] (at most 8): (v[c1] + ... + v[c_last]) + v[c0],
+    # over the size, np.add.reduceat's order, three coordinates at once
+    c = corners[a + 1]
+    x, y, z = values[c, 0], values[c, 1], values[c, 2]
+    for h in range(a + 2, b):
+        c = corners[h]
+        x += values[c, 0]
+        y += values[c, 1]
+        z += values[c, 2]
+    c = corners[a]
+    x += values[c, 0]
+    y += values[c, 1]
+    z += values[c, 2]
+    n = b - a
+    return x / n, y / n, z / n
+
+
+@inline
+def long_mean(values, corners, a, b, i):  # pragma: no cover - compiled
+    # coordinate i of the mean of corners[a:b] (at most 129): v[c0] + the
+    # pairwise bracket of the rest, over the size (np.add.reduceat's order)
+    acc = bracket(values, corners, a + 1, b, i)
+    acc += values[corners[a], i]
+    return acc / (b - a)
+
+
 @jit
 def face_means_mixed_part(values, corners, offsets, out, lo, hi):  # pragma: no cover - compiled
-    # faces of at most 129 corners: v[c0] + (v[c1] + v[c2] + ...), over the
-    # size, as np.add.reduceat adds them (the numpy path's order)
+    # faces of at most 129 corners, as np.add.reduceat adds them (the numpy path's order)
     d = values.shape[1]
     for f in range(lo, hi):
         a, b = offsets[f], offsets[f + 1]
-        n = b - a
-        if d == 3 and n <= 8:  # three coordinates at once
-            c = corners[a + 1]
-            x, y, z = values[c, 0], values[c, 1], values[c, 2]
-            for h in range(a + 2, b):
-                c = corners[h]
-                x += values[c, 0]
-                y += values[c, 1]
-                z += values[c, 2]
-            c = corners[a]
-            x += values[c, 0]
-            y += values[c, 1]
-            z += values[c, 2]
-            out[f, 0], out[f, 1], out[f, 2] = x / n, y / n, z / n
+        if d == 3 and b - a <= 8:
+            out[f, 0], out[f, 1], out[f, 2] = short_mean(values, corners, a, b)
             continue
         for i in range(d):
-            acc = bracket(values, corners, a + 1, b, i)
-            acc += values[corners[a], i]
-            out[f, i] = acc / n
+            out[f, i] = long_mean(values, corners, a, b, i)
 
 
 def face_means_mixed(values, corners, offsets):
@@ -265,25 +280,12 @@ def halfedge_face(offsets, n_corners):
 
 @jit
 def scaled_copies_part(values, points, offsets, s, out, lo, hi):  # pragma: no cover - compiled
-    # every face's points scaled by s about their mean: c + (p - c) * s,
-    # c = (p0 + (p1 + p2 + ...)) / size, np.add.reduceat's order (faces
-    # of at most 129 corners)
+    # every face's points scaled by s about their mean c: c + (p - c) * s,
+    # c in np.add.reduceat's order (faces of at most 129 corners)
     for f in range(lo, hi):
         a, b = offsets[f], offsets[f + 1]
-        n = b - a
-        if n <= 8:  # three coordinates at once
-            p = points[a + 1]
-            x, y, z = values[p, 0], values[p, 1], values[p, 2]
-            for h in range(a + 2, b):
-                p = points[h]
-                x += values[p, 0]
-                y += values[p, 1]
-                z += values[p, 2]
-            p = points[a]
-            x += values[p, 0]
-            y += values[p, 1]
-            z += values[p, 2]
-            x, y, z = x / n, y / n, z / n
+        if b - a <= 8:
+            x, y, z = short_mean(values, points, a, b)
             for h in range(a, b):
                 p = points[h]
                 out[h, 0] = x + (values[p, 0] - x) * s
@@ -291,9 +293,7 @@ def scaled_copies_part(values, points, offsets, s, out, lo, hi):  # pragma: no c
                 out[h, 2] = z + (values[p, 2] - z) * s
             continue
         for i in range(3):
-            acc = bracket(values, points, a + 1, b, i)
-            acc += values[points[a], i]
-            c = acc / n
+            c = long_mean(values, points, a, b, i)
             for h in range(a, b):
                 out[h, i] = c + (values[points[h], i] - c) * s
 
