@@ -102,7 +102,7 @@ class Table:
             )
         )
         shown = f"{value:,.2f} {unit}" if unit != "x" else f"{value:.2f}x"
-        aim = "" if target is None else (f"<= {target:g}{'x' if unit == 'x' else ' ' + unit}")
+        aim = "" if target is None else (f"<= {target:.3g}{'x' if unit == 'x' else ' ' + unit}")
         verdict = "" if ok is None else ("PASS" if ok else "MISS")
         print(f"  {label:62s} {shown:>16s}  {aim:>12s}  {verdict}  {note}", flush=True)
 
@@ -122,7 +122,7 @@ class Table:
             target = (
                 ""
                 if r["target"] is None
-                else f"<= {r['target']:g}" + ("x" if unit == "x" else f" {unit}")
+                else f"<= {r['target']:.3g}" + ("x" if unit == "x" else f" {unit}")
             )
             verdict = {None: "", True: "pass", False: "**missed**"}[r["ok"]]
             note = f" ({r['note']})" if r["note"] else ""
