@@ -415,11 +415,34 @@ def test_explorer_shows_subdivides_memory_error():
 
 def test_explorer_drives_the_progress_bar():
     e = pentanb.explore("cube", iterations=0)
-    seen = []
+    e.PROGRESS_FACES = 0  # every request counts as long: the bar from the start
+    seen, shown = [], []
     e.progress.observe(lambda c: seen.append(c["new"]), names="value")
+    e.progress.layout.observe(lambda c: shown.append(c["new"]), names="visibility")
     e.iterations.value = 2
     assert max(seen) == e.progress.max == 2 * (1 + e.duals.value)
-    assert e.progress.layout.visibility == "hidden"
+    assert shown == ["visible", "hidden"]
+
+
+def test_a_quick_move_sends_no_progress_but_a_slow_one_does(monkeypatch):
+    e = pentanb.explore("cube", iterations=0)
+    changes = []
+    for label, w in (("steps", e.progress), ("status", e.status)):
+        w.observe(lambda c, label=label: changes.append((label, c["new"])), names="value")
+    e.progress.layout.observe(lambda c: changes.append(("bar", c["new"])), names="visibility")
+    e.iterations.value = 1  # a few hundred faces, well under PROGRESS_AFTER
+    assert changes == []
+    assert e.mesh.n_faces > 6
+    # a move that takes longer than PROGRESS_AFTER shows the bar from then on
+    e.PROGRESS_AFTER = 0.0
+    e.iterations.value = 2
+    assert ("bar", "visible") in changes and changes[-1] == ("status", "")
+    assert max(v for k, v in changes if k == "steps") == 3
+    # and a request that builds PROGRESS_FACES faces shows it before the first step
+    e.PROGRESS_AFTER, e.PROGRESS_FACES = 10.0, 1
+    changes.clear()
+    e.iterations.value = 3
+    assert changes[:3] == [("steps", 0), ("bar", "visible"), ("status", "<i>computing...</i>")]
 
 
 #: (arguments of explore, exception, message): what subdivide refuses, the

@@ -12,6 +12,7 @@ wrong type), never clamped.
 from __future__ import annotations
 
 import html
+import time
 from collections import OrderedDict
 from collections.abc import Callable
 
@@ -62,7 +63,11 @@ class Explorer(W.HBox):
         The scheme's ``scale`` option (disabled for schemes without one).
     wireframe : ipywidgets.Checkbox
     progress : ipywidgets.IntProgress
-        Steps done of a long computation (``subdivide``'s ``progress``).
+        Steps done of a long computation (``subdivide``'s ``progress``):
+        shown from the start when the request builds at least
+        :attr:`PROGRESS_FACES` faces, else once it has run
+        :attr:`PROGRESS_AFTER` seconds (a quick move sends the browser no
+        progress messages).
     status : ipywidgets.HTML
         Empty, or why the last request was refused.
     counts : ipywidgets.HTML
@@ -221,7 +226,27 @@ class Explorer(W.HBox):
             self._sync_scale()
         self.refresh(fit=change["owner"] is self.shape)
 
+    #: A request building at least this many faces (at its largest step)
+    #: shows the progress bar from its start.
+    PROGRESS_FACES = 100_000
+    #: Seconds after which a smaller request shows it.
+    PROGRESS_AFTER = 0.2
+
     # -- work ---------------------------------------------------------------
+    def _largest_steps(self, base: Mesh, iterations: int):
+        """(level, (V, E, F)) of the largest step of every level up to ``iterations``."""
+        scheme, duals = self.scheme.value, self.duals.value
+        counts = (base.n_vertices, base.n_edges, base.n_faces)
+        for level in range(1, iterations + 1):
+            steps = predict_counts(counts, scheme, 1, duals)
+            yield level, max(steps, key=lambda c: c[2])
+            counts = steps[-1]
+
+    def _builds_at_least(self, faces: int) -> bool:
+        """Whether some step of the current request makes ``faces`` faces or more."""
+        base = self._base(self.shape.value)
+        return any(F >= faces for _, (_, _, F) in self._largest_steps(base, self.iterations.value))
+
     def _refuse_too_large(self, base: Mesh, iterations: int) -> None:
         """MeshError when any step up to ``iterations`` passes ``max_faces``.
 
@@ -229,10 +254,7 @@ class Explorer(W.HBox):
         large: milliseconds for any number of iterations.
         """
         scheme, duals = self.scheme.value, self.duals.value
-        counts = (base.n_vertices, base.n_edges, base.n_faces)
-        for level in range(1, iterations + 1):
-            steps = predict_counts(counts, scheme, 1, duals)
-            V, E, F = max(steps, key=lambda c: c[2])
+        for level, (V, E, F) in self._largest_steps(base, iterations):
             if F > self.max_faces:
                 raise MeshError(
                     f"{scheme} x{iterations} with {duals} duals would make a mesh of {F:,} "
@@ -240,7 +262,6 @@ class Explorer(W.HBox):
                     f"draws at most {self.max_faces:,} faces. Lower the iterations, or call "
                     "pentanb.subdivide() yourself."
                 )
-            counts = steps[-1]
 
     def mesh_at(self, iterations: int | None = None, progress: Callable | None = None) -> Mesh:
         """The mesh of the current settings at ``iterations`` (default: the slider's).
@@ -306,16 +327,26 @@ class Explorer(W.HBox):
         A request refused for its size (:class:`pentanb.MeshError`) is
         written in :attr:`status`; the picture keeps the previous mesh.
         """
+        start, shown = time.perf_counter(), False
+
+        def show() -> None:
+            nonlocal shown
+            shown = True
+            self.progress.value = 0
+            self.progress.layout.visibility = "visible"
+            self.status.value = "<i>computing...</i>"
 
         def report(done, total, message):
+            if not shown:
+                if time.perf_counter() - start < self.PROGRESS_AFTER:
+                    return
+                show()
             self.progress.max = max(total, 1)
             self.progress.value = done
             self.status.value = f"<i>computing: {html.escape(message)}</i>"
 
-        if self.key() not in self._cache:
-            self.progress.value = 0
-            self.progress.layout.visibility = "visible"
-            self.status.value = "<i>computing...</i>"
+        if self.key() not in self._cache and self._builds_at_least(self.PROGRESS_FACES):
+            show()
         try:
             mesh = self.mesh_at(progress=report)
         except MeshError as err:
