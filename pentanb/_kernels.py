@@ -35,6 +35,10 @@ __all__ = [
     "scaled_copies",
     "pentagonalized_rings",
     "preserved_rings",
+    "inverse",
+    "cutting_rings",
+    "hexagons_rings",
+    "honeycomb_rings",
     "pair_twins",
 ]
 
@@ -357,7 +361,7 @@ def preserved_old_part(ring, ring_off, prv, H, out, lo, hi):  # pragma: no cover
             j += 1
 
 
-@jit
+@inline
 def rotated(out, r, x0, x1, x2, x3, k):  # pragma: no cover - compiled
     # out[r:r + k] = (x0, .., x_{k-1}) turned to start at the largest
     top, best = 0, x0
@@ -403,6 +407,104 @@ def preserved_rings(ring, ring_off, eh, twin, prv):
     split(ring_off.size - 1, preserved_old_part, ring, ring_off, prv, H, out)
     split(E, preserved_mid_part, eh, twin, prv, H, out)
     split(H, preserved_copy_part, prv, H + 4 * E, out)
+    return out
+
+
+@jit
+def inverse_part(ring, out, lo, hi):  # pragma: no cover - compiled
+    # pos[ring[i]] = i (ring a permutation: the parts write disjoint rows)
+    for i in range(lo, hi):
+        out[ring[i]] = i
+
+
+def inverse(ring):
+    # where every half-edge sits in the vertex rings (_build.inverse)
+    out = np.empty_like(ring)
+    split(ring.size, inverse_part, ring, out)
+    return out
+
+
+@inline
+def edge_slot(edge, forward, h, base, per, f, b):  # pragma: no cover - compiled
+    # base + per * edge[h] + (f if h numbers its edge else b) (classic._edge_slot)
+    return base + per * edge[h] + (f if forward[h] else b)
+
+
+@jit
+def cutting_rings_part(pos, edge, forward, prv, out, lo, hi):  # pragma: no cover - compiled
+    # around the point of h: 3H + pos[h], its edge's quad (slot 1 forward, 3
+    # backward), h's copy, the quad of prev[h]'s edge (0 forward, 2 backward)
+    H = pos.size
+    for h in range(lo, hi):
+        out[4 * h] = 3 * H + pos[h]
+        out[4 * h + 1] = edge_slot(edge, forward, h, H, 4, 1, 3)
+        out[4 * h + 2] = h
+        out[4 * h + 3] = edge_slot(edge, forward, prv[h], H, 4, 0, 2)
+
+
+def cutting_rings(ring, edge, forward, prv):
+    # the vertex rings of corner_cutting(mesh) (classic._cutting_rings)
+    pos = inverse(ring)
+    out = np.empty(4 * ring.size, ring.dtype)
+    split(ring.size, cutting_rings_part, pos, edge, forward, prv, out)
+    return out
+
+
+@jit
+def hexagons_old_part(ring, ring_off, edge, forward, out, lo, hi):  # pragma: no cover
+    # around old vertex v: its edges' hexagons (slot 2 forward, 5 backward),
+    # in its order, turned to start at the largest
+    H = ring.size
+    for v in range(lo, hi):
+        a, b = ring_off[v], ring_off[v + 1]
+        top, best = a, -1
+        for i in range(a, b):
+            x = edge_slot(edge, forward, ring[i], H, 6, 2, 5)
+            if x > best:
+                top, best = i, x
+        j = a
+        for i in range(top, b):
+            out[j] = edge_slot(edge, forward, ring[i], H, 6, 2, 5)
+            j += 1
+        for i in range(a, top):
+            out[j] = edge_slot(edge, forward, ring[i], H, 6, 2, 5)
+            j += 1
+
+
+@jit
+def hexagons_copy_part(edge, forward, prv, out, lo, hi):  # pragma: no cover - compiled
+    # around the copy vertex of h: h, the hexagon of prev[h] (slot 0 forward,
+    # 3 backward), that of h (1 forward, 4 backward), turned to start at the largest
+    H = prv.size
+    for h in range(lo, hi):
+        x1 = edge_slot(edge, forward, prv[h], H, 6, 0, 3)
+        x2 = edge_slot(edge, forward, h, H, 6, 1, 4)
+        rotated(out, H + 3 * h, h, x1, x2, 0, 3)
+
+
+def hexagons_rings(ring, ring_off, edge, forward, prv):
+    # the vertex rings of preserve_hexagons(mesh) (classic._hexagons_rings)
+    H = ring.size
+    out = np.empty(4 * H, ring.dtype)
+    split(ring_off.size - 1, hexagons_old_part, ring, ring_off, edge, forward, out)
+    split(H, hexagons_copy_part, edge, forward, prv, out)
+    return out
+
+
+@jit
+def honeycomb_rings_part(pos, nxt, out, lo, hi):  # pragma: no cover - compiled
+    # around the point of h: h, H + 2 pos[h], H + 2 pos[next[h]] + 1, turned
+    # to start at the largest
+    H = pos.size
+    for h in range(lo, hi):
+        rotated(out, 3 * h, h, H + 2 * pos[h], H + 2 * pos[nxt[h]] + 1, 0, 3)
+
+
+def honeycomb_rings(ring, nxt):
+    # the vertex rings of honeycomb(mesh) (classic._honeycomb_rings)
+    pos = inverse(ring)
+    out = np.empty(3 * ring.size, ring.dtype)
+    split(ring.size, honeycomb_rings_part, pos, nxt, out)
     return out
 
 

@@ -283,9 +283,18 @@ def test_preserved_copies_of_long_faces_are_the_same_compiled(compiled, n):
     assert same_bytes(a, b)
 
 
-@pytest.mark.parametrize("op", [pentanb.pentagonalize, pentanb.preserve_pentagons])
-def test_the_paper_schemes_rings_are_the_numpy_rings(corpus_mesh, compiled, op):
-    # the rings the two schemes write for their outputs (the dual's faces)
+@pytest.mark.parametrize(
+    "op",
+    [
+        pentanb.pentagonalize,
+        pentanb.preserve_pentagons,
+        pentanb.corner_cutting,
+        pentanb.preserve_hexagons,
+        pentanb.honeycomb,
+    ],
+)
+def test_the_rings_schemes_write_are_the_numpy_rings(corpus_mesh, compiled, op):
+    # the rings these schemes write for their outputs (the dual's faces), compiled
     a, b = both(lambda: op(fresh(corpus_mesh)).vertex_ring)
     for x, y in zip(a, b):
         assert same_bytes(x, y)

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import _jit
 from ..mesh import Mesh
 from ._build import (
     affine,
@@ -366,6 +367,11 @@ def _cutting_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     (slot 0 forward, 2 backward)."""
     H = m.n_halfedges
     ring, _ = m.vertex_ring
+    jit = _jit.kernels(4 * H)
+    if jit is not None:  # the same rings, written in one pass
+        edge, prv = m.halfedge_edge.astype(dt, copy=False), m.prev.astype(dt, copy=False)
+        rings = jit.cutting_rings(ring.astype(dt, copy=False), edge, m._forward, prv)
+        return rings, np.arange(0, 4 * H + 1, 4, dtype=dt)
     pos = inverse(ring)
     h = np.arange(H, dtype=dt)
     rings = columns(
@@ -448,6 +454,12 @@ def _hexagons_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     prev[h] (slot 0 forward, 3 backward), that of h (1 forward, 4 backward)."""
     H = m.n_halfedges
     ring, ring_off = m.vertex_ring
+    offsets = np.concatenate([ring_off, np.arange(H + 3, 4 * H + 1, 3, dtype=dt)])
+    jit = _jit.kernels(4 * H)
+    if jit is not None:  # the same rings, each written turned, in one pass
+        edge, prv = m.halfedge_edge.astype(dt, copy=False), m.prev.astype(dt, copy=False)
+        ring = ring.astype(dt, copy=False)
+        return jit.hexagons_rings(ring, ring_off, edge, m._forward, prv), offsets
     h = np.arange(H, dtype=dt)
     copies = columns(dt, H, h, _hex_slot(m, m.prev, 0, 3, dt), _hex_slot(m, h, 1, 4, dt))
     rings = np.concatenate(
@@ -456,7 +468,6 @@ def _hexagons_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
             start_at_max(copies.reshape(-1), None, 3),
         ]
     )
-    offsets = np.concatenate([ring_off, np.arange(H + 3, 4 * H + 1, 3, dtype=dt)])
     return rings, offsets
 
 
@@ -507,6 +518,10 @@ def _honeycomb_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     """Rings of ``honeycomb``: the point of h: ``h, H + 2 pos[h], H + 2 pos[next[h]] + 1``."""
     H = m.n_halfedges
     ring, _ = m.vertex_ring
+    jit = _jit.kernels(3 * H)
+    if jit is not None:  # the same rings, each written turned, in one pass
+        rings = jit.honeycomb_rings(ring.astype(dt, copy=False), m.next.astype(dt, copy=False))
+        return rings, np.arange(0, 3 * H + 1, 3, dtype=dt)
     pos = inverse(ring)
     rings = columns(
         dt, H, np.arange(H, dtype=dt), affine(pos, 2, H, dt), affine(pos[m.next], 2, H + 1, dt)
