@@ -9,8 +9,9 @@ passes by one loop each, giving the *same results bit for bit*:
   (numpy's pairwise bracket for faces of 9 to 129 corners);
 * the explorer's WebGL index arrays: the fan triangles of every face and
   the edges, written straight into uint32 (:func:`pentanb.viz.drawing.mesh_buffers`);
-* the vertex rings the paper's two schemes write for their outputs, rings
-  turned to start at their largest half-edge, the points that split edges,
+* the vertex rings five schemes write for their outputs (the paper's two,
+  corner cutting, hexagon preservation, honeycomb), rings turned to start at
+  their largest half-edge, the points that split edges,
   pentagon preservation's scaled copies, the face of every half-edge and
   the dual's faces gathered from it;
 * twin pairing, by a counting sort of the half-edges on their tails (linear,
