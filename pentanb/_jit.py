@@ -25,7 +25,7 @@ later processes load it.
 
 Kernels whose items are independent (faces, edges, vertices, ring
 entries) release the GIL and cut their items into one part per CPU
-(:func:`threads`, at most 8), run at once by a pool of Python threads
+(:func:`threads`: at most 8, or ``PENTANB_THREADS``), run at once by a pool of Python threads
 (:func:`split`; fewer than :data:`MIN_SPLIT` items stay on one thread).
 Each part writes its own rows, so the results do not depend on the number
 of threads.  A forked child starts a pool of its own.
@@ -142,7 +142,21 @@ def kernels(corners: int) -> Any | None:
 
 
 def threads() -> int:
-    """Threads the kernels split their work over: the CPUs this process may use, at most 8."""
+    """Threads the kernels split their work over.
+
+    ``PENTANB_THREADS`` (a positive integer) when set, else the CPUs this
+    process may use, at most 8.
+
+    Raises
+    ------
+    ValueError
+        ``PENTANB_THREADS`` is set to anything but a positive integer.
+    """
+    flag = os.environ.get("PENTANB_THREADS", "").strip()
+    if flag:
+        if not flag.isdigit() or int(flag) < 1:
+            raise ValueError(f"PENTANB_THREADS must be a positive integer, got {flag!r}")
+        return int(flag)
     try:
         n = len(os.sched_getaffinity(0))
     except (AttributeError, OSError):  # not Linux

@@ -410,6 +410,21 @@ def test_split_covers_every_item_once_in_parts(monkeypatch):
         assert sorted(seen)[0][0] == 0 and sorted(seen)[-1][1] == n
 
 
+def test_pentanb_threads_sets_the_parts(monkeypatch):
+    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
+    for value, parts in (("1", 1), ("3", 3), (" 2 ", 2)):
+        monkeypatch.setenv("PENTANB_THREADS", value)
+        seen: list[tuple[int, int]] = []
+        _jit.split(30, lambda lo, hi, seen=seen: seen.append((lo, hi)))
+        assert len(seen) == parts, value
+    for bad in ("0", "-2", "two", "1.5"):
+        monkeypatch.setenv("PENTANB_THREADS", bad)
+        with pytest.raises(ValueError, match="PENTANB_THREADS must be a positive integer"):
+            _jit.threads()
+    monkeypatch.delenv("PENTANB_THREADS")
+    assert 1 <= _jit.threads() <= 8
+
+
 def test_a_kernel_error_in_a_thread_reaches_the_caller(monkeypatch):
     monkeypatch.setattr(_jit, "threads", lambda: 2)
     monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
