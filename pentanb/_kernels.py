@@ -39,6 +39,8 @@ __all__ = [
     "cutting_rings",
     "hexagons_rings",
     "honeycomb_rings",
+    "corner_points",
+    "honeycomb_points",
     "pair_twins",
 ]
 
@@ -505,6 +507,41 @@ def honeycomb_rings(ring, nxt):
     pos = inverse(ring)
     out = np.empty(3 * ring.size, ring.dtype)
     split(ring.size, honeycomb_rings_part, pos, nxt, out)
+    return out
+
+
+@jit
+def corner_points_part(vertices, corners, centres, face_of, s, out, lo, hi):  # pragma: no cover
+    # c + s * (v - c) for every half-edge: its tail v, its face's centre c
+    for h in range(lo, hi):
+        v, f = corners[h], face_of[h]
+        for i in range(3):
+            c = centres[f, i]
+            out[h, i] = c + s * (vertices[v, i] - c)
+
+
+def corner_points(vertices, corners, centres, face_of, s):
+    # classic._corner_points
+    out = np.empty((corners.size, 3))
+    split(corners.size, corner_points_part, vertices, corners, centres, face_of, s, out)
+    return out
+
+
+@jit
+def honeycomb_points_part(
+    vertices, corners, head, centres, face_of, out, lo, hi
+):  # pragma: no cover
+    # (tail + head + the face's centre) / 3 for every half-edge, added in that order
+    for h in range(lo, hi):
+        u, w, f = corners[h], head[h], face_of[h]
+        for i in range(3):
+            out[h, i] = (vertices[u, i] + vertices[w, i] + centres[f, i]) / 3.0
+
+
+def honeycomb_points(vertices, corners, head, centres, face_of):
+    # the points of classic.honeycomb
+    out = np.empty((corners.size, 3))
+    split(corners.size, honeycomb_points_part, vertices, corners, head, centres, face_of, out)
     return out
 
 

@@ -293,9 +293,14 @@ def test_preserved_copies_of_long_faces_are_the_same_compiled(compiled, n):
         pentanb.honeycomb,
     ],
 )
-def test_the_rings_schemes_write_are_the_numpy_rings(corpus_mesh, compiled, op):
-    # the rings these schemes write for their outputs (the dual's faces), compiled
-    a, b = both(lambda: op(fresh(corpus_mesh)).vertex_ring)
+def test_the_points_and_rings_schemes_write_are_the_numpy_ones(corpus_mesh, compiled, op):
+    # the positions and the rings these schemes write for their outputs (the
+    # dual's faces), compiled
+    def run():
+        out = op(fresh(corpus_mesh))
+        return (out.vertices, *out.vertex_ring)
+
+    a, b = both(run)
     for x, y in zip(a, b):
         assert same_bytes(x, y)
 
