@@ -456,6 +456,11 @@ def linear(table: Table, runs: int, clock, clock_name: str) -> dict:
             "in one pentanb.keep_freed_memory() block",
             dict(keep=True),
         )
+        if COMPILED:  # both opt-ins: fast and linear
+            variants["compiled, keep_freed_memory"] = (
+                "compiled kernels in one pentanb.keep_freed_memory() block",
+                dict(compiled=True, keep=True),
+            )
     for key, (label, how) in variants.items():
         other = linear_times(runs, clock, **how)
         s1, l1 = per_face(other)
