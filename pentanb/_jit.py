@@ -12,8 +12,9 @@ passes by one loop each, giving the *same results bit for bit*:
 * the vertex rings five schemes write for their outputs (the paper's two,
   corner cutting, hexagon preservation, honeycomb), rings turned to start at
   their largest half-edge, the points that split edges,
-  pentagon preservation's scaled copies, the face of every half-edge and
-  the dual's faces gathered from it;
+  pentagon preservation's scaled copies, the new points of corner cutting,
+  hexagon preservation and honeycomb, the face of every half-edge and the
+  dual's faces gathered from it;
 * twin pairing, by a counting sort of the half-edges on their tails (linear,
   where the numpy path sorts packed keys), refusing exactly what it refuses.
 
