@@ -283,17 +283,14 @@ def _preserved_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     offsets[: n + 1] = ring_off
     offsets[n + 1 : n + E + 1] = np.arange(H + 4, H + 4 * E + 1, 4, dtype=dt)
     offsets[n + E + 1 :] = np.arange(H + 4 * E + 3, H + 4 * E + 3 * H + 1, 3, dtype=dt)
+    prv, twin = mesh.prev.astype(dt, copy=False), mesh.twin.astype(dt, copy=False)
+    eh = mesh.edge_halfedge.astype(dt, copy=False)
     jit = _jit.kernels(6 * H)
     if jit is not None:  # the same rings, each written turned, in one pass
-        twin = mesh.twin.astype(dt, copy=False)
-        eh = mesh.edge_halfedge.astype(dt, copy=False)
-        ring = ring.astype(dt, copy=False)
-        prv = mesh.prev.astype(dt, copy=False)
-        return jit.preserved_rings(ring, ring_off, eh, twin, prv), offsets
-    prv, twin = mesh.prev.astype(dt, copy=False), mesh.twin.astype(dt, copy=False)
+        rings = jit.preserved_rings(ring.astype(dt, copy=False), ring_off, eh, twin, prv)
+        return rings, offsets
     old = prv[ring] * 5
     old += H + 1
-    eh = mesh.edge_halfedge.astype(dt, copy=False)
     back = twin[eh]
     mids = np.empty((E, 4), dtype=dt)
     for s, (part, add) in enumerate(((eh, 0), (prv[eh], 2), (back, 0), (prv[back], 2))):
