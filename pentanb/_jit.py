@@ -145,8 +145,8 @@ def kernels(corners: int) -> Any | None:
 def threads() -> int:
     """Threads the kernels split their work over.
 
-    ``PENTANB_THREADS`` (a positive integer) when set, else the CPUs this
-    process may use, at most 8.
+    ``PENTANB_THREADS`` (a positive integer, at most 64 used) when set, else
+    the CPUs this process may use, at most 8.
 
     Raises
     ------
@@ -157,7 +157,7 @@ def threads() -> int:
     if flag:
         if not flag.isdigit() or int(flag) < 1:
             raise ValueError(f"PENTANB_THREADS must be a positive integer, got {flag!r}")
-        return int(flag)
+        return min(int(flag), 64)
     try:
         n = len(os.sched_getaffinity(0))
     except (AttributeError, OSError):  # not Linux

@@ -426,6 +426,8 @@ def test_pentanb_threads_sets_the_parts(monkeypatch):
         monkeypatch.setenv("PENTANB_THREADS", bad)
         with pytest.raises(ValueError, match="PENTANB_THREADS must be a positive integer"):
             _jit.threads()
+    monkeypatch.setenv("PENTANB_THREADS", "100000")  # not 100,000 threads
+    assert _jit.threads() == 64
     monkeypatch.delenv("PENTANB_THREADS")
     assert 1 <= _jit.threads() <= 8
 
