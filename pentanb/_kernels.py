@@ -420,7 +420,7 @@ def inverse_part(ring, out, lo, hi):  # pragma: no cover - compiled
 
 
 def inverse(ring):
-    # where every half-edge sits in the vertex rings (_build.inverse)
+    # where every half-edge sits in the vertex rings (what _build.inverse hands out)
     out = np.empty_like(ring)
     split(ring.size, inverse_part, ring, out)
     return out
@@ -444,11 +444,11 @@ def cutting_rings_part(pos, edge, forward, prv, out, lo, hi):  # pragma: no cove
         out[4 * h + 3] = edge_slot(edge, forward, prv[h], H, 4, 0, 2)
 
 
-def cutting_rings(ring, edge, forward, prv):
-    # the vertex rings of corner_cutting(mesh) (classic._cutting_rings)
-    pos = inverse(ring)
-    out = np.empty(4 * ring.size, ring.dtype)
-    split(ring.size, cutting_rings_part, pos, edge, forward, prv, out)
+def cutting_rings(pos, edge, forward, prv):
+    # the vertex rings of corner_cutting(mesh) (classic._cutting_rings); pos:
+    # where every half-edge sits in the input's rings (_build.inverse)
+    out = np.empty(4 * pos.size, pos.dtype)
+    split(pos.size, cutting_rings_part, pos, edge, forward, prv, out)
     return out
 
 
@@ -502,11 +502,11 @@ def honeycomb_rings_part(pos, nxt, out, lo, hi):  # pragma: no cover - compiled
         rotated(out, 3 * h, h, H + 2 * pos[h], H + 2 * pos[nxt[h]] + 1, 0, 3)
 
 
-def honeycomb_rings(ring, nxt):
-    # the vertex rings of honeycomb(mesh) (classic._honeycomb_rings)
-    pos = inverse(ring)
-    out = np.empty(3 * ring.size, ring.dtype)
-    split(ring.size, honeycomb_rings_part, pos, nxt, out)
+def honeycomb_rings(pos, nxt):
+    # the vertex rings of honeycomb(mesh) (classic._honeycomb_rings); pos as
+    # for cutting_rings
+    out = np.empty(3 * pos.size, pos.dtype)
+    split(pos.size, honeycomb_rings_part, pos, nxt, out)
     return out
 
 

@@ -124,6 +124,9 @@ def columns(dt: np.dtype, rows: int, *cols: np.ndarray | int) -> np.ndarray:
 
 def inverse(ring: np.ndarray) -> np.ndarray:
     """``pos`` with ``pos[ring[i]] = i``: where every half-edge sits in the vertex rings."""
+    jit = _jit.kernels(ring.size)
+    if jit is not None:  # the same scatter, in parts over the threads
+        return jit.inverse(ring)
     pos = np.empty_like(ring)
     pos[ring] = np.arange(ring.size, dtype=ring.dtype)
     return pos

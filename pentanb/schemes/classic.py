@@ -371,12 +371,12 @@ def _cutting_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     (slot 0 forward, 2 backward)."""
     H = m.n_halfedges
     ring, _ = m.vertex_ring
+    pos = inverse(ring.astype(dt, copy=False))
     jit = _jit.kernels(4 * H)
     if jit is not None:  # the same rings, written in one pass
         edge, prv = m.halfedge_edge.astype(dt, copy=False), m.prev.astype(dt, copy=False)
-        rings = jit.cutting_rings(ring.astype(dt, copy=False), edge, m._forward, prv)
+        rings = jit.cutting_rings(pos, edge, m._forward, prv)
         return rings, np.arange(0, 4 * H + 1, 4, dtype=dt)
-    pos = inverse(ring)
     h = np.arange(H, dtype=dt)
     rings = columns(
         dt,
@@ -526,11 +526,11 @@ def _honeycomb_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     """Rings of ``honeycomb``: the point of h: ``h, H + 2 pos[h], H + 2 pos[next[h]] + 1``."""
     H = m.n_halfedges
     ring, _ = m.vertex_ring
+    pos = inverse(ring.astype(dt, copy=False))
     jit = _jit.kernels(3 * H)
     if jit is not None:  # the same rings, each written turned, in one pass
-        rings = jit.honeycomb_rings(ring.astype(dt, copy=False), m.next.astype(dt, copy=False))
+        rings = jit.honeycomb_rings(pos, m.next.astype(dt, copy=False))
         return rings, np.arange(0, 3 * H + 1, 3, dtype=dt)
-    pos = inverse(ring)
     rings = columns(
         dt, H, np.arange(H, dtype=dt), affine(pos, 2, H, dt), affine(pos[m.next], 2, H + 1, dt)
     )
