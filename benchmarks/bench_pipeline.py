@@ -26,16 +26,18 @@ When numba is installed (``pip install -e .[jit]``), the rows of 2., 3. and
 and the optional compiled kernels (:mod:`pentanb._jit`), the latter marked
 "compiled kernels".  Every other row is the numpy path.
 
-4.'s time ratio is also measured with every run inside one
-``pentanb.keep_freed_memory()`` block (glibc only: malloc serves the arrays
-from its heap and keeps what is freed), the opt-in for building meshes of
-millions of faces.
+By default (glibc only), an operator on at least
+``pentanb._malloc.AUTO_HALFEDGES`` half-edges makes malloc keep freed memory
+for reuse until some seconds after it ends (``PENTANB_KEEP_FREED``); 4.'s
+time ratio is also measured with every run inside one
+``pentanb.keep_freed_memory()`` block, which covers the small mesh too.
 
 Two diagnoses ride along, without targets: page faults (memory the kernel
 hands over fresh) per slider move and per 1,000 faces of the pipeline, with
-the per-face ratio of 4. again in a child process whose glibc malloc keeps
-freed memory for reuse (``KEEP_FREED``); and trimesh's ``subdivide()`` of the
-slider's mesh, the machine's speed against the issue's table.
+the per-face ratio of 4. again in a child process that keeps nothing
+(``PENTANB_KEEP_FREED=0``: the default until this keeping was added); and
+trimesh's ``subdivide()`` of the slider's mesh, the machine's speed against
+the issue's table.
 
 then, for every scheme, the memory guard's estimate against the measured peak
 and the largest mesh that the default limit (half the physical memory) lets
@@ -164,10 +166,10 @@ def peak_bytes(fn: Callable[[], object]) -> tuple[int, object]:
     return peak, out
 
 
-# glibc's malloc gives arrays above its mmap threshold (at most 32 MiB) pages
-# fresh from the kernel and returns them when freed; these two variables make
-# it serve every array from its heap and keep what is freed, for reuse
-KEEP_FREED = {"MALLOC_MMAP_THRESHOLD_": str(2**32), "MALLOC_TRIM_THRESHOLD_": str(2**36)}
+# pentanb keeps no freed memory by itself: glibc's malloc gives arrays above
+# its mmap threshold (at most 32 MiB) pages fresh from the kernel and returns
+# them when freed
+NOTHING_KEPT = {"PENTANB_KEEP_FREED": "0"}
 
 
 def minor_faults() -> int:
@@ -417,15 +419,15 @@ def per_face(run: dict) -> tuple[float, float]:
     )
 
 
-def linear_keeping_freed_memory(runs: int, clock_name: str) -> dict | None:
-    """``linear_times`` again in a child process whose malloc keeps freed memory (KEEP_FREED)."""
+def linear_child(runs: int, clock_name: str, env: dict[str, str]) -> dict | None:
+    """``linear_times`` again in a child process with ``env``, and the child's peak RSS."""
     import subprocess
 
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "linear.json"
         cmd = [sys.executable, __file__, "--runs", str(runs), "--clock", clock_name]
-        cmd += ["--linear-times", str(out)]
-        done = subprocess.run(cmd, env={**os.environ, **KEEP_FREED}, capture_output=True)
+        cmd += ["--linear-times", str(out), "--no-warm"]  # (its resident peak is the runs')
+        done = subprocess.run(cmd, env={**os.environ, **env}, capture_output=True)
         if done.returncode or not out.exists():
             print(done.stderr.decode()[-2000:], file=sys.stderr)
             return None
@@ -475,18 +477,27 @@ def linear(table: Table, runs: int, clock, clock_name: str) -> dict:
             f"{faults:.1f} page faults per 1,000 faces at 5,242,880",
         )
         run[key] = other
-    kept = linear_keeping_freed_memory(runs, clock_name)
-    if kept is not None:
-        s2, l2 = per_face(kept)
+    # the same in two fresh processes, with and without the keeping: times and resident peak
+    for key, label, env in (
+        ("default_child", "by default", {}),
+        ("keeping_nothing_child", "keeping no freed memory", NOTHING_KEPT),
+    ):
+        child = linear_child(runs, clock_name, env)
+        if child is None:
+            continue
+        s2, l2 = per_face(child)
+        faults = 1000 * median(child["faults"]["large"]) / child["faces"]["large"]
+        how = " ".join(f"{k}={v}" for k, v in env.items()) or "no setting"
         table.add(
             sec,
-            "per-face time 5,242,880 / 327,680, malloc keeping freed memory",
+            f"per-face time 5,242,880 / 327,680, {label}, child process",
             l2 / s2,
             "x",
-            note=f"a child process with {' '.join(f'{k}={v}' for k, v in KEEP_FREED.items())}: "
-            f"{1e6 * s2:.2f} and {1e6 * l2:.2f} us per face",
+            note=f"{how}: {1e6 * s2:.2f} and {1e6 * l2:.2f} us per face; "
+            f"{faults:.1f} page faults per 1,000 faces at 5,242,880; "
+            f"peak resident {child['maxrss'] / 2**30:.2f} GiB",
         )
-        run["keeping_freed_memory_child"] = kept
+        run[key] = child
     mem = {}
     v2, f2 = icosphere(9)
     for label, (v, f) in {"1,310,720": icosphere(8), "5,242,880": (v2, f2)}.items():
@@ -638,7 +649,11 @@ def main(argv=None) -> int:
     clock = CLOCKS[args.clock]
     _jit.use_jit(False)  # the numpy path, except where a row says "compiled kernels"
     if args.linear_times:  # linear()'s child process: the runs it was given
-        Path(args.linear_times).write_text(json.dumps(linear_times(args.runs, clock)))
+        import resource
+
+        done = linear_times(args.runs, clock)
+        done["maxrss"] = 1024 * resource.getrusage(resource.RUSAGE_SELF).ru_maxrss  # bytes
+        Path(args.linear_times).write_text(json.dumps(done))
         return 0
     sections = set(args.only or ["speed", "slider", "linear", "guard", "io"])
     if args.quick:

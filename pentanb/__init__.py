@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from . import shapes, topology
 from ._jit import use_jit
-from ._malloc import keep_freed_memory
+from ._malloc import keep_freed_memory, release_freed_memory
 from .io import read, write
 from .mesh import Mesh, MeshError
 from .notation import conway
@@ -74,6 +74,7 @@ __all__ = [
     "ConvergenceError",
     "use_jit",
     "keep_freed_memory",
+    "release_freed_memory",
 ]
 
 # drawing functions: imported on first use, so that `import pentanb` needs numpy only

@@ -38,7 +38,7 @@ from typing import Any, Generic, TypeVar, overload
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from . import _jit
+from . import _jit, _malloc
 
 __all__ = ["Mesh", "MeshError", "fan_triangle_corners"]
 
@@ -805,8 +805,10 @@ class Mesh:
         the mesh is valid (:meth:`_valid`); only a mesh that fails one is
         checked again, in order, by :meth:`_validate_exactly`, which finds
         the first culprit and names it.  The twins and vertex rings the
-        checks derive stay cached.
+        checks derive stay cached.  A mesh of millions of faces lets malloc
+        keep freed memory for the work that follows (:func:`pentanb._malloc.note_work`).
         """
+        _malloc.note_work(self._corners.size)
         if not self._valid():
             self._validate_exactly()
 

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 import textwrap
+import time
 
 import pytest
 
@@ -28,13 +30,32 @@ class FakeLibc:
         return 1
 
 
+def _stop_reaper() -> None:
+    """End the reaper thread, if one runs, without its switching anything."""
+    reaper = _malloc._state["reaper"]
+    if reaper is not None:
+        with _malloc._wake:
+            _malloc._state["until"] = 0.0
+            _malloc._state["depth"] += 1  # it sees a block and only ends
+            _malloc._wake.notify_all()
+        reaper.join(5)
+        with _malloc._wake:
+            _malloc._state["depth"] -= 1
+    assert _malloc._state["reaper"] is None
+
+
 @pytest.fixture
 def fake(monkeypatch):
+    _stop_reaper()
     libc = FakeLibc()
     monkeypatch.setitem(_malloc._state, "libc", libc)
     monkeypatch.setitem(_malloc._state, "looked", True)
     monkeypatch.setitem(_malloc._state, "depth", 0)
-    return libc
+    monkeypatch.setitem(_malloc._state, "on", False)
+    monkeypatch.setitem(_malloc._state, "until", 0.0)
+    monkeypatch.delenv("PENTANB_KEEP_FREED", raising=False)
+    yield libc
+    _stop_reaper()
 
 
 KEEP = [("mallopt", -3, 2**31 - 1), ("mallopt", -1, -1)]
@@ -109,3 +130,177 @@ def test_inside_the_block_a_freed_array_is_reused_without_fresh_pages():
     # at least: 32 faults); inside, the freed array's memory is reused
     assert outside >= 32, outside
     assert inside <= 4, inside
+
+
+# ------------------------------------------------------------------ by itself
+
+
+def _wait_for_reaper() -> None:
+    reaper = _malloc._state["reaper"]
+    assert reaper is not None, "no reaper thread was started"
+    reaper.join(10)
+    assert not reaper.is_alive()
+
+
+def test_an_operator_below_the_threshold_changes_nothing(fake):
+    pentanb.pentagonalize(pentanb.shapes.cube())
+    _malloc.note_work(_malloc.AUTO_HALFEDGES - 1)
+    assert fake.calls == []
+    assert _malloc._state["reaper"] is None
+
+
+def test_large_work_keeps_freed_memory_then_the_reaper_gives_it_back(fake, monkeypatch):
+    monkeypatch.setenv("PENTANB_KEEP_FREED", "0.05")
+    monkeypatch.setattr(_malloc, "_SECONDS_PER_HALFEDGE", 0.0)
+    _malloc.note_work(_malloc.AUTO_HALFEDGES)
+    assert fake.calls == KEEP
+    _malloc.note_work(_malloc.AUTO_HALFEDGES)  # already on: nothing set twice
+    assert fake.calls == KEEP
+    _wait_for_reaper()
+    assert fake.calls == KEEP + AFTER
+    assert _malloc._state["on"] is False
+
+
+def test_the_keeping_lasts_while_the_operator_is_expected_to_run(fake, monkeypatch):
+    monkeypatch.setattr(_malloc, "AUTO_HALFEDGES", 10)
+    before = time.monotonic()
+    _malloc.note_work(10**6)
+    until = _malloc._state["until"]
+    # DEFAULT_SECONDS after the expected end of work on 10**6 half-edges
+    assert until >= before + _malloc.DEFAULT_SECONDS + 10**6 * _malloc._SECONDS_PER_HALFEDGE
+    assert until <= time.monotonic() + _malloc.DEFAULT_SECONDS + 1.0
+
+
+@pytest.mark.parametrize("op", ["constructor", "pentagonalize", "dual", "subdivide", "conway"])
+def test_operators_and_the_constructor_announce_their_work(fake, monkeypatch, op):
+    cube = pentanb.shapes.cube()
+    monkeypatch.setattr(_malloc, "AUTO_HALFEDGES", 24)  # a cube has 24 half-edges
+    run = {
+        "constructor": lambda: pentanb.Mesh(cube.vertices, cube.faces),
+        "pentagonalize": lambda: pentanb.pentagonalize(cube),
+        "dual": lambda: pentanb.dual(cube),
+        "subdivide": lambda: pentanb.subdivide(cube, "preserve_pentagons", 1),
+        "conway": lambda: pentanb.conway("a", cube),
+    }[op]
+    run()
+    assert fake.calls == KEEP
+
+
+def test_zero_seconds_keeps_nothing(fake, monkeypatch):
+    monkeypatch.setenv("PENTANB_KEEP_FREED", "0")
+    _malloc.note_work(_malloc.AUTO_HALFEDGES)
+    assert fake.calls == []
+    assert _malloc._state["reaper"] is None
+
+
+@pytest.mark.parametrize("value", ["ten", "-1", "nan", "inf", "1e400"])
+def test_a_bad_keep_freed_setting_is_a_valueerror_naming_it(fake, monkeypatch, value):
+    monkeypatch.setenv("PENTANB_KEEP_FREED", value)
+    with pytest.raises(ValueError, match=r"PENTANB_KEEP_FREED must be a number of seconds >= 0"):
+        _malloc.note_work(_malloc.AUTO_HALFEDGES)
+    assert fake.calls == []
+
+
+def test_seconds_reads_the_environment(monkeypatch):
+    monkeypatch.delenv("PENTANB_KEEP_FREED", raising=False)
+    assert _malloc.seconds() == _malloc.DEFAULT_SECONDS
+    monkeypatch.setenv("PENTANB_KEEP_FREED", " 2.5 ")
+    assert _malloc.seconds() == 2.5
+
+
+def test_a_refused_setting_leaves_the_operator_running(fake):
+    fake.accept = 0
+    _malloc.note_work(_malloc.AUTO_HALFEDGES)  # no exception
+    assert fake.calls == [("mallopt", -3, 2**31 - 1)] + AFTER[:2]
+    assert _malloc._state["on"] is False
+    assert _malloc._state["reaper"] is None
+
+
+def test_release_gives_the_memory_back_at_once(fake):
+    _malloc.note_work(_malloc.AUTO_HALFEDGES)
+    assert fake.calls == KEEP
+    assert pentanb.release_freed_memory() is True
+    assert fake.calls == KEEP + AFTER
+    _wait_for_reaper()  # it wakes, finds nothing to do, and ends
+    assert fake.calls == KEEP + AFTER
+
+
+def test_release_inside_a_block_waits_for_the_block(fake):
+    with pentanb.keep_freed_memory():
+        _malloc.note_work(_malloc.AUTO_HALFEDGES)
+        assert pentanb.release_freed_memory() is False
+        assert fake.calls == KEEP
+    assert fake.calls == KEEP + AFTER
+
+
+def test_a_block_ending_before_the_large_work_stops_leaves_it_to_the_reaper(fake, monkeypatch):
+    monkeypatch.setenv("PENTANB_KEEP_FREED", "0.2")
+    monkeypatch.setattr(_malloc, "_SECONDS_PER_HALFEDGE", 0.0)
+    with pentanb.keep_freed_memory():
+        _malloc.note_work(_malloc.AUTO_HALFEDGES)
+    assert fake.calls == KEEP  # kept: the operator asked for 0.2 s more
+    _wait_for_reaper()
+    assert fake.calls == KEEP + AFTER
+
+
+def test_the_reaper_leaves_a_running_block_alone(fake, monkeypatch):
+    monkeypatch.setenv("PENTANB_KEEP_FREED", "0.01")
+    monkeypatch.setattr(_malloc, "_SECONDS_PER_HALFEDGE", 0.0)
+    with pentanb.keep_freed_memory():
+        _malloc.note_work(_malloc.AUTO_HALFEDGES)
+        _wait_for_reaper()
+        assert fake.calls == KEEP
+    assert fake.calls == KEEP + AFTER
+
+
+def test_without_glibc_large_work_changes_nothing(monkeypatch):
+    monkeypatch.setitem(_malloc._state, "libc", None)
+    monkeypatch.setitem(_malloc._state, "looked", True)
+    _malloc.note_work(_malloc.AUTO_HALFEDGES)
+    assert _malloc._state["reaper"] is None
+    assert pentanb.release_freed_memory() is False
+
+
+AUTO_CHILD = textwrap.dedent(
+    """
+    import os, resource, sys, time
+    import numpy as np, pentanb
+    from pentanb import _malloc
+
+    def faults_of_a_reused_array():
+        a = np.ones(8_000_000)  # 64 MB
+        del a
+        before = resource.getrusage(resource.RUSAGE_SELF).ru_minflt
+        b = np.ones(8_000_000)
+        return resource.getrusage(resource.RUSAGE_SELF).ru_minflt - before
+
+    _malloc.AUTO_HALFEDGES = 24
+    pentanb.pentagonalize(pentanb.shapes.cube())  # "large" work
+    faults_of_a_reused_array()
+    kept = faults_of_a_reused_array()
+    pid = os.fork()
+    if pid == 0:  # the child stops keeping, and can start again
+        ok = _malloc._state["on"] is False and _malloc._state["reaper"] is None
+        pentanb.pentagonalize(pentanb.shapes.cube())
+        ok = ok and _malloc._state["on"] is True and _malloc._state["reaper"] is not None
+        os._exit(0 if ok else 3)
+    _, status = os.waitpid(pid, 0)
+    _malloc._state["reaper"].join(10)  # PENTANB_KEEP_FREED=0.3 s later
+    given_back = faults_of_a_reused_array()
+    print(kept, given_back, os.waitstatus_to_exitcode(status))
+    """
+)
+
+
+def test_large_work_reuses_freed_memory_until_the_reaper_gives_it_back():
+    if not _malloc.supported():
+        pytest.skip("malloc is not glibc's here")
+    env = {**os.environ, "PENTANB_KEEP_FREED": "0.3", "PENTANB_JIT": "0"}
+    done = subprocess.run(
+        [sys.executable, "-c", AUTO_CHILD], capture_output=True, text=True, env=env, timeout=120
+    )
+    assert done.returncode == 0, done.stderr
+    kept, given_back, child = map(int, done.stdout.split())
+    assert kept <= 4, kept  # reused while kept
+    assert given_back >= 32, given_back  # fresh pages again once given back
+    assert child == 0, "a forked child kept the parent's keeping, or could not start its own"

@@ -13,7 +13,7 @@ from typing import Any, TypeVar
 
 import numpy as np
 
-from .. import _jit
+from .. import _jit, _malloc
 from ..mesh import _SAFE_EXTENT, Mesh, MeshError, Rings, _index_dtype
 
 _Op = TypeVar("_Op", bound=Callable[..., Mesh])
@@ -281,9 +281,15 @@ def check_count(value: object, name: str) -> int:
 
 
 def check_mesh(mesh: object, op: str) -> Mesh:
-    """``mesh`` itself, or a TypeError naming the operator when it is not a Mesh."""
+    """``mesh`` itself, or a TypeError naming the operator when it is not a Mesh.
+
+    Every operator starts with it, so it also tells the memory policy how
+    large the work is: on millions of faces malloc keeps freed memory for
+    the next array (:func:`pentanb._malloc.note_work`).
+    """
     if not isinstance(mesh, Mesh):
         raise TypeError(f"{op} expects a pentanb.Mesh, got {type(mesh).__name__}")
+    _malloc.note_work(mesh.n_halfedges)
     return mesh
 
 
