@@ -304,3 +304,21 @@ def test_large_work_reuses_freed_memory_until_the_reaper_gives_it_back():
     assert kept <= 4, kept  # reused while kept
     assert given_back >= 32, given_back  # fresh pages again once given back
     assert child == 0, "a forked child kept the parent's keeping, or could not start its own"
+
+
+def test_a_slider_move_keeps_freed_memory_whatever_its_size(fake, monkeypatch):
+    pytest.importorskip("pythreejs")
+    e = pentanb.explore(pentanb.shapes.cube(), "preserve_pentagons", iterations=0, duals=2)
+    try:
+        assert pentanb.release_freed_memory() is True  # what opening it kept, given back
+        fake.calls.clear()
+        e.iterations.value = 1  # 24 faces: far below AUTO_HALFEDGES
+        assert fake.calls == KEEP
+        assert _malloc._state["until"] > time.monotonic()
+        pentanb.release_freed_memory()
+        fake.calls.clear()
+        monkeypatch.setenv("PENTANB_KEEP_FREED", "0")
+        e.iterations.value = 2
+        assert fake.calls == []
+    finally:
+        e.close()
