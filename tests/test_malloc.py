@@ -233,23 +233,20 @@ def test_release_inside_a_block_waits_for_the_block(fake):
     assert fake.calls == KEEP + AFTER
 
 
-def test_a_block_ending_before_the_large_work_stops_leaves_it_to_the_reaper(fake, monkeypatch):
-    monkeypatch.setenv("PENTANB_KEEP_FREED", "0.2")
+@pytest.mark.parametrize("ends_last", ["the large work", "the block"])
+def test_whichever_of_a_block_and_large_work_ends_last_gives_the_memory_back(
+    fake, monkeypatch, ends_last
+):
+    monkeypatch.setenv("PENTANB_KEEP_FREED", "0.2" if ends_last == "the large work" else "0.01")
     monkeypatch.setattr(_malloc, "_SECONDS_PER_HALFEDGE", 0.0)
     with pentanb.keep_freed_memory():
         _malloc.note_work(_malloc.AUTO_HALFEDGES)
-    assert fake.calls == KEEP  # kept: the operator asked for 0.2 s more
-    _wait_for_reaper()
-    assert fake.calls == KEEP + AFTER
-
-
-def test_the_reaper_leaves_a_running_block_alone(fake, monkeypatch):
-    monkeypatch.setenv("PENTANB_KEEP_FREED", "0.01")
-    monkeypatch.setattr(_malloc, "_SECONDS_PER_HALFEDGE", 0.0)
-    with pentanb.keep_freed_memory():
-        _malloc.note_work(_malloc.AUTO_HALFEDGES)
-        _wait_for_reaper()
+        if ends_last == "the block":
+            _wait_for_reaper()  # the reaper leaves a running block alone
         assert fake.calls == KEEP
+    if ends_last == "the large work":
+        assert fake.calls == KEEP  # kept: the operator asked for 0.2 s more
+        _wait_for_reaper()
     assert fake.calls == KEEP + AFTER
 
 
