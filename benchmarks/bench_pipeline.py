@@ -179,6 +179,23 @@ def minor_faults() -> int:
     return resource.getrusage(resource.RUSAGE_SELF).ru_minflt
 
 
+def reset_resident_peak() -> None:
+    """Linux: start this process's resident peak (VmHWM) again from what it holds now."""
+    with contextlib.suppress(OSError):
+        Path("/proc/self/clear_refs").write_text("5")
+
+
+def resident_peak() -> int:
+    """This process's resident peak in bytes (Linux: VmHWM; else ru_maxrss)."""
+    with contextlib.suppress(OSError):
+        for line in Path("/proc/self/status").read_text().splitlines():
+            if line.startswith("VmHWM:"):
+                return 1024 * int(line.split()[1])
+    import resource
+
+    return 1024 * resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+
+
 def icosphere(subdivisions: int):
     import trimesh
 
@@ -382,14 +399,19 @@ def slider(table: Table, runs: int, clock) -> dict:
     return out
 
 
-def linear_times(runs: int, clock, compiled: bool = False, keep: bool = False) -> dict:
+def linear_times(
+    runs: int, clock, compiled: bool = False, keep: bool = False, inputs_built=None
+) -> dict:
     """Seconds and page faults of the pipeline, small and large alternating, one process.
 
-    ``keep``: every run inside one ``pentanb.keep_freed_memory()`` block.
+    ``keep``: every run inside one ``pentanb.keep_freed_memory()`` block;
+    ``inputs_built()``, if given, is called once the input arrays are built.
     """
     v1, f1 = icosphere(7)
     v2, f2 = icosphere(9)
     assert len(f1) == 327_680 and len(f2) == 5_242_880
+    if inputs_built is not None:
+        inputs_built()
     faults: dict[str, list[int]] = {"small": [], "large": []}
 
     def counted(name, v, f):
@@ -420,13 +442,13 @@ def per_face(run: dict) -> tuple[float, float]:
 
 
 def linear_child(runs: int, clock_name: str, env: dict[str, str]) -> dict | None:
-    """``linear_times`` again in a child process with ``env``, and the child's peak RSS."""
+    """``linear_times`` again in a child process with ``env``, and the resident peak of its runs."""
     import subprocess
 
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "linear.json"
         cmd = [sys.executable, __file__, "--runs", str(runs), "--clock", clock_name]
-        cmd += ["--linear-times", str(out), "--no-warm"]  # (its resident peak is the runs')
+        cmd += ["--linear-times", str(out)]
         done = subprocess.run(cmd, env={**os.environ, **env}, capture_output=True)
         if done.returncode or not out.exists():
             print(done.stderr.decode()[-2000:], file=sys.stderr)
@@ -495,7 +517,7 @@ def linear(table: Table, runs: int, clock, clock_name: str) -> dict:
             "x",
             note=f"{how}: {1e6 * s2:.2f} and {1e6 * l2:.2f} us per face; "
             f"{faults:.1f} page faults per 1,000 faces at 5,242,880; "
-            f"peak resident {child['maxrss'] / 2**30:.2f} GiB",
+            f"resident peak of the runs {child['maxrss'] / 2**30:.2f} GiB",
         )
         run[key] = child
     mem = {}
@@ -649,10 +671,8 @@ def main(argv=None) -> int:
     clock = CLOCKS[args.clock]
     _jit.use_jit(False)  # the numpy path, except where a row says "compiled kernels"
     if args.linear_times:  # linear()'s child process: the runs it was given
-        import resource
-
-        done = linear_times(args.runs, clock)
-        done["maxrss"] = 1024 * resource.getrusage(resource.RUSAGE_SELF).ru_maxrss  # bytes
+        done = linear_times(args.runs, clock, inputs_built=reset_resident_peak)
+        done["maxrss"] = resident_peak()
         Path(args.linear_times).write_text(json.dumps(done))
         return 0
     sections = set(args.only or ["speed", "slider", "linear", "guard", "io"])
