@@ -1702,3 +1702,16 @@ def fan_triangle_corners(offsets: ArrayLike) -> tuple[IntArray, IntArray]:
     k = np.arange(tri_face.size, dtype=np.int64) - (np.cumsum(per) - per)[tri_face]
     tris = np.stack([start, start + k + 1, start + k + 2], axis=1)
     return _readonly(tris), _readonly(tri_face)
+
+
+def check_mesh(mesh: object, op: str) -> Mesh:
+    """``mesh`` itself, or a TypeError naming ``op`` when it is not a Mesh.
+
+    Every operator, writer and position solver starts with it, so it also
+    tells the memory policy how large the work is: on millions of faces
+    malloc keeps freed memory for the next array (:func:`pentanb._malloc.note_work`).
+    """
+    if not isinstance(mesh, Mesh):
+        raise TypeError(f"{op} expects a pentanb.Mesh, got {type(mesh).__name__}")
+    _malloc.note_work(mesh.n_halfedges)
+    return mesh

@@ -53,7 +53,7 @@ from typing import Literal, overload
 import numpy as np
 
 from .analysis.measures import face_planarity
-from .mesh import Mesh, MeshError
+from .mesh import Mesh, MeshError, check_mesh
 
 __all__ = ["canonical", "planarize", "PlacementReport", "ConvergenceError", "tangency_points"]
 
@@ -229,7 +229,7 @@ def canonical(
         (unless ``report``) the tolerance was not reached or the result is
         not convex; the error carries the report and the best positions.
     """
-    _check_mesh(mesh, "canonical")
+    check_mesh(mesh, "canonical")
     if mesh.n_components != 1 or mesh.genus != 0:
         raise MeshError(
             f"the canonical form needs a connected genus-0 mesh; this one has "
@@ -287,11 +287,6 @@ def canonical(
             out,
         )
     return out
-
-
-def _check_mesh(mesh, name: str) -> None:
-    if not isinstance(mesh, Mesh):
-        raise TypeError(f"{name} expects a pentanb.Mesh, got {type(mesh).__name__}")
 
 
 def _check_tolerance(tolerance) -> float:
@@ -822,7 +817,7 @@ def planarize(
     ConvergenceError
         (unless ``report``) the tolerance was not reached.
     """
-    _check_mesh(mesh, "planarize")
+    check_mesh(mesh, "planarize")
     tolerance = _check_tolerance(tolerance)
     start = time.perf_counter()
     scale = _mean_edge_length(mesh)

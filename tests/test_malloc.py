@@ -171,8 +171,10 @@ def test_the_keeping_lasts_while_the_operator_is_expected_to_run(fake, monkeypat
     assert until <= time.monotonic() + _malloc.DEFAULT_SECONDS + 1.0
 
 
-@pytest.mark.parametrize("op", ["constructor", "pentagonalize", "dual", "subdivide", "conway"])
-def test_operators_and_the_constructor_announce_their_work(fake, monkeypatch, op):
+@pytest.mark.parametrize(
+    "op", ["constructor", "pentagonalize", "dual", "subdivide", "conway", "write", "canonical"]
+)
+def test_operators_and_the_constructor_announce_their_work(fake, monkeypatch, tmp_path, op):
     cube = pentanb.shapes.cube()
     monkeypatch.setattr(_malloc, "AUTO_HALFEDGES", 24)  # a cube has 24 half-edges
     run = {
@@ -181,6 +183,8 @@ def test_operators_and_the_constructor_announce_their_work(fake, monkeypatch, op
         "dual": lambda: pentanb.dual(cube),
         "subdivide": lambda: pentanb.subdivide(cube, "preserve_pentagons", 1),
         "conway": lambda: pentanb.conway("a", cube),
+        "write": lambda: pentanb.write(cube, tmp_path / "cube.obj"),
+        "canonical": lambda: pentanb.canonical(cube),
     }[op]
     run()
     assert fake.calls == KEEP

@@ -40,7 +40,7 @@ from typing import Any
 import numpy as np
 
 from .. import schemes as _schemes
-from ..mesh import Mesh, MeshError
+from ..mesh import Mesh, MeshError, check_mesh
 from ..schemes.registry import Scheme, get_scheme
 from ..subdivision import estimate_bytes, predict_counts, subdivide
 
@@ -487,8 +487,7 @@ def subdivision_matrix(
     >>> S.shape
     (38, 8)
     """
-    if not isinstance(mesh, Mesh):
-        raise TypeError(f"subdivision_matrix expects a pentanb.Mesh, got {type(mesh).__name__}")
+    check_mesh(mesh, "subdivision_matrix")
     s = get_scheme(scheme)
     # subdivide's own checks: counts, options, memory (nothing is built here)
     subdivide(mesh, s, 0, duals, max_bytes=max_bytes, **options)

@@ -23,6 +23,7 @@ from typing import IO, Any
 import numpy as np
 
 from ..mesh import Mesh, MeshError, _as_vertices
+from ..mesh import check_mesh as check_mesh  # (the readers and writers take it from here)
 
 #: The file formats, by the suffix that names them.
 FORMATS = {".obj": "obj", ".off": "off", ".ply": "ply", ".stl": "stl"}
@@ -49,13 +50,6 @@ def as_path(path: Any, caller: str) -> Path:
             f"{caller} expects a file path (str or os.PathLike), got {type(path).__name__}"
         )
     return Path(path)
-
-
-def check_mesh(mesh: Any, caller: str) -> Mesh:
-    """``mesh`` itself, or a TypeError naming ``caller`` if it is not a Mesh."""
-    if not isinstance(mesh, Mesh):
-        raise TypeError(f"{caller} expects a pentanb.Mesh, got {type(mesh).__name__}")
-    return mesh
 
 
 def format_of(path: Path, format: str | None) -> str:

@@ -13,8 +13,8 @@ from typing import Any, TypeVar
 
 import numpy as np
 
-from .. import _jit, _malloc
-from ..mesh import _SAFE_EXTENT, Mesh, MeshError, Rings, _index_dtype
+from .. import _jit
+from ..mesh import _SAFE_EXTENT, Mesh, MeshError, Rings, _index_dtype, check_mesh
 
 _Op = TypeVar("_Op", bound=Callable[..., Mesh])
 
@@ -278,19 +278,6 @@ def check_count(value: object, name: str) -> int:
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
         raise ValueError(f"{name} must be a non-negative integer, got {value!r}")
     return int(value)
-
-
-def check_mesh(mesh: object, op: str) -> Mesh:
-    """``mesh`` itself, or a TypeError naming the operator when it is not a Mesh.
-
-    Every operator starts with it, so it also tells the memory policy how
-    large the work is: on millions of faces malloc keeps freed memory for
-    the next array (:func:`pentanb._malloc.note_work`).
-    """
-    if not isinstance(mesh, Mesh):
-        raise TypeError(f"{op} expects a pentanb.Mesh, got {type(mesh).__name__}")
-    _malloc.note_work(mesh.n_halfedges)
-    return mesh
 
 
 def check_vertex_faces(mesh: Mesh, op: str, valence: np.ndarray | None = None) -> None:

@@ -34,7 +34,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import _jit
-from ..mesh import Mesh
+from ..mesh import Mesh, check_mesh
 from .colors import EDGE_COLOR, face_color, face_label, face_rgb, hex_to_rgb
 
 __all__ = [
@@ -156,8 +156,7 @@ def drawing(
     -------
     Drawing
     """
-    if not isinstance(mesh, Mesh):
-        raise TypeError(f"drawing() expects a pentanb.Mesh, got {type(mesh).__name__}")
+    check_mesh(mesh, "drawing()")
     v = np.asarray(mesh.vertices, dtype=np.float64)
     triangles, triangle_face = mesh.fan_triangles()
     return Drawing(
@@ -309,8 +308,7 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
     came from; with the optional compiled kernels (:mod:`pentanb._jit`), on
     a large mesh, they are written from the faces straight into uint32.
     """
-    if not isinstance(mesh, Mesh):
-        raise TypeError(f"mesh_buffers() expects a pentanb.Mesh, got {type(mesh).__name__}")
+    check_mesh(mesh, "mesh_buffers()")
     counts = mesh._size_counts  # (size, faces) by size, counted once per connectivity
     if not counts or counts[0][0] < 3:
         return buffers(drawing(mesh))
