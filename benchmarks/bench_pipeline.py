@@ -34,10 +34,11 @@ time ratio is also measured with every run inside one
 
 Two diagnoses ride along, without targets: page faults (memory the kernel
 hands over fresh) per slider move and per 1,000 faces of the pipeline, with
-the per-face ratio of 4. again in a child process that keeps nothing
-(``PENTANB_KEEP_FREED=0``: the default until this keeping was added); and
-trimesh's ``subdivide()`` of the slider's mesh, the machine's speed against
-the issue's table.
+the per-face ratio of 4. again in two fresh child processes, by default and
+keeping nothing (``PENTANB_KEEP_FREED=0``: the default until this keeping was
+added), each with the resident peak of its runs; and trimesh's
+``subdivide()`` of the slider's mesh, the machine's speed against the issue's
+table.
 
 then, for every scheme, the memory guard's estimate against the measured peak
 and the largest mesh that the default limit (half the physical memory) lets
@@ -517,7 +518,7 @@ def linear(table: Table, runs: int, clock, clock_name: str) -> dict:
             "x",
             note=f"{how}: {1e6 * s2:.2f} and {1e6 * l2:.2f} us per face; "
             f"{faults:.1f} page faults per 1,000 faces at 5,242,880; "
-            f"resident peak of the runs {child['maxrss'] / 2**30:.2f} GiB",
+            f"resident peak of the runs {child['resident_peak'] / 2**30:.2f} GiB",
         )
         run[key] = child
     mem = {}
@@ -672,7 +673,7 @@ def main(argv=None) -> int:
     _jit.use_jit(False)  # the numpy path, except where a row says "compiled kernels"
     if args.linear_times:  # linear()'s child process: the runs it was given
         done = linear_times(args.runs, clock, inputs_built=reset_resident_peak)
-        done["maxrss"] = resident_peak()
+        done["resident_peak"] = resident_peak()
         Path(args.linear_times).write_text(json.dumps(done))
         return 0
     sections = set(args.only or ["speed", "slider", "linear", "guard", "io"])
