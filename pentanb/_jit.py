@@ -26,10 +26,10 @@ later processes load it.
 
 Kernels whose items are independent (faces, edges, vertices, ring
 entries) release the GIL and cut their items into one part per CPU
-(:func:`threads`: at most 8, or ``PENTANB_THREADS``), run at once by a pool of Python threads
+(:func:`threads`: at most 8, or ``PENTANB_THREADS``), run at once by worker threads
 (:func:`split`; fewer than :data:`MIN_SPLIT` items stay on one thread).
 Each part writes its own rows, so the results do not depend on the number
-of threads.  A forked child starts a pool of its own.
+of threads.  A forked child starts threads of its own.
 
 Switch them with the environment variable ``PENTANB_JIT`` (``0``: off,
 ``1``: on, refused without numba), read when first needed, or at run time
@@ -38,6 +38,7 @@ with :func:`pentanb.use_jit`.  ``benchmarks/bench_pipeline.py`` reports both pat
 
 from __future__ import annotations
 
+import atexit
 import importlib.util
 import os
 import threading
@@ -168,47 +169,129 @@ def threads() -> int:
 #: Work items (faces, edges, vertices) below which a kernel runs on one thread.
 MIN_SPLIT = 1 << 14
 
-_pool: dict[str, Any] = {"executor": None, "pid": None}
-_pool_lock = threading.Lock()
+
+class _Worker:
+    """One thread that runs the parts handed to it, one at a time.
+
+    Work is handed over through two locks (held while there is nothing to
+    run, and until the part is done): about 30 µs a part on a small
+    machine, where a ``concurrent.futures`` pool takes about 100.
+    """
+
+    def __init__(self, name: str):
+        self._go = threading.Lock()
+        self._go.acquire()
+        self._done = threading.Lock()
+        self._done.acquire()
+        self._job: tuple[Callable[..., None], tuple] | None = None
+        self._error: BaseException | None = None
+        threading.Thread(target=self._run, name=name, daemon=True).start()
+
+    def _run(self) -> None:
+        while True:
+            self._go.acquire()
+            job, self._job = self._job, None
+            try:
+                if job is not None:
+                    job[0](*job[1])
+            except BaseException as err:  # handed to the caller by wait()
+                self._error = err
+            finally:
+                self._done.release()
+
+    def start(self, kernel: Callable[..., None], args: tuple) -> None:
+        self._job = (kernel, args)
+        self._go.release()
+
+    def wait(self) -> BaseException | None:
+        """Wait for the part to end; its exception, if it raised one."""
+        self._done.acquire()
+        err, self._error = self._error, None
+        return err
 
 
-def _executor() -> Any:
-    """The worker threads (started on first use, again in a forked child)."""
-    with _pool_lock:
-        if _pool["executor"] is None or _pool["pid"] != os.getpid():
-            from concurrent.futures import ThreadPoolExecutor
+_crew: dict[str, Any] = {"workers": [], "pid": None, "closed": False}
+#: Held by the thread whose parts the workers run (another thread meanwhile
+#: runs its parts itself).
+_busy = threading.Lock()
 
-            _pool["executor"] = ThreadPoolExecutor(
-                max_workers=threads() - 1, thread_name_prefix="pentanb-kernel"
-            )
-            _pool["pid"] = os.getpid()
-        return _pool["executor"]
+
+def _workers(k: int) -> list[_Worker] | None:
+    """``k`` idle worker threads, started on first use (again in a forked child).
+
+    None once the interpreter is exiting (a daemon thread may then be
+    stopped with a part unfinished).  The caller holds :data:`_busy`.
+    """
+    if _crew["closed"]:
+        return None
+    if _crew["pid"] != os.getpid():  # (a forked child has none of its parent's threads)
+        _crew["workers"], _crew["pid"] = [], os.getpid()
+    workers = _crew["workers"]
+    try:
+        while len(workers) < k:
+            workers.append(_Worker(f"pentanb-kernel-{len(workers)}"))
+    except RuntimeError:  # no new thread now (say, at interpreter exit)
+        pass
+    return workers[:k] if len(workers) >= k else None
+
+
+def _close_crew() -> None:
+    _crew["closed"] = True
+
+
+atexit.register(_close_crew)
 
 
 def split(n: int, kernel: Callable[..., None], *args: Any) -> None:
     """Run ``kernel(*args, lo, hi)`` over ``range(n)`` cut into one part per thread.
 
     The kernels release the GIL and write disjoint parts of their output,
-    so the parts run at once; the calling thread runs the first.  Below
-    :data:`MIN_SPLIT` items, or with one CPU, it is one call.
+    so the parts run at once; the calling thread runs the first, worker
+    threads (:class:`_Worker`) the others.  Below :data:`MIN_SPLIT` items,
+    or with one CPU, it is one call.  While another thread's parts are
+    running, or once the interpreter is exiting, every part runs on the
+    calling thread, one after the other.  An exception of any part reaches
+    the caller, once every part has ended.
     """
     parts = min(threads(), n // MIN_SPLIT)
     if parts <= 1:
         kernel(*args, 0, n)
         return
     cuts = [n * i // parts for i in range(parts + 1)]
-    pool = _executor()
-    rest = []
-    for i in range(1, parts):
-        try:
-            rest.append(pool.submit(kernel, *args, cuts[i], cuts[i + 1]))
-        except RuntimeError:  # no thread to run it (say, at interpreter exit): run it here
+    if not _busy.acquire(blocking=False):
+        for i in range(parts):
             kernel(*args, cuts[i], cuts[i + 1])
+        return
     try:
-        kernel(*args, cuts[0], cuts[1])
+        workers = _workers(parts - 1)
+        if workers is None:
+            for i in range(parts):
+                kernel(*args, cuts[i], cuts[i + 1])
+            return
+        for i, worker in enumerate(workers, 1):
+            worker.start(kernel, args + (cuts[i], cuts[i + 1]))
+        try:
+            kernel(*args, cuts[0], cuts[1])
+        finally:
+            errors = _wait(workers)
+        if errors:
+            raise errors[0]
     finally:
-        for future in rest:
-            future.result()
+        _busy.release()
+
+
+def _wait(workers: list[_Worker]) -> list[BaseException]:
+    """Wait for every worker's part; the exceptions they raised."""
+    errors = []
+    for worker in workers:
+        try:
+            err = worker.wait()
+        except BaseException:  # interrupted (Ctrl-C): some parts may still be running;
+            _crew["workers"] = []  # later calls get new threads, never these
+            raise
+        if err is not None:
+            errors.append(err)
+    return errors
 
 
 def _compile() -> Any:

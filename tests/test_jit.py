@@ -13,6 +13,7 @@ import dataclasses
 import os
 import signal
 import sys
+import threading
 import time
 import warnings
 
@@ -444,21 +445,134 @@ def test_a_kernel_error_in_a_thread_reaches_the_caller(monkeypatch):
         _jit.split(10, kernel)
 
 
-def test_parts_no_thread_can_take_run_on_the_calling_thread(monkeypatch):
-    class Refusing:
-        def submit(self, *args):
-            raise RuntimeError("cannot schedule new futures after interpreter shutdown")
-
+@pytest.mark.parametrize("why", ["interpreter exiting", "no thread can start"])
+def test_parts_no_thread_can_take_run_on_the_calling_thread(monkeypatch, why):
     monkeypatch.setattr(_jit, "threads", lambda: 3)
     monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
-    monkeypatch.setattr(_jit, "_executor", Refusing)
+    if why == "interpreter exiting":  # (what the atexit hook sets)
+        monkeypatch.setitem(_jit._crew, "closed", True)
+    else:
+        monkeypatch.setitem(_jit._crew, "workers", [])
+
+        def refuse(name):
+            raise RuntimeError("can't create new thread at interpreter shutdown")
+
+        monkeypatch.setattr(_jit, "_Worker", refuse)
+    calls: list[str] = []
     out = np.zeros(10, int)
 
     def kernel(out, lo, hi):
+        calls.append(threading.current_thread().name)
         out[lo:hi] += 1
 
     _jit.split(10, kernel, out)
-    assert (out == 1).all()
+    assert (out == 1).all() and calls == [threading.current_thread().name] * 3
+
+
+def test_the_workers_are_started_once_and_reused(monkeypatch):
+    monkeypatch.setattr(_jit, "threads", lambda: 3)
+    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
+    names: set[str] = set()
+
+    def kernel(out, lo, hi):
+        names.add(threading.current_thread().name)
+        out[lo:hi] += 1
+
+    out = np.zeros(30, int)
+    _jit.split(30, kernel, out)
+    before = {t.ident for t in threading.enumerate() if t.name.startswith("pentanb-kernel")}
+    for _ in range(50):
+        _jit.split(30, kernel, out)
+    after = {t.ident for t in threading.enumerate() if t.name.startswith("pentanb-kernel")}
+    assert (out == 51).all()
+    assert after == before and len(before) >= 2  # no thread per call
+    assert {"pentanb-kernel-0", "pentanb-kernel-1"} <= names
+
+
+def test_every_part_ends_before_an_error_reaches_the_caller(monkeypatch):
+    # the calling thread's part raises at once; the worker's part is still
+    # writing: split may only return once nothing writes into the output
+    monkeypatch.setattr(_jit, "threads", lambda: 2)
+    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
+    out = np.zeros(10, int)
+
+    def kernel(out, lo, hi):
+        if lo == 0:
+            raise ValueError("first part")
+        time.sleep(0.2)
+        out[lo:hi] = 1
+
+    with pytest.raises(ValueError, match="first part"):
+        _jit.split(10, kernel, out)
+    assert (out[5:] == 1).all()
+    # and the workers take the next call's parts as before
+    out[:] = 0
+    _jit.split(10, lambda out, lo, hi: out.__setitem__(slice(lo, hi), 2), out)
+    assert (out == 2).all()
+
+
+def test_a_thread_runs_its_own_parts_while_the_workers_are_busy(monkeypatch):
+    # thread A's part holds the worker; a split on this thread meanwhile
+    # must run both its parts itself, at once, not queue behind A's
+    monkeypatch.setattr(_jit, "threads", lambda: 2)
+    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
+    entered, release = threading.Event(), threading.Event()
+
+    def slow(lo, hi):
+        if lo > 0:  # the worker's part
+            entered.set()
+            release.wait(10)
+
+    first = threading.Thread(target=_jit.split, args=(10, slow))
+    first.start()
+    assert entered.wait(10)
+    timer = threading.Timer(3, release.set)  # (a split that queued would wait for it)
+    timer.start()
+    names: list[str] = []
+    second = threading.Thread(  # (a thread, so that a split that deadlocks fails the test)
+        target=_jit.split,
+        args=(10, lambda lo, hi: names.append(threading.current_thread().name)),
+        name="second",
+        daemon=True,
+    )
+    second.start()
+    second.join(10)
+    at_once = not release.is_set()
+    release.set()
+    first.join(10)
+    timer.cancel()
+    assert not second.is_alive() and not first.is_alive()
+    assert names == ["second", "second"] and at_once
+
+
+def test_two_threads_splitting_at_once_both_get_every_part(monkeypatch):
+    # while one thread's parts run on the workers, another thread runs its
+    # own parts itself: both outputs complete, none written twice
+    monkeypatch.setattr(_jit, "threads", lambda: 3)
+    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
+    outs = [np.zeros(3000, int) for _ in range(2)]
+    failures: list[BaseException] = []
+
+    def kernel(out, lo, hi):
+        for i in range(lo, hi):
+            out[i] += 1
+            if i % 500 == 0:
+                time.sleep(0.001)
+
+    def run(out):
+        try:
+            for _ in range(20):
+                _jit.split(out.size, kernel, out)
+        except BaseException as err:
+            failures.append(err)
+
+    threads = [threading.Thread(target=run, args=(out,)) for out in outs]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(60)
+    assert not failures and not any(t.is_alive() for t in threads)
+    assert all((out == 20).all() for out in outs)
 
 
 @pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
