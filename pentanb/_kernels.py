@@ -33,6 +33,7 @@ __all__ = [
     "gather",
     "halfedge_face",
     "scaled_copies",
+    "preserved_faces",
     "pentagonalized_rings",
     "preserved_rings",
     "inverse",
@@ -307,6 +308,29 @@ def scaled_copies_part(values, points, offsets, s, out, lo, hi):  # pragma: no c
 def scaled_copies(values, points, offsets, s, out):
     # faces of 3 to 129 corners (the caller checks)
     split(offsets.size - 1, scaled_copies_part, values, points, offsets, s, out)
+
+
+@jit
+def preserved_faces_part(mid, head, nxt, base, out, lo, hi):  # pragma: no cover - compiled
+    # the copy's corner of h: base + h; the pentagon of h:
+    # (mid[h], head[h], mid[next[h]], base + next[h], base + h)
+    H = mid.size
+    for h in range(lo, hi):
+        g = nxt[h]
+        out[h] = base + h
+        r = H + 5 * h
+        out[r] = mid[h]
+        out[r + 1] = head[h]
+        out[r + 2] = mid[g]
+        out[r + 3] = base + g
+        out[r + 4] = base + h
+
+
+def preserved_faces(mid, head, nxt, base):
+    # the corners of preserve_pentagons(mesh): the copies, then the pentagons
+    out = np.empty(6 * mid.size, mid.dtype)
+    split(mid.size, preserved_faces_part, mid, head, nxt, base, out)
+    return out
 
 
 @jit

@@ -208,6 +208,24 @@ def test_update_never_leaves_positions_longer_than_colours(first, second):
         assert lengths["position"] <= lengths["color"], order
 
 
+def test_hidden_points_are_not_sent_again_and_shown_points_are():
+    # mesh after mesh: no points either time, so the hidden placeholder row
+    # is not replaced (two messages fewer a move); points to show, and the
+    # move back to none, are written
+    v = pentanb.view(shapes.cube())
+    pa = v.point_geometry.attributes
+    placeholder = (pa["position"].array, pa["color"].array)
+    v.update(shapes.dodecahedron())
+    assert pa["position"].array is placeholder[0] and pa["color"].array is placeholder[1]
+    assert not v.points.visible
+    d = drawing_module.drawing(shapes.cube(), points=np.eye(3))
+    v.update(d)
+    assert v.points.visible and len(pa["position"].array) == 3
+    np.testing.assert_array_equal(pa["position"].array, np.eye(3, dtype=np.float32))
+    v.update(shapes.tetrahedron())
+    assert not v.points.visible and len(pa["position"].array) == 1
+
+
 def test_edges_can_be_switched_off():
     v = pentanb.view(shapes.cube(), edges=False)
     assert not v.edges.visible and not v.wireframe.value

@@ -226,15 +226,19 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
         p *= s
         np.add(centre, p, out=copies[lo:hi])
         del p, centre  # (a block's temporaries: gone before the next allocations)
-    corners = np.empty(6 * H, dtype=dt)
-    corners[:H] = np.arange(n + E, n + E + H, dtype=dt)  # the copies, face by face
-    pentagons = corners[H:].reshape(H, 5)
-    nxt = mesh.next
-    pentagons[:, 0] = mid
-    pentagons[:, 1] = mesh.head
-    pentagons[:, 2] = mid[nxt]
-    np.add(nxt, n + E, out=pentagons[:, 3])
-    pentagons[:, 4] = corners[:H]
+    faces_jit = _jit.kernels(6 * H)
+    if faces_jit is not None:  # the same corners, written in one pass
+        corners = faces_jit.preserved_faces(mid, mesh.head, mesh.next, n + E)
+    else:
+        corners = np.empty(6 * H, dtype=dt)
+        corners[:H] = np.arange(n + E, n + E + H, dtype=dt)  # the copies, face by face
+        pentagons = corners[H:].reshape(H, 5)
+        nxt = mesh.next
+        pentagons[:, 0] = mid
+        pentagons[:, 1] = mesh.head
+        pentagons[:, 2] = mid[nxt]
+        np.add(nxt, n + E, out=pentagons[:, 3])
+        pentagons[:, 4] = corners[:H]
     face_offsets = np.empty(F + H + 1, dtype=dt)
     face_offsets[: F + 1] = offsets
     face_offsets[F + 1 :] = np.arange(H + 5, 6 * H + 1, 5, dtype=dt)

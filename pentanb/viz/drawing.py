@@ -313,8 +313,7 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
     if not counts or counts[0][0] < 3:
         return buffers(drawing(mesh))
     sizes = mesh.face_sizes
-    v = mesh.vertices.astype(np.float32)  # a copy: the view's array, writeable
-    n = len(v)
+    n = mesh.n_vertices
     low, high = counts[0][0], counts[-1][0]
     table = _bytes(face_rgb(np.arange(low, high + 1)))
     present = np.array([size - low for size, _ in counts])  # ascending
@@ -322,15 +321,21 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
     triangles = len(mesh.corners) - 2 * mesh.n_faces
     jit = _jit.kernels(len(mesh.corners))
     if copies * n > 3 * triangles:  # more copies than triangle corners: rows per corner
+        v = mesh.vertices.astype(np.float32)  # a copy: the view's array, writeable
         tri, tri_face = mesh.fan_triangles()
         position = v.take(tri.reshape(-1), axis=0)
         color = np.repeat(table[sizes[tri_face] - low], 3, axis=0)
         index = _counting(len(position), 3)
     else:
+        # the vertices cast to float32 straight into every copy (the first
+        # copy is also the edges' array): the view's arrays, writeable
+        position = np.empty((copies * n, 3), np.float32)
+        for c in range(copies):
+            position[c * n : (c + 1) * n] = mesh.vertices
+        v = position[:n]
         if copies == 1:  # one size, one copy of the vertices
-            position, color = v, _same_rows(table[present[0]], n)
+            color = _same_rows(table[present[0]], n)
         else:
-            position = np.tile(v, (copies, 1))
             rows = b"".join(table[p].tobytes() * n for p in present)
             color = np.frombuffer(bytearray(rows), dtype=np.uint8).reshape(-1, 3)
         _addressable(len(position))

@@ -421,7 +421,10 @@ class MeshView(W.VBox):
         _replace(
             ea["position"], b.edge_position, ea["color"], b.edge_color, ea["index"], b.edge_index
         )
-        _replace(pa["position"], b.point_position, pa["color"], b.point_color)
+        # no points before nor after: the hidden placeholder row stays (two
+        # messages fewer a move)
+        if b.point_count or self.points.visible or len(pa["position"].array) != 1:
+            _replace(pa["position"], b.point_position, pa["color"], b.point_color)
         self.points.visible = bool(b.point_count)
         self._edges_present = bool(b.edge_count)
         self.edges.visible = bool(self.wireframe.value and b.edge_count)
