@@ -463,6 +463,21 @@ def test_a_quick_move_sends_no_progress_but_a_slow_one_does(monkeypatch):
     assert changes[:3] == [("steps", 0), ("bar", "visible"), ("status", "<i>computing...</i>")]
 
 
+def test_a_slider_move_of_a_hundred_thousand_faces_sends_no_progress():
+    # pentagon preservation of 16,384 quads: 114,688 faces at its first
+    # dual, some ten milliseconds of work: no bar, no status message
+    e = pentanb.explore(
+        shapes.torus(128, 128), "preserve_pentagons", iterations=0, max_faces=200_000
+    )
+    changes = []
+    for w in (e.progress, e.status):
+        w.observe(lambda c: changes.append(c["new"]), names="value")
+    e.progress.layout.observe(lambda c: changes.append(c["new"]), names="visibility")
+    e.iterations.value = 1
+    assert max(F for _, (_, _, F) in e._largest_steps(e._base(e.shape.value), 1)) == 114_688
+    assert e.mesh.n_faces == 16_384 + 4 * 16_384 and changes == []
+
+
 #: (arguments of explore, exception, message): what subdivide refuses, the
 #: explorer refuses too, naming the argument and its range (issue 12, item 7).
 def _stable_id(kwargs: dict) -> str:

@@ -227,8 +227,11 @@ class Explorer(W.HBox):
         self.refresh(fit=change["owner"] is self.shape)
 
     #: A request building at least this many faces (at its largest step)
-    #: shows the progress bar from its start.
-    PROGRESS_FACES = 100_000
+    #: shows the progress bar from its start: a tenth of a second or more
+    #: of work with the compiled kernels, half a second on the numpy path.
+    #: (A slider move at 20,480 faces builds about 100,000 and takes 10-20
+    #: ms: a bar would only flash, and its messages cost a millisecond.)
+    PROGRESS_FACES = 1_000_000
     #: Seconds after which a smaller request shows it.
     PROGRESS_AFTER = 0.2
 
