@@ -36,6 +36,7 @@ __all__ = [
     "preserved_faces",
     "pentagonalized_rings",
     "preserved_rings",
+    "preserved_ring_faces",
     "inverse",
     "cutting_rings",
     "hexagons_rings",
@@ -433,6 +434,22 @@ def preserved_rings(ring, ring_off, eh, twin, prv):
     split(ring_off.size - 1, preserved_old_part, ring, ring_off, prv, H, out)
     split(E, preserved_mid_part, eh, twin, prv, H, out)
     split(H, preserved_copy_part, prv, H + 4 * E, out)
+    return out
+
+
+@jit
+def preserved_ring_faces_part(rings, face_in, F, out, lo, hi):  # pragma: no cover - compiled
+    # the face of every ring entry x of preserve_pentagons(mesh): the copy of
+    # face_in[x] (x < H), else the pentagon F + (x - H) // 5
+    H = face_in.size
+    for i in range(lo, hi):
+        x = rings[i]
+        out[i] = face_in[x] if x < H else F + (x - H) // 5
+
+
+def preserved_ring_faces(rings, face_in, F):
+    out = np.empty_like(rings)
+    split(rings.size, preserved_ring_faces_part, rings, face_in, F, out)
     return out
 
 

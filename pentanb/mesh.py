@@ -70,6 +70,15 @@ def _frozen(value: Any) -> Any:
     return value
 
 
+class _Several(dict):
+    """Connectivity values one producer wrote together, by property name.
+
+    A producer handed over for one property (say ``vertex_ring``) may
+    return this instead of the value alone: every value in it is cached at
+    once (so that one pass can write two arrays that are read together).
+    """
+
+
 class _Connectivity:
     """The faces of a mesh and everything derived from them alone.
 
@@ -128,7 +137,17 @@ class _Derived(Generic[_T]):
         except KeyError:
             pass
         producer = shared.producers.pop(self.name, None) if self.connectivity else None
-        value = self.func(mesh) if producer is None else _frozen(producer())
+        if producer is None:
+            value = self.func(mesh)
+        else:
+            value = producer()
+            if isinstance(value, _Several):  # several values written in one pass
+                for name, made in value.items():
+                    if name != self.name:
+                        shared.producers.pop(name, None)
+                        store.setdefault(name, _frozen(made))
+                value = value[self.name]
+            value = _frozen(value)
         store[self.name] = value
         return value
 
@@ -235,7 +254,7 @@ class Mesh:
         offsets: np.ndarray,
         *,
         twin: IntArray | Callable[[], IntArray] | None = None,
-        rings: Rings | Callable[[], Rings] | None = None,
+        rings: Rings | Callable[[], Rings | _Several] | None = None,
         dual_of: Mesh | None = None,
         shared: _Connectivity | None = None,
     ) -> None:
@@ -298,7 +317,7 @@ class Mesh:
         offsets: np.ndarray,
         *,
         twin: IntArray | Callable[[], IntArray] | None = None,
-        rings: Rings | Callable[[], Rings] | None = None,
+        rings: Rings | Callable[[], Rings | _Several] | None = None,
         dual_of: Mesh | None = None,
         shared: _Connectivity | None = None,
     ) -> Mesh:
@@ -636,6 +655,25 @@ class Mesh:
         """
         ring, off = _vertex_rings(self.rotation, self._corners, self.valences)
         return _readonly(ring), _readonly(off)
+
+    def _ring_faces(self) -> IntArray:
+        """(H,) int: the face of every entry of :attr:`vertex_ring`, in its order.
+
+        ``halfedge_face[vertex_ring[0]]``: the faces round every vertex in
+        rotation order, which are the dual's faces (its corners).  An
+        operator that knows its output's rings may write these with them
+        (:class:`_Several`); they are then taken from the cache, once: the
+        array becomes the dual's, and is not kept here as well.
+        """
+        made = self._shared.values.pop("_ring_faces", None)
+        if made is not None:
+            return made
+        ring, _ = self.vertex_ring
+        k = self._uniform_size
+        if k:
+            return _readonly(ring // k)
+        jit = _jit.kernels(ring.size)
+        return _readonly(jit.gather(self.halfedge_face, ring) if jit else self.halfedge_face[ring])
 
     def _faces_only(self) -> Any:
         """This mesh's faces without its positions (a :class:`_Faces`).

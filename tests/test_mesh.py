@@ -898,3 +898,31 @@ def test_a_wrapper_on_Mesh_init_can_refuse_large_meshes(monkeypatch):
             assert out.n_faces <= 100
     with pytest.raises(MeshError, match="120 faces: over the cap"):
         big.with_vertices(big.vertices)
+
+
+def test_a_producer_may_write_two_connectivity_arrays_in_one_pass():
+    # an operator's rings producer may hand back the face of every ring
+    # entry too (the dual's corners): both are cached from the one call
+    from pentanb.mesh import _Several
+
+    m = shapes.cube()
+    ring, off = m.vertex_ring
+    faces = m.halfedge_face[ring]
+    calls = []
+
+    def rings():
+        calls.append(1)
+        return _Several(vertex_ring=(ring.copy(), off.copy()), _ring_faces=faces.copy())
+
+    out = Mesh._new(m.vertices.copy(), m.corners.copy(), m.offsets.copy(), rings=rings)
+    assert np.array_equal(out.vertex_ring[0], ring) and calls == [1]
+    given = out._shared.values["_ring_faces"]
+    assert not given.flags.writeable
+    d = dual(out)  # takes them as its corners: not kept by `out` as well
+    assert d.corners is given and "_ring_faces" not in out._shared.values
+    assert np.array_equal(d.corners, dual(m).corners) and calls == [1]
+    assert np.array_equal(dual(out).corners, faces)  # again: derived from the rings
+    # a plain producer: the faces are derived from the rings
+    plain = Mesh._new(m.vertices.copy(), m.corners.copy(), m.offsets.copy(), rings=(ring, off))
+    assert np.array_equal(plain._ring_faces(), faces)
+    assert np.array_equal(m._ring_faces(), faces)

@@ -14,7 +14,7 @@ from typing import Any, TypeVar
 import numpy as np
 
 from .. import _jit
-from ..mesh import _SAFE_EXTENT, Mesh, MeshError, Rings, _index_dtype, check_mesh
+from ..mesh import _SAFE_EXTENT, Mesh, MeshError, Rings, _index_dtype, _Several, check_mesh
 
 _Op = TypeVar("_Op", bound=Callable[..., Mesh])
 
@@ -183,7 +183,7 @@ def output(
     offsets: np.ndarray,
     *,
     twin: np.ndarray | Callable[[], np.ndarray] | None = None,
-    rings: Rings | Callable[[], Rings] | None = None,
+    rings: Rings | Callable[[], Rings | _Several] | None = None,
     dual_of: Mesh | None = None,
 ) -> Mesh:
     """Wrap an operator's output, valid by construction (no re-validation, no copy).
@@ -200,7 +200,10 @@ def output(
         The output's twins when the operator knows them (a callable runs
         only if the twins are asked for).
     rings : ((H,) int, (n + 1,) int), or a callable returning them, optional
-        The output's vertex rings (:attr:`pentanb.Mesh.vertex_ring`), likewise.
+        The output's vertex rings (:attr:`pentanb.Mesh.vertex_ring`), likewise;
+        the callable may return a :class:`pentanb.mesh._Several` holding them
+        (``vertex_ring``) and other connectivity written in the same pass
+        (``_ring_faces``, the dual's corners).
     dual_of : Mesh, optional
         The mesh the output is the dual of (:func:`pentanb.dual` only).
     """
@@ -217,7 +220,7 @@ def remeshed(
     offsets: np.ndarray,
     dt: np.dtype,
     twin_of: Callable[[Any, np.dtype], np.ndarray],
-    rings_of: Callable[[Any, np.dtype], Rings],
+    rings_of: Callable[[Any, np.dtype], Rings | _Several],
 ) -> Mesh:
     """:func:`output` of a remeshing of ``mesh``, its connectivity written from ``mesh``'s.
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _jit
-from ..mesh import Mesh, _next_of, _prev_of
+from ..mesh import Mesh, Rings, _next_of, _prev_of, _Several
 from ._build import (
     BLOCK,
     check_mesh,
@@ -271,7 +271,7 @@ def _preserved_twin(mesh, dt: np.dtype) -> np.ndarray:
     return out
 
 
-def _preserved_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
+def _preserved_rings(mesh, dt: np.dtype) -> Rings | _Several:
     """The vertex rings of ``preserve_pentagons(mesh)``, from ``mesh``'s.
 
     Around an old vertex: ``H + 5 prev[h] + 1`` for its outgoing h, in its
@@ -292,7 +292,11 @@ def _preserved_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     jit = _jit.kernels(6 * H)
     if jit is not None:  # the same rings, each written turned, in one pass
         rings = jit.preserved_rings(ring.astype(dt, copy=False), ring_off, eh, twin, prv)
-        return rings, offsets
+        # and the face of every ring entry (the dual's corners), from the
+        # numbering, without the output's face of every half-edge
+        face_in = mesh.halfedge_face.astype(dt, copy=False)
+        faces = jit.preserved_ring_faces(rings, face_in, mesh.n_faces)
+        return _Several(vertex_ring=(rings, offsets), _ring_faces=faces)
     old = prv[ring] * 5
     old += H + 1
     back = twin[eh]

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import _jit
 from ..mesh import Mesh
 from ._build import check_count, check_mesh, check_vertex_faces, inverse, output
 
@@ -62,14 +61,9 @@ def dual(mesh: Mesh) -> Mesh:
         assert again is not None
         return again
     check_vertex_faces(mesh, "dual")
-    ring, ring_off = mesh.vertex_ring
-    k = mesh._uniform_size
+    _, ring_off = mesh.vertex_ring
     # the dual's face v: the faces round vertex v, in rotation order
-    if k:
-        corners = ring // k
-    else:
-        jit = _jit.kernels(ring.size)
-        corners = jit.gather(mesh.halfedge_face, ring) if jit else mesh.halfedge_face[ring]
+    corners = mesh._ring_faces()
     faces = mesh._faces_only()
     out = output(
         mesh.face_centroids,
