@@ -255,6 +255,7 @@ class Mesh:
         *,
         twin: IntArray | Callable[[], IntArray] | None = None,
         rings: Rings | Callable[[], Rings | _Several] | None = None,
+        size_counts: tuple[tuple[int, int], ...] | None = None,
         dual_of: Mesh | None = None,
         shared: _Connectivity | None = None,
     ) -> None:
@@ -275,6 +276,9 @@ class Mesh:
             when the twins are first asked for.
         rings : ((H,) int, (n + 1,) int), or a callable returning them, optional
             The vertex rings (see :attr:`vertex_ring`), likewise.
+        size_counts : ((size, faces), ...), optional
+            The face-size histogram by ascending size, when the caller
+            knows it (an operator, from its input's).
         dual_of : Mesh, optional
             The mesh this one is the dual of: the dual of this mesh then
             reuses that mesh's connectivity (see :meth:`_dual_again`).
@@ -297,10 +301,12 @@ class Mesh:
                     shared.producers["vertex_ring"] = rings
                 else:
                     shared.values["vertex_ring"] = _frozen(tuple(rings))
+            if size_counts is not None:
+                shared.values["_size_counts"] = tuple(size_counts)
         elif corners is not shared.corners or offsets is not shared.offsets:
             raise ValueError("shared connectivity needs the very corners and offsets it holds")
-        elif twin is not None or rings is not None:
-            raise ValueError("twin and rings come with the shared connectivity")
+        elif twin is not None or rings is not None or size_counts is not None:
+            raise ValueError("twin, rings and size counts come with the shared connectivity")
         init = object.__setattr__
         init(self, "_vertices", _readonly(vertices))
         init(self, "_corners", shared.corners)
@@ -318,6 +324,7 @@ class Mesh:
         *,
         twin: IntArray | Callable[[], IntArray] | None = None,
         rings: Rings | Callable[[], Rings | _Several] | None = None,
+        size_counts: tuple[tuple[int, int], ...] | None = None,
         dual_of: Mesh | None = None,
         shared: _Connectivity | None = None,
     ) -> Mesh:
@@ -329,7 +336,14 @@ class Mesh:
         """
         self = object.__new__(cls)
         self._init(
-            vertices, corners, offsets, twin=twin, rings=rings, dual_of=dual_of, shared=shared
+            vertices,
+            corners,
+            offsets,
+            twin=twin,
+            rings=rings,
+            size_counts=size_counts,
+            dual_of=dual_of,
+            shared=shared,
         )
         return self
 

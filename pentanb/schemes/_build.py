@@ -184,6 +184,7 @@ def output(
     *,
     twin: np.ndarray | Callable[[], np.ndarray] | None = None,
     rings: Rings | Callable[[], Rings | _Several] | None = None,
+    size_counts: tuple[tuple[int, int], ...] | None = None,
     dual_of: Mesh | None = None,
 ) -> Mesh:
     """Wrap an operator's output, valid by construction (no re-validation, no copy).
@@ -204,13 +205,24 @@ def output(
         the callable may return a :class:`pentanb.mesh._Several` holding them
         (``vertex_ring``) and other connectivity written in the same pass
         (``_ring_faces``, the dual's corners).
+    size_counts : ((size, faces), ...), optional
+        The output's face-size histogram, by ascending size, when the
+        operator knows it (what ``Mesh._size_counts`` would count).
     dual_of : Mesh, optional
         The mesh the output is the dual of (:func:`pentanb.dual` only).
     """
     dtype = index_dtype(vertices.shape[0], corners.size)
     corners = corners.astype(dtype, copy=False)
     offsets = offsets.astype(dtype, copy=False)
-    return Mesh._new(vertices, corners, offsets, twin=twin, rings=rings, dual_of=dual_of)
+    return Mesh._new(
+        vertices,
+        corners,
+        offsets,
+        twin=twin,
+        rings=rings,
+        size_counts=size_counts,
+        dual_of=dual_of,
+    )
 
 
 def remeshed(
@@ -221,6 +233,7 @@ def remeshed(
     dt: np.dtype,
     twin_of: Callable[[Any, np.dtype], np.ndarray],
     rings_of: Callable[[Any, np.dtype], Rings | _Several],
+    size_counts: tuple[tuple[int, int], ...] | None = None,
 ) -> Mesh:
     """:func:`output` of a remeshing of ``mesh``, its connectivity written from ``mesh``'s.
 
@@ -236,6 +249,7 @@ def remeshed(
         offsets,
         twin=lambda: twin_of(faces, dt),
         rings=lambda: rings_of(faces, dt),
+        size_counts=size_counts,
     )
 
 

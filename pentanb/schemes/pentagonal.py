@@ -242,7 +242,19 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     face_offsets = np.empty(F + H + 1, dtype=dt)
     face_offsets[: F + 1] = offsets
     face_offsets[F + 1 :] = np.arange(H + 5, 6 * H + 1, 5, dtype=dt)
-    return remeshed(mesh, vertices, corners, face_offsets, dt, _preserved_twin, _preserved_rings)
+    # the face sizes: the input's (the copies) and H pentagons
+    histogram = dict(mesh._size_counts)
+    histogram[5] = histogram.get(5, 0) + H
+    return remeshed(
+        mesh,
+        vertices,
+        corners,
+        face_offsets,
+        dt,
+        _preserved_twin,
+        _preserved_rings,
+        size_counts=tuple(sorted(histogram.items())),
+    )
 
 
 def _preserved_twin(mesh, dt: np.dtype) -> np.ndarray:
