@@ -46,7 +46,10 @@ through one iteration with two duals.
 
 Timings alternate between the two sides of every ratio, run after run, in one
 process (this machine is shared and noisy: a ratio of two medians taken
-minutes apart would measure the neighbours), and report medians.  Every
+minutes apart would measure the neighbours), and report medians; a slider
+move takes at least 15 runs (a move and trimesh's ``subdivide()`` both
+fall into a fast and a slow group on a shared machine, and the median of 9
+lands in either).  Every
 pentanb call starts from the raw arrays ``V`` and ``F`` (validation
 included); trimesh gets a fresh ``Trimesh`` or the raw arrays likewise.
 
@@ -690,7 +693,7 @@ def main(argv=None) -> int:
     if "speed" in sections:
         results["speed"] = speed(table, args.runs, clock)
     if "slider" in sections:
-        results["slider"] = slider(table, max(args.runs, 9), clock)
+        results["slider"] = slider(table, max(args.runs, 15), clock)
     if "linear" in sections:
         results["linear"] = linear(table, max(3, args.runs // 2), clock, args.clock)
     if "guard" in sections:
