@@ -258,13 +258,10 @@ def split(n: int, kernel: Callable[..., None], *args: Any) -> None:
         kernel(*args, 0, n)
         return
     cuts = [n * i // parts for i in range(parts + 1)]
-    if not _busy.acquire(blocking=False):
-        for i in range(parts):
-            kernel(*args, cuts[i], cuts[i + 1])
-        return
+    held = _busy.acquire(blocking=False)
     try:
-        workers = _workers(parts - 1)
-        if workers is None:
+        workers = _workers(parts - 1) if held else None
+        if workers is None:  # busy, or exiting: every part here
             for i in range(parts):
                 kernel(*args, cuts[i], cuts[i + 1])
             return
@@ -277,7 +274,8 @@ def split(n: int, kernel: Callable[..., None], *args: Any) -> None:
         if errors:
             raise errors[0]
     finally:
-        _busy.release()
+        if held:
+            _busy.release()
 
 
 def _wait(workers: list[_Worker]) -> list[BaseException]:

@@ -329,9 +329,9 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
     else:
         # the vertices cast to float32 straight into every copy (the first
         # copy is also the edges' array): the view's arrays, writeable
-        position = np.empty((copies * n, 3), np.float32)
-        for c in range(copies):
-            position[c * n : (c + 1) * n] = mesh.vertices
+        position = np.empty((copies, n, 3), np.float32)
+        position[:] = mesh.vertices  # (broadcast: every copy)
+        position = position.reshape(-1, 3)
         v = position[:n]
         if copies == 1:  # one size, one copy of the vertices
             color = _same_rows(table[present[0]], n)
