@@ -31,6 +31,7 @@ def ix(i):  # pragma: no cover - compiled
     # copy loop here: 0.31 ms signed, 0.034 ms unsigned, as fast as numpy)
     return numba.uint64(i)
 
+
 #: What :func:`pentanb._jit.kernels` hands out.
 __all__ = [
     "face_means_uniform",
