@@ -302,12 +302,13 @@ def _preserved_rings(mesh, dt: np.dtype) -> Rings | _Several:
     prv, twin = mesh.prev.astype(dt, copy=False), mesh.twin.astype(dt, copy=False)
     eh = mesh.edge_halfedge.astype(dt, copy=False)
     jit = _jit.kernels(6 * H)
-    if jit is not None:  # the same rings, each written turned, in one pass
-        rings = jit.preserved_rings(ring.astype(dt, copy=False), ring_off, eh, twin, prv)
-        # and the face of every ring entry (the dual's corners), from the
+    if jit is not None:  # the same rings, each written turned, in one pass,
+        # with the face of every ring entry (the dual's corners), from the
         # numbering, without the output's face of every half-edge
         face_in = mesh.halfedge_face.astype(dt, copy=False)
-        faces = jit.preserved_ring_faces(rings, face_in, mesh.n_faces)
+        rings, faces = jit.preserved_rings(
+            ring.astype(dt, copy=False), ring_off, eh, twin, prv, face_in, mesh.n_faces
+        )
         return _Several(vertex_ring=(rings, offsets), _ring_faces=faces)
     old = prv[ring] * 5
     old += H + 1
