@@ -1048,6 +1048,44 @@ class CharacteristicMap:
         return "regular, injective"
 
 
+def _reference_row(x: np.ndarray) -> int:
+    """The first entry of ``x`` at least half its largest modulus.
+
+    A choice that rounding cannot move: the entries of a symmetric
+    eigenvector come in orbits of equal modulus, so "the largest" would be
+    decided by the last bits, but "the first of the large ones" is not.
+    """
+    a = np.abs(x)
+    return int(np.flatnonzero(a >= 0.5 * a.max())[0]) if a.size and a.max() > 0 else 0
+
+
+def _canonical_plane(v: np.ndarray, mode: int, k: int) -> np.ndarray:
+    """(n, 2) real and imaginary parts of the eigenvector ``v`` of Fourier mode
+    ``mode`` (of ``k``), in a basis that does not depend on the eigensolver.
+
+    An eigenvector is defined up to a complex factor, which turns (and
+    scales) the characteristic map, and a real double eigenvalue has the
+    eigenvectors of modes w and k - w, conjugates, which mirror it.  Which
+    one LAPACK returns changes with its version (the committed figure came
+    out turned under another numpy build), so the mode is taken at most
+    k / 2 (conjugating otherwise: the same plane, mirrored) and the factor
+    makes the reference entry real and positive.
+    """
+    v = np.asarray(v, dtype=np.complex128)
+    if 2 * mode > k:
+        v = np.conj(v)
+    r = _reference_row(v)
+    if abs(v[r]) > 0:
+        v = v * (np.conj(v[r]) / abs(v[r]))
+    return np.stack([v.real, v.imag], axis=1)
+
+
+def _canonical_sign(x: np.ndarray) -> np.ndarray:
+    """A real eigenvector with its reference entry (:func:`_reference_row`) positive."""
+    x = np.asarray(x, dtype=np.float64)
+    return -x if x.size and x[_reference_row(x)] < 0 else x
+
+
 def characteristic_map(
     spectrum: LocalSpectrum | str | Scheme | Callable = "pentagonalize",
     kind: str = "vertex",
@@ -1098,9 +1136,9 @@ def characteristic_map(
     if spectrum.modes.size > 1 and spectrum.modes[1] > 0:
         # a Fourier mode w != 0: its real and imaginary parts span the
         # (real double or complex pair) subdominant eigenspace
-        psi = np.stack([V[:, 1].real, V[:, 1].imag], axis=1)
+        psi = _canonical_plane(V[:, 1], int(spectrum.modes[1]), spectrum.size)
     else:
-        psi = np.stack([V[:, 1].real, V[:, 2].real], axis=1)
+        psi = np.stack([_canonical_sign(V[:, 1].real), _canonical_sign(V[:, 2].real)], axis=1)
     sv = np.linalg.svd(psi, compute_uv=False)
     defective = bool(sv[1] < 1e-6 * sv[0]) or abs(w[1]) < 1e-12
     # positions on the whole level, NaN outside the neighbourhood
