@@ -405,10 +405,12 @@ class Mesh:
         validate : bool
             Check the mesh, as the constructor does.  With False the arrays
             are trusted as they are: nothing but the shape of ``vertices``
-            is checked, and a mesh that is not a closed oriented manifold
-            gives wrong results or errors later (the operators refuse what
-            they cannot handle, e.g. :func:`pentanb.dual` a vertex with
-            fewer than 3 edges).  For speed only, on arrays known to be good.
+            and the ranges of the indices is checked (an index outside the
+            arrays would make the compiled kernels read outside them), and
+            a mesh that is not a closed oriented manifold gives wrong
+            results or errors later (the operators refuse what they cannot
+            handle, e.g. :func:`pentanb.dual` a vertex with fewer than 3
+            edges).  For speed only, on arrays known to be good.
 
         Notes
         -----
@@ -429,9 +431,9 @@ class Mesh:
         if v.ndim != 2 or v.shape[1] != 3:
             raise MeshError(f"vertices must be an (n, 3) array, got shape {v.shape}")
         c, o = _compact(_csr_part(corners, "corners"), _csr_part(offsets, "offsets"), v.shape[0])
-        return cls._new(
-            v, c, o, twin=None if twin is None else _csr_part(twin, "twin").astype(c.dtype)
-        )
+        t = None if twin is None else _csr_part(twin, "twin")
+        _check_ranges(c, o, t, v.shape[0])
+        return cls._new(v, c, o, twin=None if t is None else t.astype(c.dtype))
 
     def with_vertices(self, vertices: ArrayLike) -> Mesh:
         """The same connectivity with other vertex positions (``(n, 3)`` float).
@@ -1257,6 +1259,34 @@ _SAFE_EXTENT = 2.0**1000
 def _index_dtype(*counts: int) -> np.dtype:
     """int32 when every index of arrays of these sizes fits in it, else int64."""
     return np.dtype(np.int32) if max(counts, default=0) <= _INT32_MAX else np.dtype(np.int64)
+
+
+def _check_ranges(
+    corners: np.ndarray, offsets: np.ndarray, twin: np.ndarray | None, n: int
+) -> None:
+    """MeshError unless every index of unchecked CSR arrays points inside the arrays.
+
+    What :meth:`Mesh.from_csr` checks without validation: a few whole-array
+    passes, so that no operator (numpy's or a compiled kernel, which does
+    not check) reads outside an array.
+    """
+    if offsets.size == 0 or offsets[0] != 0 or offsets[-1] != corners.size:
+        raise MeshError("offsets must start at 0, rise, and end at len(corners)")
+    if offsets.size > 1 and (np.diff(offsets) < 0).any():
+        raise MeshError("offsets must start at 0, rise, and end at len(corners)")
+    if corners.size and (int(corners.min()) < 0 or int(corners.max()) >= n):
+        bad = int(np.flatnonzero((corners < 0) | (corners >= n))[0])
+        raise MeshError(f"corner {bad} is vertex {int(corners[bad])}, outside the {n:,} vertices")
+    if twin is not None:
+        if twin.size != corners.size:
+            raise MeshError(
+                f"twin must have one entry per corner ({corners.size:,}), got {twin.size:,}"
+            )
+        if twin.size and (int(twin.min()) < 0 or int(twin.max()) >= twin.size):
+            bad = int(np.flatnonzero((twin < 0) | (twin >= twin.size))[0])
+            raise MeshError(
+                f"twin of half-edge {bad} is {int(twin[bad])}, outside the {twin.size:,} half-edges"
+            )
 
 
 def _compact(corners: np.ndarray, offsets: np.ndarray, n: int) -> tuple[IntArray, IntArray]:

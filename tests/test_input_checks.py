@@ -116,6 +116,49 @@ def test_non_integer_indices_in_lists(bad):
         Mesh(cube_v(), faces)
 
 
+@pytest.mark.parametrize(
+    "change, message",
+    [
+        (
+            lambda c, o, t: (np.where(c == 5, -1, c), o, t),
+            r"^corner 7 is vertex -1, outside the 8 ",
+        ),
+        (lambda c, o, t: (np.where(c == 5, 8, c), o, t), r"^corner 7 is vertex 8, outside the 8 "),
+        (lambda c, o, t: (c, o[::-1], t), r"^offsets must start at 0, rise, and end at len"),
+        (lambda c, o, t: (c, np.r_[0, 5, 3, o[3:]], t), r"^offsets must start at 0, rise,"),
+        (lambda c, o, t: (c, o[:-1], t), r"^offsets must start at 0, rise, and end at len"),
+        (
+            lambda c, o, t: (c, o, np.r_[t[:-1], -1]),
+            r"^twin of half-edge 23 is -1, outside the 24 ",
+        ),
+        (
+            lambda c, o, t: (c, o, np.r_[t[:-1], 24]),
+            r"^twin of half-edge 23 is 24, outside the 24 ",
+        ),
+        (lambda c, o, t: (c, o, t[:-1]), r"^twin must have one entry per corner \(24\), got 23$"),
+    ],
+    ids=[
+        "negative",
+        "past-the-end",
+        "falling",
+        "not-rising",
+        "short",
+        "twin-negative",
+        "twin-past-the-end",
+        "twin-short",
+    ],
+)
+def test_unchecked_arrays_still_have_their_indices_checked(change, message):
+    # from_csr(validate=False) trusts the mesh, not the indices: an index
+    # outside the arrays would make the compiled kernels read outside them
+    c = shapes.cube()
+    corners, offsets, twin = change(c.corners.copy(), c.offsets.copy(), c.twin.copy())
+    with pytest.raises(MeshError, match=message):
+        Mesh.from_csr(c.vertices, corners, offsets, twin=twin, validate=False)
+    # the same arrays with the index put back are taken
+    Mesh.from_csr(c.vertices, c.corners, c.offsets, twin=c.twin, validate=False)
+
+
 @pytest.mark.parametrize("validate", [True, False])
 def test_from_csr_does_not_truncate_non_integers(validate):
     c = shapes.cube()
