@@ -629,30 +629,32 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
     if head.size == 0:  # faces of k corners: heads from the tails
         head = np.empty_like(tail)
         for h in range(H):
-            head[h] = tail[h + 1] if (h + 1) % k else tail[h + 1 - k]
+            head[ix(h)] = tail[ix(h + 1)] if (h + 1) % k else tail[ix(h + 1 - k)]
     start = np.zeros(n + 1, np.int64)
     for h in range(H):
-        if tail[h] < 0 or tail[h] >= n:  # out of range: no pairing (and no stray write)
+        u = tail[ix(h)]
+        if u < 0 or u >= n:  # out of range: no pairing (and no stray write)
             return fail
-        start[tail[h] + 1] += 1
+        start[ix(u + 1)] += 1
+    # (from here on every tail, so every head, is a vertex in range)
     for v in range(n):
-        start[v + 1] += start[v]
+        start[ix(v + 1)] += start[ix(v)]
     fill = start[:-1].copy()
     out_of = np.empty(H, tail.dtype)  # half-edges by tail
     for h in range(H):
-        u = tail[h]
-        out_of[fill[u]] = h
+        u = ix(tail[ix(h)])
+        out_of[ix(fill[u])] = h
         fill[u] += 1
     twin = np.empty(H, tail.dtype)
     for h in range(H):
-        u, w = tail[h], head[h]
+        u, w = tail[ix(h)], head[ix(h)]
         if u == w:
             return fail
         found = 0
-        for i in range(start[w], start[w + 1]):
-            g = out_of[i]
-            if head[g] == u:
-                twin[h] = g
+        for i in range(start[ix(w)], start[ix(w + 1)]):
+            g = out_of[ix(i)]
+            if head[ix(g)] == u:
+                twin[ix(h)] = g
                 found += 1
         if found != 1:
             return fail
