@@ -54,13 +54,20 @@ def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray
         jit.edge_points(v, edges, t, res)
         return res
     rows = res.reshape(E, k, 3)
+    # the products and sums on contiguous blocks (numpy runs those as one
+    # flat loop; on the rows of point j, three values of every k * 3, it
+    # loops three at a time), then one copy into the rows: 18.6 -> 11.0 ms
+    # for the 983,040 points of 327,680 triangles
+    x, y = np.empty((min(E, BLOCK), 3)), np.empty((min(E, BLOCK), 3))
     for a in range(0, E, BLOCK):
         ends = edges[a : a + BLOCK]
         pa, pb = v.take(ends[:, 0], axis=0), v.take(ends[:, 1], axis=0)
+        xa, ya = x[: len(pa)], y[: len(pa)]
         for j in range(k):
-            r = rows[a : a + BLOCK, j]
-            np.multiply(pa, 1.0 - t[j], out=r)
-            r += pb * t[j]
+            np.multiply(pa, 1.0 - t[j], out=xa)
+            np.multiply(pb, t[j], out=ya)
+            xa += ya
+            rows[a : a + BLOCK, j] = xa
         del pa, pb  # (a block's temporaries: gone before the next allocations)
     return res
 
