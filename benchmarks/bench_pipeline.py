@@ -253,6 +253,15 @@ def speed(table: Table, runs: int, clock) -> dict:
             "trimesh subdivide": lambda: trimesh.Trimesh(v, f, process=False).subdivide(),
             "pentagonalize(Mesh(V, F))": lambda: pb.pentagonalize(pb.Mesh(v, f)),
             "Mesh(V, F)": lambda: pb.Mesh(v, f),
+            **(
+                {
+                    "pentagonalize(Mesh(V, F)), compiled": on_path(
+                        True, lambda: pb.pentagonalize(pb.Mesh(v, f))
+                    )
+                }
+                if COMPILED
+                else {}
+            ),
         },
         runs,
         clock,
@@ -277,15 +286,21 @@ def speed(table: Table, runs: int, clock) -> dict:
         1000 * median(t["pipeline"]),
         "ms",
     )
-    r1 = np.array(t["pentagonalize(Mesh(V, F))"]) / np.array(t["trimesh subdivide"])
-    table.add(
-        sec,
-        "1. pentagonalize(Mesh(V, F)) / trimesh subdivide()",
-        median(r1),
-        "x",
-        1.0,
-        note=f"runs {r1.min():.2f}-{r1.max():.2f}",
-    )
+    for case, suffix in (
+        ("pentagonalize(Mesh(V, F))", ""),
+        ("pentagonalize(Mesh(V, F)), compiled", ", compiled kernels"),
+    ):
+        if case not in t:
+            continue
+        r1 = np.array(t[case]) / np.array(t["trimesh subdivide"])
+        table.add(
+            sec,
+            f"1. pentagonalize(Mesh(V, F)) / trimesh subdivide(){suffix}",
+            median(r1),
+            "x",
+            1.0,
+            note=f"runs {r1.min():.2f}-{r1.max():.2f}",
+        )
     for case, suffix in (("pipeline", ""), ("pipeline, compiled", ", compiled kernels")):
         if case not in t:
             continue
@@ -298,7 +313,51 @@ def speed(table: Table, runs: int, clock) -> dict:
             0.25,
             note=f"{len(r2)} runs: {', '.join(f'{x:.3f}' for x in sorted(r2))}",
         )
+    # a diagnosis of target 1 on the numpy path: the validation's one sort
+    # (the twin pairing's packed keys), here and with numpy's AVX-512 sorts
+    # switched off (on AMD Zen 4 they are slow: a microcoded compress-store)
+    here, avx2 = sort_ms(), sort_ms({"NPY_DISABLE_CPU_FEATURES": "X86_V4 AVX512_ICL AVX512_SPR"})
+    if here is not None:
+        note = (
+            ""
+            if avx2 is None
+            else f"{avx2:.1f} ms with numpy's AVX-512 sorts off (a child process)"
+        )
+        table.add(
+            sec,
+            f"np.sort of {3 * len(f):,} int64 keys (Mesh(V, F)'s twin pairing)",
+            here,
+            "ms",
+            note=note,
+        )
     return {k: [float(x) for x in xs] for k, xs in t.items()}
+
+
+SORT_CODE = (
+    "import numpy as np, time; x = np.random.default_rng(1).integers(0, 2**62, {n});"
+    "ts = []\n"
+    "for _ in range(5):\n"
+    "    y = x.copy(); t = time.perf_counter(); y.sort(); ts.append(time.perf_counter() - t)\n"
+    "print(1000 * sorted(ts)[2])"
+)
+
+
+def sort_ms(env: dict[str, str] | None = None, n: int = 983_040) -> float | None:
+    """Median ms of numpy's sort of ``n`` random int64 in a child process (None if it fails)."""
+    import subprocess
+
+    try:
+        out = subprocess.run(
+            [sys.executable, "-c", SORT_CODE.format(n=n)],
+            env={**os.environ, **(env or {})},
+            capture_output=True,
+            text=True,
+            timeout=120,
+            check=True,
+        )
+        return float(out.stdout.strip().splitlines()[-1])
+    except (subprocess.SubprocessError, ValueError, IndexError, OSError):
+        return None
 
 
 # trimesh subdivide() of the 20,480-triangle icosphere in the issue's table (ms)
