@@ -240,6 +240,15 @@ def on_path(compiled: bool, fn: Callable[[], object]) -> Callable[[], object]:
     return run
 
 
+def ratio_rows(table, sec, t, case, reference, target, label, note) -> None:
+    """A target's rows: ``case`` over ``reference`` run by run, numpy path and compiled."""
+    for name, suffix in ((case, ""), (case + ", compiled", ", compiled kernels")):
+        if name not in t:
+            continue
+        r = np.array(t[name]) / np.array(t[reference])
+        table.add(sec, label + suffix, median(r), "x", target, note=note(r))
+
+
 # ---------------------------------------------------------------------- sections
 def speed(table: Table, runs: int, clock) -> dict:
     import trimesh
@@ -286,33 +295,26 @@ def speed(table: Table, runs: int, clock) -> dict:
         1000 * median(t["pipeline"]),
         "ms",
     )
-    for case, suffix in (
-        ("pentagonalize(Mesh(V, F))", ""),
-        ("pentagonalize(Mesh(V, F)), compiled", ", compiled kernels"),
-    ):
-        if case not in t:
-            continue
-        r1 = np.array(t[case]) / np.array(t["trimesh subdivide"])
-        table.add(
-            sec,
-            f"1. pentagonalize(Mesh(V, F)) / trimesh subdivide(){suffix}",
-            median(r1),
-            "x",
-            1.0,
-            note=f"runs {r1.min():.2f}-{r1.max():.2f}",
-        )
-    for case, suffix in (("pipeline", ""), ("pipeline, compiled", ", compiled kernels")):
-        if case not in t:
-            continue
-        r2 = np.array(t[case]) / np.array(t["trimesh subdivide_loop"])
-        table.add(
-            sec,
-            f"2. smooth(pentagonalize(Mesh(V, F)), 2) / subdivide_loop{suffix}",
-            median(r2),
-            "x",
-            0.25,
-            note=f"{len(r2)} runs: {', '.join(f'{x:.3f}' for x in sorted(r2))}",
-        )
+    ratio_rows(
+        table,
+        sec,
+        t,
+        "pentagonalize(Mesh(V, F))",
+        "trimesh subdivide",
+        1.0,
+        "1. pentagonalize(Mesh(V, F)) / trimesh subdivide()",
+        lambda r: f"runs {r.min():.2f}-{r.max():.2f}",
+    )
+    ratio_rows(
+        table,
+        sec,
+        t,
+        "pipeline",
+        "trimesh subdivide_loop",
+        0.25,
+        "2. smooth(pentagonalize(Mesh(V, F)), 2) / subdivide_loop",
+        lambda r: f"{len(r)} runs: {', '.join(f'{x:.3f}' for x in sorted(r))}",
+    )
     # a diagnosis of target 1 on the numpy path: the validation's one sort
     # (the twin pairing's packed keys), here and with numpy's AVX-512 sorts
     # switched off (on AMD Zen 4 they are slow: a microcoded compress-store)

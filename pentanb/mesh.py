@@ -898,8 +898,11 @@ class Mesh:
             return False
         del neighbour
         self._shared.values["twin"] = _readonly(twin)
-        if k:  # rotation[h] = twin[prev[h]]: a column copy of the twins (not kept)
-            ring, ring_off = _vertex_rings(_shifted(twin, k, -1), c, self.valences)
+        # (no rotation array: a column copy of the twins walks the rings a
+        # little faster, but raises the peak of reading a 1,000,000-triangle
+        # file from 2.9x to 3.3x the arrays read)
+        if k:  # rotation[h] = twin[prev[h]], prev computed as needed (no array kept)
+            ring, ring_off = _vertex_rings(_RotateUniform(twin, k), c, self.valences)
         else:
             ring, ring_off = _vertex_rings(_rotation(twin, o, k, self), c, self.valences)
         seen = np.zeros(c.size, dtype=bool)
@@ -1359,6 +1362,27 @@ def _rotation(twin: np.ndarray, offsets: np.ndarray, k: int, mesh: Any = None) -
         return _shifted(twin, k, -1)
     prv = mesh.prev if mesh is not None else _prev_of(offsets, twin.size, twin.dtype)
     return twin[prv]
+
+
+class _RotateUniform:
+    """``rotation[h]`` of a mesh of k-gons from its twins, without a rotation array.
+
+    ``rotate[cur]`` is ``twin[prev[cur]]``, ``prev[h]`` being ``h - 1``, or
+    ``h + k - 1`` at the first corner of a face.
+    """
+
+    def __init__(self, twin: np.ndarray, k: int) -> None:
+        self.twin, self.k = twin, k
+
+    def __getitem__(self, cur: np.ndarray) -> np.ndarray:
+        # the first corners: cur // k * k == cur (numpy divides by a constant
+        # with a multiplication, 4x faster here than its remainder)
+        first = cur // self.k
+        first *= self.k
+        first = first == cur
+        prv = cur - 1
+        prv[first] += self.k
+        return self.twin[prv]
 
 
 def _next_of(offsets: np.ndarray, n_corners: int, dtype: Any) -> IntArray:
