@@ -56,8 +56,8 @@ def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray
     rows = res.reshape(E, k, 3)
     # the products and sums on contiguous blocks (numpy runs those as one
     # flat loop; on the rows of point j, three values of every k * 3, it
-    # loops three at a time), then one copy into the rows: 18.6 -> 11.0 ms
-    # for the 983,040 points of 327,680 triangles
+    # loops three at a time), then one copy into the rows, each row one
+    # 24-byte item: 18.6 -> 9.2 ms for the 983,040 points of 327,680 triangles
     x, y = np.empty((min(E, BLOCK), 3)), np.empty((min(E, BLOCK), 3))
     for a in range(0, E, BLOCK):
         ends = edges[a : a + BLOCK]
@@ -67,7 +67,7 @@ def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray
             np.multiply(pa, 1.0 - t[j], out=xa)
             np.multiply(pb, t[j], out=ya)
             xa += ya
-            rows[a : a + BLOCK, j] = xa
+            rows[a : a + BLOCK, j].view("V24")[:, 0] = xa.view("V24")[:, 0]
         del pa, pb  # (a block's temporaries: gone before the next allocations)
     return res
 
