@@ -57,17 +57,28 @@ def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray
     # the products and sums on contiguous blocks (numpy runs those as one
     # flat loop; on the rows of point j, three values of every k * 3, it
     # loops three at a time), then one copy into the rows, each row one
-    # 24-byte item: 18.6 -> 9.2 ms for the 983,040 points of 327,680 triangles
-    x, y = np.empty((min(E, BLOCK), 3)), np.empty((min(E, BLOCK), 3))
+    # 24-byte item: 18.6 -> 8.5 ms for the 983,040 points of 327,680
+    # triangles.  The last point is computed in place on the ends (not
+    # needed after it), the others in two halves of a block: three blocks
+    # at most, as many as ``r = pa * s; r += pb * t`` took
+    half = (BLOCK + 1) // 2
+    rows_x = min(E, half) if k > 1 else 0
+    x, y = np.empty((rows_x, 3)), np.empty((rows_x, 3))
     for a in range(0, E, BLOCK):
         ends = edges[a : a + BLOCK]
         pa, pb = v.take(ends[:, 0], axis=0), v.take(ends[:, 1], axis=0)
-        xa, ya = x[: len(pa)], y[: len(pa)]
-        for j in range(k):
-            np.multiply(pa, 1.0 - t[j], out=xa)
-            np.multiply(pb, t[j], out=ya)
-            xa += ya
-            rows[a : a + BLOCK, j].view("V24")[:, 0] = xa.view("V24")[:, 0]
+        dest = rows[a : a + BLOCK]
+        for j in range(k - 1):
+            for b in range(0, len(pa), half):
+                xa, ya = x[: len(pa) - b], y[: len(pa) - b]
+                np.multiply(pa[b : b + half], 1.0 - t[j], out=xa)
+                np.multiply(pb[b : b + half], t[j], out=ya)
+                xa += ya
+                dest[b : b + half, j].view("V24")[:, 0] = xa.view("V24")[:, 0]
+        pa *= 1.0 - t[k - 1]
+        pb *= t[k - 1]
+        pa += pb
+        dest[:, k - 1].view("V24")[:, 0] = pa.view("V24")[:, 0]
         del pa, pb  # (a block's temporaries: gone before the next allocations)
     return res
 
