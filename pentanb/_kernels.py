@@ -434,9 +434,11 @@ def rows4(x0, x1, x2, x3):  # pragma: no cover - compiled
 
 @inline
 def rotated(out, r, x0, x1, x2):  # pragma: no cover - compiled
-    # out[r:r + 3] = (x0, x1, x2) turned to start at the largest
+    # out[r:r + 3] = (x0, x1, x2) turned to start at the largest; the rows
+    # they went to (for a second array turned alike)
     p0, p1, p2 = rows3(x0, x1, x2)
     out[ix(r + p0)], out[ix(r + p1)], out[ix(r + p2)] = x0, x1, x2
+    return p0, p1, p2
 
 
 @jit
@@ -466,9 +468,7 @@ def preserved_copy_part(prv, face_in, base, F, out, faces, lo, hi):  # pragma: n
     for h in range(lo, hi):
         p = prv[ix(h)]
         r = base + 3 * h
-        x1, x2 = H + 5 * p + 3, H + 5 * h + 4
-        p0, p1, p2 = rows3(h, x1, x2)
-        out[ix(r + p0)], out[ix(r + p1)], out[ix(r + p2)] = h, x1, x2
+        p0, p1, p2 = rotated(out, r, h, H + 5 * p + 3, H + 5 * h + 4)
         faces[ix(r + p0)], faces[ix(r + p1)], faces[ix(r + p2)] = face_in[ix(h)], F + p, F + h
 
 

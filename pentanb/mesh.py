@@ -422,8 +422,7 @@ class Mesh:
             v = _as_vertices(vertices)
             c = _csr_part(corners, "corners")  # copies: the caller's
             o = _csr_part(offsets, "offsets")  # arrays stay theirs
-            if o.size == 0 or o[0] != 0 or o[-1] != c.size or np.any(np.diff(o) < 0):
-                raise MeshError("offsets must start at 0, rise, and end at len(corners)")
+            _check_offsets(c, o)
             self = cls._new(v, *_compact(c, o, v.shape[0]))
             self._validate()
             return self
@@ -1264,6 +1263,17 @@ def _index_dtype(*counts: int) -> np.dtype:
     return np.dtype(np.int32) if max(counts, default=0) <= _INT32_MAX else np.dtype(np.int64)
 
 
+def _check_offsets(corners: np.ndarray, offsets: np.ndarray) -> None:
+    """MeshError unless ``offsets`` starts at 0, never falls and ends at ``len(corners)``."""
+    if (
+        offsets.size == 0
+        or offsets[0] != 0
+        or offsets[-1] != corners.size
+        or (np.diff(offsets) < 0).any()
+    ):
+        raise MeshError("offsets must start at 0, rise, and end at len(corners)")
+
+
 def _check_ranges(
     corners: np.ndarray, offsets: np.ndarray, twin: np.ndarray | None, n: int
 ) -> None:
@@ -1273,10 +1283,7 @@ def _check_ranges(
     passes, so that no operator (numpy's or a compiled kernel, which does
     not check) reads outside an array.
     """
-    if offsets.size == 0 or offsets[0] != 0 or offsets[-1] != corners.size:
-        raise MeshError("offsets must start at 0, rise, and end at len(corners)")
-    if offsets.size > 1 and (np.diff(offsets) < 0).any():
-        raise MeshError("offsets must start at 0, rise, and end at len(corners)")
+    _check_offsets(corners, offsets)
     if corners.size and (int(corners.min()) < 0 or int(corners.max()) >= n):
         bad = int(np.flatnonzero((corners < 0) | (corners >= n))[0])
         raise MeshError(f"corner {bad} is vertex {int(corners[bad])}, outside the {n:,} vertices")
