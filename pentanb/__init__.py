@@ -15,7 +15,6 @@ from __future__ import annotations
 
 from . import shapes, topology
 from ._jit import use_jit
-from ._malloc import keep_freed_memory, release_freed_memory
 from .io import read, write
 from .mesh import Mesh, MeshError
 from .notation import conway
@@ -73,8 +72,6 @@ __all__ = [
     "planarize",
     "ConvergenceError",
     "use_jit",
-    "keep_freed_memory",
-    "release_freed_memory",
 ]
 
 # drawing functions: imported on first use, so that `import pentanb` needs numpy only

@@ -24,12 +24,7 @@ use in a process compiles the kernels it needs (about 2 s for an explorer's
 first move with an empty cache); numba caches the machine code on disk, so
 later processes load it.
 
-Kernels whose items are independent (faces, edges, vertices, ring
-entries) release the GIL and cut their items into one part per CPU
-(:func:`threads`: at most 8, or ``PENTANB_THREADS``), run at once by worker threads
-(:func:`split`; fewer than :data:`MIN_SPLIT` items stay on one thread).
-Each part writes its own rows, so the results do not depend on the number
-of threads.  A forked child starts threads of its own.
+Every kernel runs on the calling thread: pentanb starts no thread.
 
 Switch them with the environment variable ``PENTANB_JIT`` (``0``: off,
 ``1``: on, refused without numba), read when first needed, or at run time
@@ -38,18 +33,15 @@ with :func:`pentanb.use_jit`.  ``benchmarks/bench_pipeline.py`` reports both pat
 
 from __future__ import annotations
 
-import atexit
 import importlib.util
 import os
-import threading
 import types
 import warnings
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
-__all__ = ["MIN_CORNERS", "MIN_SPLIT", "available", "enabled", "use_jit", "kernels", "threads"]
+__all__ = ["MIN_CORNERS", "available", "enabled", "use_jit", "kernels"]
 
 #: Meshes with fewer corners than this keep the numpy path.
 MIN_CORNERS = 1 << 14
@@ -141,163 +133,6 @@ def kernels(corners: int) -> Any | None:
             _state["on"] = False
             return None
     return _state["kernels"]
-
-
-def threads() -> int:
-    """Threads the kernels split their work over.
-
-    ``PENTANB_THREADS`` (a positive integer, at most 64 used) when set, else
-    the CPUs this process may use, at most 8.
-
-    Raises
-    ------
-    ValueError
-        ``PENTANB_THREADS`` is set to anything but a positive integer.
-    """
-    flag = os.environ.get("PENTANB_THREADS", "").strip()
-    if flag:
-        if not flag.isdigit() or int(flag) < 1:
-            raise ValueError(f"PENTANB_THREADS must be a positive integer, got {flag!r}")
-        return min(int(flag), 64)
-    try:
-        n = len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):  # not Linux
-        n = os.cpu_count() or 1
-    return max(1, min(n, 8))
-
-
-#: Work items (faces, edges, vertices) below which a kernel runs on one thread.
-#: Below about 100,000 items a kernel takes well under a millisecond, and a
-#: second thread costs more than it saves: it starts some 50 µs late and
-#: reads from a cold cache what the calling thread has just written.
-#: Measured on a 2-core VM: every kernel of a slider move at 20,480 faces
-#: (at most 102,402 items) as fast or faster on one thread, the pipeline
-#: at 81,920 triangles 24.6 ms against 26.2 ms with parts from 2^14 items,
-#: and at 327,680 and 1,310,720 triangles as fast as then (the threads save
-#: 5 and 12 % there).
-MIN_SPLIT = 1 << 17
-
-
-class _Worker:
-    """One thread that runs the parts handed to it, one at a time.
-
-    Work is handed over through two locks (held while there is nothing to
-    run, and until the part is done): about 30 µs a part on a small
-    machine, where a ``concurrent.futures`` pool takes about 100.
-    """
-
-    def __init__(self, name: str):
-        self._go = threading.Lock()
-        self._go.acquire()
-        self._done = threading.Lock()
-        self._done.acquire()
-        self._job: tuple[Callable[..., None], tuple] | None = None
-        self._error: BaseException | None = None
-        threading.Thread(target=self._run, name=name, daemon=True).start()
-
-    def _run(self) -> None:
-        while True:
-            self._go.acquire()
-            job, self._job = self._job, None
-            try:
-                if job is not None:
-                    job[0](*job[1])
-            except BaseException as err:  # handed to the caller by wait()
-                self._error = err
-            finally:
-                self._done.release()
-
-    def start(self, kernel: Callable[..., None], args: tuple) -> None:
-        self._job = (kernel, args)
-        self._go.release()
-
-    def wait(self) -> BaseException | None:
-        """Wait for the part to end; its exception, if it raised one."""
-        self._done.acquire()
-        err, self._error = self._error, None
-        return err
-
-
-_crew: dict[str, Any] = {"workers": [], "pid": None, "closed": False}
-#: Held by the thread whose parts the workers run (another thread meanwhile
-#: runs its parts itself).
-_busy = threading.Lock()
-
-
-def _workers(k: int) -> list[_Worker] | None:
-    """``k`` idle worker threads, started on first use (again in a forked child).
-
-    None once the interpreter is exiting (a daemon thread may then be
-    stopped with a part unfinished).  The caller holds :data:`_busy`.
-    """
-    if _crew["closed"]:
-        return None
-    if _crew["pid"] != os.getpid():  # (a forked child has none of its parent's threads)
-        _crew["workers"], _crew["pid"] = [], os.getpid()
-    workers = _crew["workers"]
-    try:
-        while len(workers) < k:
-            workers.append(_Worker(f"pentanb-kernel-{len(workers)}"))
-    except RuntimeError:  # no new thread now (say, at interpreter exit)
-        pass
-    return workers[:k] if len(workers) >= k else None
-
-
-def _close_crew() -> None:
-    _crew["closed"] = True
-
-
-atexit.register(_close_crew)
-
-
-def split(n: int, kernel: Callable[..., None], *args: Any) -> None:
-    """Run ``kernel(*args, lo, hi)`` over ``range(n)`` cut into one part per thread.
-
-    The kernels release the GIL and write disjoint parts of their output,
-    so the parts run at once; the calling thread runs the first, worker
-    threads (:class:`_Worker`) the others.  Below :data:`MIN_SPLIT` items,
-    or with one CPU, it is one call.  While another thread's parts are
-    running, or once the interpreter is exiting, every part runs on the
-    calling thread, one after the other.  An exception of any part reaches
-    the caller, once every part has ended.
-    """
-    parts = min(threads(), n // MIN_SPLIT)
-    if parts <= 1:
-        kernel(*args, 0, n)
-        return
-    cuts = [n * i // parts for i in range(parts + 1)]
-    held = _busy.acquire(blocking=False)
-    try:
-        workers = _workers(parts - 1) if held else None
-        if workers is None:  # busy, or exiting: every part here
-            for i in range(parts):
-                kernel(*args, cuts[i], cuts[i + 1])
-            return
-        for i, worker in enumerate(workers, 1):
-            worker.start(kernel, args + (cuts[i], cuts[i + 1]))
-        try:
-            kernel(*args, cuts[0], cuts[1])
-        finally:
-            errors = _wait(workers)
-        if errors:
-            raise errors[0]
-    finally:
-        if held:
-            _busy.release()
-
-
-def _wait(workers: list[_Worker]) -> list[BaseException]:
-    """Wait for every worker's part; the exceptions they raised."""
-    errors = []
-    for worker in workers:
-        try:
-            err = worker.wait()
-        except BaseException:  # interrupted (Ctrl-C): some parts may still be running;
-            _crew["workers"] = []  # later calls get new threads, never these
-            raise
-        if err is not None:
-            errors.append(err)
-    return errors
 
 
 def _compile() -> Any:

@@ -3,7 +3,7 @@
 Every kernel is a module-level function, so numba caches its machine code
 on disk (a kernel calling another defined in a closure would be compiled
 again in every process).  Those named ``*_part`` fill the rows ``lo:hi``
-of an output they are given and run through :func:`pentanb._jit.split`;
+of an output they are given (:func:`split` runs one over all its rows);
 the functions without the suffix take the numpy path's arguments and are
 what :func:`pentanb._jit.kernels` hands out.  Each gives the numpy path's
 results bit for bit; ``tests/test_jit.py`` compares them.
@@ -16,7 +16,6 @@ from collections.abc import Callable
 import numba
 import numpy as np
 
-from ._jit import split
 
 jit: Callable = numba.njit(cache=True, nogil=True)
 #: Helpers the kernels call, inlined into them (a call per face costs as much as the face).
@@ -30,6 +29,11 @@ def ix(i):  # pragma: no cover - compiled
     # every access that also keeps LLVM from vectorizing the loop (a plain
     # copy loop here: 0.31 ms signed, 0.034 ms unsigned, as fast as numpy)
     return numba.uint64(i)
+
+
+def split(n, kernel, *args):
+    """Run ``kernel(*args, lo, hi)`` over all of ``range(n)``, on the calling thread."""
+    kernel(*args, 0, n)
 
 
 #: What :func:`pentanb._jit.kernels` hands out.

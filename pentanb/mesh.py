@@ -38,7 +38,7 @@ from typing import Any, Generic, TypeVar, overload
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from . import _jit, _malloc
+from . import _jit
 
 __all__ = ["Mesh", "MeshError", "fan_triangle_corners"]
 
@@ -858,10 +858,8 @@ class Mesh:
         the mesh is valid (:meth:`_valid`); only a mesh that fails one is
         checked again, in order, by :meth:`_validate_exactly`, which finds
         the first culprit and names it.  The twins and vertex rings the
-        checks derive stay cached.  A mesh of millions of faces lets malloc
-        keep freed memory for the work that follows (:func:`pentanb._malloc.note_work`).
+        checks derive stay cached.
         """
-        _malloc.note_work(self._corners.size)
         if not self._valid():
             self._validate_exactly()
 
@@ -1804,11 +1802,8 @@ def fan_triangle_corners(offsets: ArrayLike) -> tuple[IntArray, IntArray]:
 def check_mesh(mesh: object, op: str) -> Mesh:
     """``mesh`` itself, or a TypeError naming ``op`` when it is not a Mesh.
 
-    Every operator, writer and position solver starts with it, so it also
-    tells the memory policy how large the work is: on millions of faces
-    malloc keeps freed memory for the next array (:func:`pentanb._malloc.note_work`).
+    Every operator, writer and position solver starts with it.
     """
     if not isinstance(mesh, Mesh):
         raise TypeError(f"{op} expects a pentanb.Mesh, got {type(mesh).__name__}")
-    _malloc.note_work(mesh.n_halfedges)
     return mesh

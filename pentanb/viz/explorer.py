@@ -18,7 +18,7 @@ from collections.abc import Callable
 
 import ipywidgets as W
 
-from .. import _malloc, shapes
+from .. import shapes
 from ..mesh import Mesh, MeshError
 from ..schemes.registry import SCHEMES, Scheme, get_scheme
 from ..subdivision import predict_counts, subdivide
@@ -350,7 +350,6 @@ class Explorer(W.HBox):
 
         if self.key() not in self._cache and self._builds_at_least(self.PROGRESS_FACES):
             show()
-        _malloc.note_interaction()  # the next move reuses this one's freed arrays
         try:
             mesh = self.mesh_at(progress=report)
         except MeshError as err:
