@@ -16,7 +16,6 @@ from collections.abc import Callable
 import numba
 import numpy as np
 
-
 jit: Callable = numba.njit(cache=True, nogil=True)
 #: Helpers the kernels call, inlined into them (a call per face costs as much as the face).
 inline: Callable = numba.njit(cache=True, nogil=True, inline="always")

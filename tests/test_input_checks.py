@@ -19,7 +19,7 @@ import pentanb
 import pentanb.cli
 import pentanb.subdivision
 from pentanb import Mesh, MeshError, shapes
-from pentanb._boundary import boundary_loops, describe_boundary
+from pentanb.mesh.boundary import boundary_loops, describe_boundary
 
 
 def cube_v():

@@ -10,7 +10,7 @@ import pytest
 from helpers import face_lists
 
 import pentanb.io.convert
-from pentanb import Mesh, MeshError, shapes
+from pentanb import MeshError, shapes
 from pentanb.io import IgnoredDataWarning, from_meshio, from_trimesh, to_meshio, to_trimesh
 
 trimesh = pytest.importorskip("trimesh")
@@ -33,7 +33,7 @@ def test_trimesh_round_trip_of_a_triangle_mesh():
     assert np.array_equal(t.vertices, m.vertices) and t.faces.tolist() == face_lists(m)
     back = from_trimesh(t)
     assert back.vertices.tobytes() == m.vertices.tobytes() and face_lists(back) == face_lists(m)
-    assert face_lists(Mesh.from_trimesh(m.to_trimesh())) == face_lists(m)
+    assert face_lists(from_trimesh(to_trimesh(m))) == face_lists(m)
 
 
 def test_to_trimesh_fans_polygons_and_says_where_each_triangle_comes_from(corpus_mesh):

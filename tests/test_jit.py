@@ -24,7 +24,7 @@ from helpers import prism
 
 import pentanb
 from pentanb import _jit, shapes
-from pentanb.mesh import _face_means
+from pentanb.mesh.geometry import face_means as _face_means
 from pentanb.viz import drawing
 
 
@@ -164,7 +164,7 @@ def test_small_meshes_never_load_the_kernels(monkeypatch):
 
 
 def test_twins_are_the_numpy_twins(corpus_mesh, compiled):
-    from pentanb.mesh import _pair_twins
+    from pentanb.mesh.halfedge import pair_twins as _pair_twins
 
     m = corpus_mesh
     k = m._uniform_size
@@ -185,7 +185,7 @@ def test_twins_are_the_numpy_twins(corpus_mesh, compiled):
     ],
 )
 def test_half_edges_that_do_not_pair_give_none_both_ways(compiled, faces):
-    from pentanb.mesh import _pair_twins
+    from pentanb.mesh.halfedge import pair_twins as _pair_twins
 
     f = np.array(faces)
     tail = f.reshape(-1).astype(np.int32)
@@ -194,7 +194,7 @@ def test_half_edges_that_do_not_pair_give_none_both_ways(compiled, faces):
 
 
 def test_twins_of_indices_out_of_range_are_refused_not_written(compiled):
-    from pentanb.mesh import _pair_twins
+    from pentanb.mesh.halfedge import pair_twins as _pair_twins
 
     tail = np.array([0, 1, 2, 2, 1, 7], dtype=np.int32)  # vertex 7 of 4
     assert compiled.pair_twins(tail, tail[:0], 3, 4).size == 0

@@ -903,7 +903,7 @@ def test_a_wrapper_on_Mesh_init_can_refuse_large_meshes(monkeypatch):
 def test_a_producer_may_write_two_connectivity_arrays_in_one_pass():
     # an operator's rings producer may hand back the face of every ring
     # entry too (the dual's corners): both are cached from the one call
-    from pentanb.mesh import _Several
+    from pentanb.mesh import Several as _Several
 
     m = shapes.cube()
     ring, off = m.vertex_ring

@@ -22,8 +22,9 @@ from typing import IO, Any
 
 import numpy as np
 
-from ..mesh import Mesh, MeshError, _as_vertices
+from ..mesh import Mesh, MeshError
 from ..mesh import check_mesh as check_mesh  # (the readers and writers take it from here)
+from ..mesh.build import adopted
 
 #: The file formats, by the suffix that names them.
 FORMATS = {".obj": "obj", ".off": "off", ".ply": "ply", ".stl": "stl"}
@@ -280,9 +281,7 @@ def finish(path: Path, vertices: np.ndarray, corners: np.ndarray, offsets: np.nd
         The mesh's own message, prefixed with the file name.
     """
     try:
-        v = _as_vertices(vertices, copy=False)
-        mesh = Mesh._new(v, corners, offsets)
-        mesh._validate()
+        mesh = adopted(vertices, corners, offsets)
     except MeshError as exc:
         raise MeshError(f"{path}: {exc}") from None
     return mesh

@@ -19,6 +19,7 @@ from typing import IO, Any
 import numpy as np
 
 from ..mesh import Mesh, MeshError
+from ..mesh.build import adopted
 from ._common import as_path, check_mesh, line_blocks, parse_floats, scan, show
 from .obj import WRITE_ROWS
 
@@ -106,8 +107,7 @@ def read_stl(path: str | os.PathLike, tolerance: float = 0.0) -> Mesh:
             "area cannot be part of a closed manifold"
         )
     try:
-        mesh = Mesh._new(vertices, index, np.arange(0, index.size + 1, 3, dtype=np.int64))
-        mesh._validate()
+        mesh = adopted(vertices, index, np.arange(0, index.size + 1, 3, dtype=np.int64))
     except MeshError as exc:
         raise MeshError(
             f"{path}: the {tri.shape[0]:,} facets, welded into {vertices.shape[0]:,} vertices "

@@ -14,7 +14,10 @@ from typing import Any, TypeVar
 import numpy as np
 
 from .. import _jit
-from ..mesh import _SAFE_EXTENT, Mesh, MeshError, Rings, _index_dtype, _Several, check_mesh
+from ..mesh import Mesh, MeshError, Rings, Several, check_mesh
+from ..mesh import build as _mesh
+from ..mesh.coerce import index_dtype as _index_dtype
+from ..mesh.geometry import SAFE_EXTENT
 
 _Op = TypeVar("_Op", bound=Callable[..., Mesh])
 
@@ -201,7 +204,7 @@ def output(
     offsets: np.ndarray,
     *,
     twin: np.ndarray | Callable[[], np.ndarray] | None = None,
-    rings: Rings | Callable[[], Rings | _Several] | None = None,
+    rings: Rings | Callable[[], Rings | Several] | None = None,
     size_counts: tuple[tuple[int, int], ...] | None = None,
     dual_of: Mesh | None = None,
 ) -> Mesh:
@@ -220,19 +223,19 @@ def output(
         only if the twins are asked for).
     rings : ((H,) int, (n + 1,) int), or a callable returning them, optional
         The output's vertex rings (:attr:`pentanb.Mesh.vertex_ring`), likewise;
-        the callable may return a :class:`pentanb.mesh._Several` holding them
+        the callable may return a :class:`pentanb.mesh.Several` holding them
         (``vertex_ring``) and other connectivity written in the same pass
         (``_ring_faces``, the dual's corners).
     size_counts : ((size, faces), ...), optional
         The output's face-size histogram, by ascending size, when the
-        operator knows it (what ``Mesh._size_counts`` would count).
+        operator knows it (what :func:`pentanb.mesh.build.size_counts` would count).
     dual_of : Mesh, optional
         The mesh the output is the dual of (:func:`pentanb.dual` only).
     """
     dtype = index_dtype(vertices.shape[0], corners.size)
     corners = corners.astype(dtype, copy=False)
     offsets = offsets.astype(dtype, copy=False)
-    return Mesh._new(
+    return _mesh.trusted(
         vertices,
         corners,
         offsets,
@@ -250,7 +253,7 @@ def remeshed(
     offsets: np.ndarray,
     dt: np.dtype,
     twin_of: Callable[[Any, np.dtype], np.ndarray],
-    rings_of: Callable[[Any, np.dtype], Rings | _Several],
+    rings_of: Callable[[Any, np.dtype], Rings | Several],
     size_counts: tuple[tuple[int, int], ...] | None = None,
 ) -> Mesh:
     """:func:`output` of a remeshing of ``mesh``, its connectivity written from ``mesh``'s.
@@ -260,7 +263,7 @@ def remeshed(
     ``mesh``'s faces without its positions (so the output does not keep
     them alive).
     """
-    faces = mesh._faces_only()
+    faces = _mesh.faces_only(mesh)
     return output(
         vertices,
         corners,
@@ -286,13 +289,13 @@ def scale_safe(op: _Op) -> _Op:
     @functools.wraps(op)
     def run(mesh: Mesh, *args: Any, **kwargs: Any) -> Mesh:
         check_mesh(mesh, op.__name__)
-        extent = mesh._extent
-        if extent < _SAFE_EXTENT:
+        extent = _mesh.extent(mesh)
+        if extent < SAFE_EXTENT:
             out = op(mesh, *args, **kwargs)
-            out._note_extent(extent)
+            _mesh.note_extent(out, extent)
             return out
         shift = int(np.frexp(extent)[1]) - 1000
-        return op(mesh._rescaled(-shift), *args, **kwargs)._rescaled(shift)
+        return _mesh.rescaled(op(_mesh.rescaled(mesh, -shift), *args, **kwargs), shift)
 
     return run  # type: ignore[return-value]
 

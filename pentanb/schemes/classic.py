@@ -25,6 +25,7 @@ import numpy as np
 
 from .. import _jit
 from ..mesh import Mesh
+from ..mesh import build as _mesh
 from ._build import (
     affine,
     check_mesh,
@@ -336,7 +337,7 @@ def _edge_slot(m, h: np.ndarray, per: int, forward: int, backward: int, dt: np.d
     copied ones)."""
     col = affine(m.halfedge_edge[h], per, m.n_halfedges + backward, dt)
     if forward != backward:  # (one byte per half-edge, not a where() of ints)
-        col += m._forward[h].view(np.int8) * np.int8(forward - backward)
+        col += _mesh.forward(m)[h].view(np.int8) * np.int8(forward - backward)
     return col
 
 
@@ -375,7 +376,7 @@ def _cutting_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     jit = _jit.kernels(4 * H)
     if jit is not None:  # the same rings, written in one pass
         edge, prv = m.halfedge_edge.astype(dt, copy=False), m.prev.astype(dt, copy=False)
-        rings = jit.cutting_rings(pos, edge, m._forward, prv)
+        rings = jit.cutting_rings(pos, edge, _mesh.forward(m), prv)
         return rings, np.arange(0, 4 * H + 1, 4, dtype=dt)
     h = np.arange(H, dtype=dt)
     rings = columns(
@@ -463,7 +464,7 @@ def _hexagons_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
     if jit is not None:  # the same rings, each written turned, in one pass
         edge, prv = m.halfedge_edge.astype(dt, copy=False), m.prev.astype(dt, copy=False)
         ring = ring.astype(dt, copy=False)
-        return jit.hexagons_rings(ring, ring_off, edge, m._forward, prv), offsets
+        return jit.hexagons_rings(ring, ring_off, edge, _mesh.forward(m), prv), offsets
     h = np.arange(H, dtype=dt)
     copies = columns(dt, H, h, _hex_slot(m, m.prev, 0, 3, dt), _hex_slot(m, h, 1, 4, dt))
     rings = np.concatenate(

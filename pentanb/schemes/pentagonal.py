@@ -10,7 +10,9 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _jit
-from ..mesh import Mesh, Rings, _next_of, _prev_of, _Several
+from ..mesh import Mesh, Rings, Several
+from ..mesh import build as _mesh
+from ..mesh.halfedge import next_of, prev_of
 from ._build import (
     BLOCK,
     check_mesh,
@@ -63,7 +65,7 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     check_mesh(mesh, "pentagonalize")
     n, E, F, H = mesh.n_vertices, mesh.n_edges, mesh.n_faces, mesh.n_halfedges
     dt = index_dtype(n + 2 * E + F, 5 * H)
-    forward = mesh._forward
+    forward = _mesh.forward(mesh)
     # every column is computed contiguously and written once: numpy is slow on
     # strided views, and slower still on views whose last axis is short
     faces = np.empty((H, 5), dtype=dt)
@@ -77,7 +79,7 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     faces[:, 1] = base
     del t1, base
     faces[:, 2] = mesh.head
-    k = mesh._uniform_size
+    k = _mesh.uniform_size(mesh)
     if k:  # every face a k-gon: the next half-edge is the next row of the face
         block = faces.reshape(F, k, 5)
         centres = np.arange(n + 2 * E, n + 2 * E + F, dtype=dt)
@@ -96,7 +98,7 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     # the twins' producer holds the input's twins and offsets only, not its
     # faces (whose cached connectivity would then stay alive until the
     # output's twins are asked for, maybe an iteration later)
-    twin_in, offsets_in, source = mesh.twin, mesh.offsets, mesh._faces_only()
+    twin_in, offsets_in, source = mesh.twin, mesh.offsets, _mesh.faces_only(mesh)
     return output(
         vertices,
         faces.reshape(-1),
@@ -115,7 +117,7 @@ def _pentagonalized_twin(twin: np.ndarray, offsets: np.ndarray, dt: np.dtype) ->
     """
     H = twin.size
     tw = twin.astype(dt, copy=False)
-    nxt, prv = _next_of(offsets, H, dt), _prev_of(offsets, H, dt)
+    nxt, prv = next_of(offsets, H, dt), prev_of(offsets, H, dt)
     out = np.empty((H, 5), dtype=dt)
     # column by column, each computed contiguously and written once
     for s, part in enumerate((tw, prv[tw], tw[nxt], nxt, prv)):
@@ -150,7 +152,7 @@ def _pentagonalized_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
         return jit.pentagonalized_rings(ring.astype(dt, copy=False), eh, twin, prv), offsets
     # prev[h] from the offsets: an arange and one scatter, then plain gathers
     # (cheaper than mesh.prev's cache, and than h - 1 fixed at every first corner)
-    prv = _prev_of(mesh.offsets, H, dt)
+    prv = prev_of(mesh.offsets, H, dt)
     out = np.empty(5 * H, dtype=dt)
     old = out[:H]
     old[:] = prv[ring]
@@ -243,7 +245,7 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     face_offsets[: F + 1] = offsets
     face_offsets[F + 1 :] = np.arange(H + 5, 6 * H + 1, 5, dtype=dt)
     # the face sizes: the input's (the copies) and H pentagons
-    histogram = dict(mesh._size_counts)
+    histogram = dict(_mesh.size_counts(mesh))
     histogram[5] = histogram.get(5, 0) + H
     return remeshed(
         mesh,
@@ -283,7 +285,7 @@ def _preserved_twin(mesh, dt: np.dtype) -> np.ndarray:
     return out
 
 
-def _preserved_rings(mesh, dt: np.dtype) -> Rings | _Several:
+def _preserved_rings(mesh, dt: np.dtype) -> Rings | Several:
     """The vertex rings of ``preserve_pentagons(mesh)``, from ``mesh``'s.
 
     Around an old vertex: ``H + 5 prev[h] + 1`` for its outgoing h, in its
@@ -309,7 +311,7 @@ def _preserved_rings(mesh, dt: np.dtype) -> Rings | _Several:
         rings, faces = jit.preserved_rings(
             ring.astype(dt, copy=False), ring_off, eh, twin, prv, face_in, mesh.n_faces
         )
-        return _Several(vertex_ring=(rings, offsets), _ring_faces=faces)
+        return Several(vertex_ring=(rings, offsets), _ring_faces=faces)
     old = prv[ring] * 5
     old += H + 1
     back = twin[eh]

@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..mesh import Mesh
+from ..mesh import build as _mesh
 from ._build import check_count, check_mesh, check_vertex_faces, inverse, output
 
 __all__ = ["dual", "smooth"]
@@ -50,21 +51,21 @@ def dual(mesh: Mesh) -> Mesh:
         meshes; only ``Mesh.from_csr(..., validate=False)`` can build one.
     """
     check_mesh(mesh, "dual")
-    source = mesh._dual_source
-    if source is not None:
+    source_offsets = _mesh.dual_source_offsets(mesh)
+    if source_offsets is not None:
         # mesh is itself a dual: its vertex f is the source's face f, with as
         # many edges as that face has sides; its dual has the connectivity of
         # the mesh it came from (dual(dual(m)) has m's faces in m's order),
         # only new positions
-        check_vertex_faces(mesh, "dual", np.diff(source.offsets))
-        again = mesh._dual_again()
+        check_vertex_faces(mesh, "dual", np.diff(source_offsets))
+        again = _mesh.dual_again(mesh)
         assert again is not None
         return again
     check_vertex_faces(mesh, "dual")
     _, ring_off = mesh.vertex_ring
     # the dual's face v: the faces round vertex v, in rotation order
-    corners = mesh._ring_faces()
-    faces = mesh._faces_only()
+    corners = _mesh.ring_faces(mesh)
+    faces = _mesh.faces_only(mesh)
     out = output(
         mesh.face_centroids,
         corners,
@@ -73,12 +74,12 @@ def dual(mesh: Mesh) -> Mesh:
         rings=lambda: (inverse(faces.vertex_ring[0]), faces.offsets),
         dual_of=mesh,
     )
-    out._note_extent(mesh._extent)
+    _mesh.note_extent(out, _mesh.extent(mesh))
     return out
 
 
 def _dual_twin(mesh) -> np.ndarray:
-    """The twins of the dual of ``mesh`` (its faces, see :meth:`Mesh._faces_only`).
+    """The twins of the dual of ``mesh`` (its faces, see :func:`pentanb.mesh.build.faces_only`).
 
     The dual half-edge at ring position ``i`` (half-edge ``h = ring[i]``)
     runs from the face of ``h`` to the face of ``rotation[h]``; its twin is

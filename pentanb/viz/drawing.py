@@ -35,6 +35,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import _jit
 from ..mesh import Mesh, check_mesh
+from ..mesh import build as _mesh
 from .colors import EDGE_COLOR, face_color, face_label, face_rgb, hex_to_rgb
 
 __all__ = [
@@ -309,7 +310,7 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
     a large mesh, they are written from the faces straight into uint32.
     """
     check_mesh(mesh, "mesh_buffers()")
-    counts = mesh._size_counts  # (size, faces) by size, counted once per connectivity
+    counts = _mesh.size_counts(mesh)  # (size, faces) by size, counted once per connectivity
     if not counts or counts[0][0] < 3:
         return buffers(drawing(mesh))
     sizes = mesh.face_sizes

@@ -1,0 +1,179 @@
+"""How operators, readers and drawing code build meshes and read what a mesh has cached.
+
+Code outside :mod:`pentanb.mesh` never touches a :class:`~pentanb.mesh.Mesh`'s
+private members; it goes through these functions.  The one way to make a
+mesh without validation is :func:`trusted`, for outputs that are valid by
+construction (every operator's).  The readers, which hand over arrays they
+have just made, use :func:`adopted` (validated, not copied).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from .coerce import IntArray, as_vertices
+from .core import Mesh, Rings, Several
+from .validate import validate
+
+__all__ = [
+    "trusted",
+    "adopted",
+    "faces_only",
+    "uniform_size",
+    "size_counts",
+    "forward",
+    "ring_faces",
+    "extent",
+    "note_extent",
+    "dual_source_offsets",
+    "dual_again",
+    "rescaled",
+]
+
+
+def trusted(
+    vertices: np.ndarray,
+    corners: np.ndarray,
+    offsets: np.ndarray,
+    *,
+    twin: IntArray | Callable[[], IntArray] | None = None,
+    rings: Rings | Callable[[], Rings | Several] | None = None,
+    size_counts: tuple[tuple[int, int], ...] | None = None,
+    dual_of: Mesh | None = None,
+) -> Mesh:
+    """The internal constructor: a mesh from arrays the package itself made.
+
+    No validation and no copy: the arrays become the mesh's, read-only.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    corners : (H,) int
+    offsets : (m + 1,) int
+        The faces in CSR form, of the index dtype the counts call for
+        (:func:`pentanb.mesh.coerce.index_dtype`).
+    twin : (H,) int, or a zero-argument callable returning it, optional
+        The output's twins when the caller knows them; a callable runs when
+        the twins are first asked for.
+    rings : ((H,) int, (n + 1,) int), or a callable returning them, optional
+        The vertex rings (:attr:`Mesh.vertex_ring`), likewise; the callable
+        may return a :class:`~pentanb.mesh.core.Several` holding them and
+        other connectivity written in the same pass (``_ring_faces``, the
+        dual's corners).
+    size_counts : ((size, faces), ...), optional
+        The face-size histogram by ascending size, when the caller knows it.
+    dual_of : Mesh, optional
+        The mesh this one is the dual of: the dual of this mesh then reuses
+        that mesh's connectivity (:func:`dual_again`).
+
+    Returns
+    -------
+    Mesh
+    """
+    return Mesh._new(
+        vertices,
+        corners,
+        offsets,
+        twin=twin,
+        rings=rings,
+        size_counts=size_counts,
+        dual_of=dual_of,
+    )
+
+
+def adopted(vertices: np.ndarray, corners: np.ndarray, offsets: np.ndarray) -> Mesh:
+    """A validated mesh from arrays a reader has just made (not copied).
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    corners : (H,) int
+    offsets : (m + 1,) int
+
+    Returns
+    -------
+    Mesh
+
+    Raises
+    ------
+    MeshError
+        What the constructor refuses, naming the culprit.
+    """
+    v = as_vertices(vertices, copy=False)
+    mesh = Mesh._new(v, corners, offsets)
+    validate(mesh)
+    return mesh
+
+
+def faces_only(mesh: Mesh) -> Any:
+    """``mesh``'s faces without its positions (the connectivity properties of a Mesh).
+
+    For the producers an operator hands over with its output: they derive
+    what they need from the faces (shared with ``mesh``, so nothing is
+    derived twice) without keeping the positions alive.
+    """
+    return mesh._faces_only()
+
+
+def uniform_size(mesh: Any) -> int:
+    """k when every face of ``mesh`` (a Mesh or its :func:`faces_only`) has k sides, else 0."""
+    return int(mesh._uniform_size)
+
+
+def size_counts(mesh: Mesh) -> tuple[tuple[int, int], ...]:
+    """``((n, number of n-gons), ...)`` by n, counted once per connectivity."""
+    return mesh._size_counts
+
+
+def forward(mesh: Any) -> np.ndarray:
+    """(H,) bool: ``tail < head``, the half-edge that numbers its edge."""
+    return mesh._forward
+
+
+def ring_faces(mesh: Mesh) -> IntArray:
+    """(H,) int: the face of every entry of :attr:`Mesh.vertex_ring`, in its order.
+
+    The dual's corners; taken from the cache once when an operator wrote
+    them with its output's rings.
+    """
+    return mesh._ring_faces()
+
+
+def extent(mesh: Mesh) -> float:
+    """The largest absolute coordinate of ``mesh`` (an upper bound for operator outputs)."""
+    return float(mesh._extent)
+
+
+def note_extent(mesh: Mesh, bound: float) -> None:
+    """Record an upper bound of :func:`extent` known without a pass over the positions."""
+    mesh._note_extent(bound)
+
+
+def dual_source_offsets(mesh: Mesh) -> IntArray | None:
+    """The offsets of the mesh ``mesh`` is the dual of (its face sizes are
+    ``mesh``'s valences), or None when ``mesh`` was not built as a dual."""
+    source = mesh._dual_source
+    return None if source is None else source.offsets
+
+
+def dual_again(mesh: Mesh) -> Mesh | None:
+    """The dual of ``mesh`` when it was built as the dual of a mesh M, else None.
+
+    Its faces are M's faces in M's order, with all M has derived; its
+    vertices are ``mesh``'s face centroids.
+    """
+    return mesh._dual_again()
+
+
+def rescaled(mesh: Mesh, shift: int) -> Mesh:
+    """The same faces (shared) with every position times ``2**shift`` (exact).
+
+    Raises
+    ------
+    MeshError
+        When a scaled position is not finite.
+    """
+    return mesh._rescaled(shift)

@@ -1,0 +1,910 @@
+"""The sealed :class:`Mesh`: CSR faces, positions, and what is derived from them, cached.
+
+A face is a cyclic sequence of vertex indices.  All faces are stored in one
+flat array of *corners* (``corners``) cut by ``offsets``: face ``f`` is
+``corners[offsets[f]:offsets[f + 1]]``.  Triangles, pentagons and mixed faces
+share this one structure.  Half-edges and the rest are derived on first use
+(:mod:`pentanb.mesh.halfedge`) and cached.
+
+A :class:`Mesh` is sealed: no attribute can be set, replaced or deleted, and
+every array it hands out is read-only, so nothing it has cached can go
+stale.  What depends on the faces alone is kept in one connectivity record
+shared by the meshes with the same faces (:meth:`Mesh.with_vertices`, the
+dual of a dual), so it is derived once for all of them.
+
+Operators build their outputs, valid by construction, through one internal
+constructor, :func:`pentanb.mesh.build.trusted`; :mod:`pentanb.mesh.build`
+is the only way code outside this package reaches a mesh's caches.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from typing import Any, Generic, TypeVar, overload
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .. import _jit
+from .coerce import (
+    FloatArray,
+    IntArray,
+    MeshError,
+    as_csr,
+    as_csr_part,
+    as_vertices,
+    check_offsets,
+    check_ranges,
+    compact,
+    frozen,
+    readonly,
+)
+from .geometry import face_means, scaled_newell
+from .halfedge import (
+    fan_triangle_corners,
+    halfedge_face,
+    head_of,
+    next_of,
+    pair_twins,
+    prev_of,
+    rotation_of,
+    uniform_size,
+    vertex_rings,
+)
+from .validate import validate as validate_mesh
+
+__all__ = ["Mesh", "Rings", "Several", "check_mesh"]
+
+Rings = tuple[IntArray, IntArray]
+_T = TypeVar("_T")
+
+
+class Several(dict):
+    """Connectivity values one producer wrote together, by property name.
+
+    A producer handed over for one property (say ``vertex_ring``) may
+    return this instead of the value alone: every value in it is cached at
+    once (so that one pass can write two arrays that are read together).
+    """
+
+
+class _Connectivity:
+    """The faces of a mesh and everything derived from them alone.
+
+    Shared by every mesh with these faces (:meth:`Mesh.with_vertices`, the
+    dual of a dual), so each array is derived once for all of them.
+
+    Attributes
+    ----------
+    corners, offsets : read-only int arrays
+        The faces in CSR form.
+    values : dict
+        Derived arrays (read-only) and numbers, by property name.
+    producers : dict
+        Zero-argument callables an operator handed over to write a derived
+        array on first use (see :meth:`Mesh._new`); each runs at most once
+        and is then dropped.
+    """
+
+    __slots__ = ("corners", "offsets", "values", "producers")
+
+    def __init__(self, corners: IntArray, offsets: IntArray) -> None:
+        self.corners = corners
+        self.offsets = offsets
+        self.values: dict[str, Any] = {}
+        self.producers: dict[str, Callable[[], Any]] = {}
+
+
+class _Derived(Generic[_T]):
+    """A read-only property of a mesh computed on first use and cached.
+
+    With ``connectivity=True`` the value depends on the faces alone and is
+    kept in the mesh's shared :class:`_Connectivity`; an operator may have
+    handed over a producer for it, which then replaces the computation.
+    Otherwise (positions are involved) it is kept by the mesh itself.
+    """
+
+    def __init__(self, func: Callable[[Mesh], _T], connectivity: bool) -> None:
+        self.func = func
+        self.name = func.__name__
+        self.connectivity = connectivity
+        self.__doc__ = func.__doc__
+
+    @overload
+    def __get__(self, mesh: None, owner: type | None = None) -> _Derived[_T]: ...
+
+    @overload
+    def __get__(self, mesh: Mesh, owner: type | None = None) -> _T: ...
+
+    def __get__(self, mesh: Mesh | None, owner: type | None = None) -> _T | _Derived[_T]:
+        if mesh is None:
+            return self
+        shared = mesh._shared
+        store = shared.values if self.connectivity else mesh._own
+        try:
+            return store[self.name]
+        except KeyError:
+            pass
+        producer = shared.producers.pop(self.name, None) if self.connectivity else None
+        if producer is None:
+            value = self.func(mesh)
+        else:
+            value = producer()
+            if isinstance(value, Several):  # several values written in one pass
+                for name, made in value.items():
+                    if name != self.name:
+                        shared.producers.pop(name, None)
+                        store.setdefault(name, frozen(made))
+                value = value[self.name]
+            value = frozen(value)
+        store[self.name] = value
+        return value
+
+
+def _connectivity(func: Callable[[Mesh], _T]) -> _Derived[_T]:
+    """Decorator: a cached property that depends on the faces alone."""
+    return _Derived(func, connectivity=True)
+
+
+def _geometry(func: Callable[[Mesh], _T]) -> _Derived[_T]:
+    """Decorator: a cached property that depends on the vertex positions."""
+    return _Derived(func, connectivity=False)
+
+
+class Mesh:
+    """A closed, oriented 2-manifold polygon mesh (immutable).
+
+    Parameters
+    ----------
+    vertices : (n, 3) float array_like
+        Vertex positions.
+    faces : (m,) sequence of int sequences, or (m, k) int array_like
+        Vertex indices of each face, counter-clockwise seen from outside.
+        Faces may have any number (>= 3) of sides.
+
+    Raises
+    ------
+    MeshError
+        When the input is not a closed, consistently oriented 2-manifold
+        polygon mesh: an index out of range, a face with repeated or fewer
+        than 3 vertices, a directed edge used twice, a boundary edge, a
+        vertex whose faces form more than one fan, an unused vertex or a
+        non-finite coordinate.  Also refused, because the dual (the paper's
+        smoothing) cannot be built from them: a vertex with fewer than 3
+        edges, and two faces that share more than one edge.  The message
+        names the culprit.
+
+    Notes
+    -----
+    A mesh is sealed: setting, replacing or deleting any attribute raises
+    AttributeError, and every array it hands out is read-only.  The
+    constructor and :meth:`from_csr` copy their inputs, so changing the
+    caller's arrays afterwards cannot change the mesh.  New positions:
+    :meth:`with_vertices`; new faces: an operator (:func:`pentanb.dual`,
+    :func:`pentanb.pentagonalize`, ...), which builds its output valid by
+    construction, without re-validation.
+
+    Meshes pickle and copy (:mod:`pickle`, :func:`copy.deepcopy`): the
+    positions, the faces and the twins and vertex rings an operator handed
+    over are kept; everything else is derived again on first use.
+
+    Examples
+    --------
+    >>> import pentanb
+    >>> m = pentanb.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
+    ...                  [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]])
+    >>> m.n_vertices, m.n_edges, m.n_faces, m.genus
+    (4, 6, 4, 0)
+    >>> m.vertices[0, 0] = 5.0
+    Traceback (most recent call last):
+    ...
+    ValueError: assignment destination is read-only
+    """
+
+    __slots__ = (
+        "_vertices",
+        "_corners",
+        "_offsets",
+        "_shared",
+        "_own",
+        "_dual_source",
+        "__weakref__",
+    )
+
+    _vertices: FloatArray
+    _corners: IntArray
+    _offsets: IntArray
+    _shared: _Connectivity
+    _own: dict[str, Any]
+    _dual_source: _Connectivity | None
+
+    def __init__(self, vertices: ArrayLike, faces: ArrayLike | Sequence[Sequence[int]]):
+        v = as_vertices(vertices)
+        corners, offsets = compact(*as_csr(faces), v.shape[0])
+        self._init(v, corners, offsets)
+        del corners, offsets  # (any wider copy made on the way is gone before validating)
+        validate_mesh(self)
+
+    # ------------------------------------------------------------------ sealing
+    def __setattr__(self, name: str, value: object) -> None:
+        raise AttributeError(
+            f"cannot set {name!r}: a Mesh is immutable (use mesh.with_vertices(...) "
+            "for new positions; operators build new meshes)"
+        )
+
+    def __delattr__(self, name: str) -> None:
+        raise AttributeError(f"cannot delete {name!r}: a Mesh is immutable")
+
+    # ------------------------------------------------------------------ construction
+    def _init(
+        self,
+        vertices: np.ndarray,
+        corners: np.ndarray,
+        offsets: np.ndarray,
+        *,
+        twin: IntArray | Callable[[], IntArray] | None = None,
+        rings: Rings | Callable[[], Rings | Several] | None = None,
+        size_counts: tuple[tuple[int, int], ...] | None = None,
+        dual_of: Mesh | None = None,
+        shared: _Connectivity | None = None,
+    ) -> None:
+        """Initialise a new mesh: every mesh with vertices is set up here, once.
+
+        The arrays are taken as they are (no copy) and made read-only: the
+        caller hands over arrays nobody else holds (or read-only arrays of
+        another mesh).  Nothing is checked; :meth:`__init__` and
+        :meth:`from_csr` validate afterwards.
+
+        Parameters
+        ----------
+        vertices : (n, 3) float
+        corners : (H,) int
+        offsets : (m + 1,) int
+        twin : (H,) int, or a zero-argument callable returning it, optional
+            The output's twins, when the caller knows them; a callable runs
+            when the twins are first asked for.
+        rings : ((H,) int, (n + 1,) int), or a callable returning them, optional
+            The vertex rings (see :attr:`vertex_ring`), likewise.
+        size_counts : ((size, faces), ...), optional
+            The face-size histogram by ascending size, when the caller
+            knows it (an operator, from its input's).
+        dual_of : Mesh, optional
+            The mesh this one is the dual of: the dual of this mesh then
+            reuses that mesh's connectivity (see :meth:`_dual_again`).
+        shared : _Connectivity, optional
+            The connectivity record of another mesh with these very faces
+            (``corners`` and ``offsets`` must be its arrays): what it has
+            derived is shared.
+        """
+        if hasattr(self, "_vertices"):
+            raise AttributeError("a Mesh is initialised once: meshes are immutable")
+        if shared is None:
+            shared = _Connectivity(readonly(corners), readonly(offsets))
+            if twin is not None:
+                if callable(twin):
+                    shared.producers["twin"] = twin
+                else:
+                    shared.values["twin"] = readonly(twin)
+            if rings is not None:
+                if callable(rings):
+                    shared.producers["vertex_ring"] = rings
+                else:
+                    shared.values["vertex_ring"] = frozen(tuple(rings))
+            if size_counts is not None:
+                shared.values["_size_counts"] = tuple(size_counts)
+        elif corners is not shared.corners or offsets is not shared.offsets:
+            raise ValueError("shared connectivity needs the very corners and offsets it holds")
+        elif twin is not None or rings is not None or size_counts is not None:
+            raise ValueError("twin, rings and size counts come with the shared connectivity")
+        init = object.__setattr__
+        init(self, "_vertices", readonly(vertices))
+        init(self, "_corners", shared.corners)
+        init(self, "_offsets", shared.offsets)
+        init(self, "_shared", shared)
+        init(self, "_own", {})
+        init(self, "_dual_source", None if dual_of is None else dual_of._shared)
+
+    @classmethod
+    def _new(
+        cls,
+        vertices: np.ndarray,
+        corners: np.ndarray,
+        offsets: np.ndarray,
+        *,
+        twin: IntArray | Callable[[], IntArray] | None = None,
+        rings: Rings | Callable[[], Rings | Several] | None = None,
+        size_counts: tuple[tuple[int, int], ...] | None = None,
+        dual_of: Mesh | None = None,
+        shared: _Connectivity | None = None,
+    ) -> Mesh:
+        """The internal constructor: a mesh from arrays the package itself made.
+
+        No validation and no copy (the arrays become the mesh's, read-only);
+        operators use it for outputs that are valid by construction.  The
+        arguments are those of :meth:`_init`.
+        """
+        self = object.__new__(cls)
+        self._init(
+            vertices,
+            corners,
+            offsets,
+            twin=twin,
+            rings=rings,
+            size_counts=size_counts,
+            dual_of=dual_of,
+            shared=shared,
+        )
+        return self
+
+    def _dual_again(self) -> Mesh | None:
+        """The dual of this mesh when it was built as the dual of a mesh M, else None.
+
+        Its faces are M's faces, in M's order (the dual of a dual gives back
+        the connectivity), so M's connectivity record is shared, with all M
+        has derived; its vertices are this mesh's face centroids.
+        """
+        source = self._dual_source
+        if source is None:
+            return None
+        out = Mesh._new(
+            self.face_centroids, source.corners, source.offsets, shared=source, dual_of=self
+        )
+        out._note_extent(self._extent)
+        return out
+
+    def _rescaled(self, shift: int) -> Mesh:
+        """The same faces (shared) with every position times ``2**shift`` (exact).
+
+        Raises
+        ------
+        MeshError
+            When a scaled position is not finite.
+        """
+        with np.errstate(over="ignore"):
+            v = np.ldexp(self._vertices, shift)
+        if not np.isfinite(v).all():
+            raise MeshError(
+                "the result's coordinates would be too large for float64 "
+                f"(beyond {np.finfo(np.float64).max:.3g})"
+            )
+        return Mesh._new(v, self._corners, self._offsets, shared=self._shared)
+
+    @classmethod
+    def from_csr(
+        cls,
+        vertices: ArrayLike,
+        corners: ArrayLike,
+        offsets: ArrayLike,
+        *,
+        twin: ArrayLike | None = None,
+        validate: bool = True,
+    ) -> Mesh:
+        """Build a mesh from CSR face arrays.
+
+        Parameters
+        ----------
+        vertices : (n, 3) float
+        corners : (H,) int
+            Vertex index of every corner, face after face.
+        offsets : (m + 1,) int
+            Face ``f`` is ``corners[offsets[f]:offsets[f + 1]]``; ``offsets[0] == 0``.
+        twin : (H,) int, optional
+            The opposite half-edge of each half-edge, when the caller knows
+            it (used only without validation, which derives the twins itself).
+        validate : bool
+            Check the mesh, as the constructor does.  With False the arrays
+            are trusted as they are: nothing but the shape of ``vertices``
+            and the ranges of the indices is checked (an index outside the
+            arrays would make the compiled kernels read outside them), and
+            a mesh that is not a closed oriented manifold gives wrong
+            results or errors later (the operators refuse what they cannot
+            handle, e.g. :func:`pentanb.dual` a vertex with fewer than 3
+            edges).  For speed only, on arrays known to be good.
+
+        Notes
+        -----
+        The arrays are always copied (a copy costs little next to deriving
+        the half-edges): the mesh never aliases, nor freezes, the caller's
+        arrays, so changing them afterwards cannot change the mesh.
+        """
+        if validate:
+            v = as_vertices(vertices)
+            c = as_csr_part(corners, "corners")  # copies: the caller's
+            o = as_csr_part(offsets, "offsets")  # arrays stay theirs
+            check_offsets(c, o)
+            self = cls._new(v, *compact(c, o, v.shape[0]))
+            validate_mesh(self)
+            return self
+        v = np.array(vertices, dtype=np.float64)
+        if v.ndim != 2 or v.shape[1] != 3:
+            raise MeshError(f"vertices must be an (n, 3) array, got shape {v.shape}")
+        c, o = compact(as_csr_part(corners, "corners"), as_csr_part(offsets, "offsets"), v.shape[0])
+        t = None if twin is None else as_csr_part(twin, "twin")
+        check_ranges(c, o, t, v.shape[0])
+        return cls._new(v, c, o, twin=None if t is None else t.astype(c.dtype))
+
+    def with_vertices(self, vertices: ArrayLike) -> Mesh:
+        """The same connectivity with other vertex positions (``(n, 3)`` float).
+
+        The faces and everything derived from them alone are shared with
+        this mesh (nothing is derived twice); ``vertices`` is copied.
+        """
+        v = as_vertices(vertices)
+        if v.shape != self._vertices.shape:
+            raise MeshError(f"expected {self._vertices.shape} vertices, got {v.shape}")
+        return type(self)._new(v, self._corners, self._offsets, shared=self._shared)
+
+    # ------------------------------------------------------------------ pickling
+    def __reduce__(self) -> tuple[Callable[..., Mesh], tuple[Any, ...]]:
+        """Pickle (and copy) as the arrays plus the twins and rings already known.
+
+        A producer an operator handed over is run now (no callable is
+        pickled); other derived arrays are derived again after loading.
+        """
+        shared = self._shared
+        known = {
+            name: getattr(self, name)
+            for name in ("twin", "vertex_ring")
+            if name in shared.values or name in shared.producers
+        }
+        return (_rebuild, (self._vertices, self._corners, self._offsets, known))
+
+    # ------------------------------------------------------------------ raw arrays
+    @property
+    def vertices(self) -> FloatArray:
+        """(n, 3) float: vertex positions (read-only)."""
+        return self._vertices
+
+    @property
+    def corners(self) -> IntArray:
+        """(H,) int: the vertex of every corner, face after face (read-only)."""
+        return self._corners
+
+    @property
+    def offsets(self) -> IntArray:
+        """(m + 1,) int: face ``f`` is ``corners[offsets[f]:offsets[f+1]]``."""
+        return self._offsets
+
+    @_connectivity
+    def faces(self) -> tuple[IntArray, ...]:
+        """(m,) tuple of int arrays: the vertex indices of every face (read-only views)."""
+        return tuple(np.split(self._corners, self._offsets[1:-1]))
+
+    # ------------------------------------------------------------------ counts
+    @property
+    def n_vertices(self) -> int:
+        """Number of vertices V."""
+        return int(self._vertices.shape[0])
+
+    @property
+    def n_faces(self) -> int:
+        """Number of faces F."""
+        return int(self._offsets.size - 1)
+
+    @property
+    def n_halfedges(self) -> int:
+        """Number of half-edges (= corners) H = 2E."""
+        return int(self._corners.size)
+
+    @property
+    def n_edges(self) -> int:
+        """Number of edges E (= H / 2 on a closed mesh)."""
+        return int(self._corners.size // 2)
+
+    @_connectivity
+    def face_sizes(self) -> IntArray:
+        """(m,) int: number of sides of every face."""
+        return readonly(np.diff(self._offsets))
+
+    @_connectivity
+    def _uniform_size(self) -> int:
+        """k when every face has k sides, else 0."""
+        return uniform_size(self._offsets, self._corners.size)
+
+    @_connectivity
+    def valences(self) -> IntArray:
+        """(n,) int: number of edges at every vertex."""
+        counts = np.bincount(self._corners, minlength=self.n_vertices)
+        return readonly(counts.astype(self._corners.dtype, copy=False))
+
+    @property
+    def euler_characteristic(self) -> int:
+        """V - E + F."""
+        return self.n_vertices - self.n_edges + self.n_faces
+
+    @_connectivity
+    def n_components(self) -> int:
+        """Number of connected components."""
+        return int(np.unique(self.component_labels).size)
+
+    @property
+    def genus(self) -> int:
+        """Total genus: ``(2 * components - (V - E + F)) / 2``.
+
+        For a connected mesh this is the usual g of ``V - E + F = 2 - 2g``.
+        """
+        return (2 * self.n_components - self.euler_characteristic) // 2
+
+    def face_size_histogram(self) -> dict[int, int]:
+        """``{n: number of n-gons}``, sorted by n."""
+        return dict(self._size_counts)
+
+    @_connectivity
+    def _size_counts(self) -> tuple[tuple[int, int], ...]:
+        """``((n, number of n-gons), ...)`` by n: the face-size histogram, counted once."""
+        k, F = self._uniform_size, self.n_faces
+        if k or not F:
+            return ((k, F),) if F else ()
+        sizes = self.face_sizes
+        low = int(sizes.min())
+        counts = np.bincount(sizes - low)
+        return tuple((low + int(s), int(counts[s])) for s in np.flatnonzero(counts))
+
+    def valence_histogram(self) -> dict[int, int]:
+        """``{k: number of k-valent vertices}``, sorted by k."""
+        vals, counts = np.unique(self.valences, return_counts=True)
+        return {int(s): int(c) for s, c in zip(vals, counts)}
+
+    def counts(self) -> dict:
+        """V, E, F, the face-size and valence histograms, chi and genus."""
+        return {
+            "V": self.n_vertices,
+            "E": self.n_edges,
+            "F": self.n_faces,
+            "faces": self.face_size_histogram(),
+            "valences": self.valence_histogram(),
+            "chi": self.euler_characteristic,
+            "genus": self.genus,
+        }
+
+    def __repr__(self) -> str:
+        hist = ", ".join(f"{n}:{c}" for n, c in self.face_size_histogram().items())
+        return f"Mesh(V={self.n_vertices}, E={self.n_edges}, F={self.n_faces}, faces={{{hist}}})"
+
+    # ------------------------------------------------------------------ half-edges
+    @_connectivity
+    def halfedge_face(self) -> IntArray:
+        """(H,) int: the face of every half-edge."""
+        return readonly(halfedge_face(self._offsets, self._corners.size, self._uniform_size))
+
+    @_connectivity
+    def halfedge_slot(self) -> IntArray:
+        """(H,) int: the position of every half-edge in its face (0 at the face's first corner).
+
+        Half-edge ``h`` is ``offsets[halfedge_face[h]] + halfedge_slot[h]``.
+        """
+        h = np.arange(self.n_halfedges, dtype=self._corners.dtype)
+        return readonly(h - self._offsets[:-1][self.halfedge_face])
+
+    @_connectivity
+    def next(self) -> IntArray:
+        """(H,) int: the next half-edge around the same face."""
+        return readonly(next_of(self._offsets, self._corners.size, self._corners.dtype))
+
+    @_connectivity
+    def prev(self) -> IntArray:
+        """(H,) int: the previous half-edge around the same face."""
+        return readonly(prev_of(self._offsets, self._corners.size, self._corners.dtype))
+
+    @property
+    def tail(self) -> IntArray:
+        """(H,) int: the vertex a half-edge leaves (= ``corners``)."""
+        return self._corners
+
+    @_connectivity
+    def head(self) -> IntArray:
+        """(H,) int: the vertex a half-edge reaches (``corners[next]``)."""
+        k = self._uniform_size
+        if k:
+            return readonly(head_of(self._corners, self._offsets, k))
+        return readonly(self._corners[self.next])
+
+    @_connectivity
+    def twin(self) -> IntArray:
+        """(H,) int: the opposite half-edge (same edge, other face)."""
+        k = self._uniform_size
+        twin = pair_twins(self._corners, None if k else self.head, self.n_vertices, k)
+        if twin is None:
+            raise MeshError("the faces do not pair up into a closed, oriented manifold")
+        return readonly(twin)
+
+    @_connectivity
+    def _forward(self) -> NDArray[np.bool_]:
+        """(H,) bool: ``tail < head``, the half-edge that numbers its edge."""
+        return readonly(self._corners < self.head)
+
+    @_connectivity
+    def halfedge_edge(self) -> IntArray:
+        """(H,) int: the edge id of every half-edge.
+
+        Edge ``e`` is numbered by the order of its half-edge with
+        ``tail < head``; see :attr:`edges`.
+        """
+        primary = self._forward
+        ids = np.cumsum(primary, dtype=self._corners.dtype)
+        ids -= 1
+        back = np.flatnonzero(~primary)
+        ids[back] = ids[self.twin[back]]
+        return readonly(ids)
+
+    @_connectivity
+    def edge_halfedge(self) -> IntArray:
+        """(E,) int: for every edge, its half-edge with ``tail < head`` (each edge once)."""
+        return readonly(np.flatnonzero(self._forward).astype(self._corners.dtype, copy=False))
+
+    @_connectivity
+    def edges(self) -> IntArray:
+        """(E, 2) int: the edges as (smaller, larger) vertex pairs."""
+        h = self.edge_halfedge
+        return readonly(np.stack([self._corners[h], self.head[h]], axis=1))
+
+    @_connectivity
+    def rotation(self) -> IntArray:
+        """(H,) int: the next outgoing half-edge counter-clockwise around its tail.
+
+        ``rotation[h] = twin[prev[h]]``.
+        """
+        return readonly(rotation_of(self.twin, self._offsets, self._uniform_size, self))
+
+    @_connectivity
+    def vertex_ring(self) -> Rings:
+        """The outgoing half-edges of every vertex, counter-clockwise, in CSR form.
+
+        Returns
+        -------
+        ring : (H,) int
+            Half-edges, vertex after vertex, each vertex's in rotation order.
+        ring_offsets : (n + 1,) int
+            Vertex ``v``'s half-edges are ``ring[ring_offsets[v]:ring_offsets[v+1]]``.
+        """
+        ring, off = vertex_rings(self.rotation, self._corners, self.valences)
+        return readonly(ring), readonly(off)
+
+    def _ring_faces(self) -> IntArray:
+        """(H,) int: the face of every entry of :attr:`vertex_ring`, in its order.
+
+        ``halfedge_face[vertex_ring[0]]``: the faces round every vertex in
+        rotation order, which are the dual's faces (its corners).  An
+        operator that knows its output's rings may write these with them
+        (:class:`Several`); they are then taken from the cache, once: the
+        array becomes the dual's, and is not kept here as well.
+        """
+        made = self._shared.values.pop("_ring_faces", None)
+        if made is not None:
+            return made
+        ring, _ = self.vertex_ring
+        k = self._uniform_size
+        if k:
+            return readonly(ring // k)
+        jit = _jit.kernels(ring.size)
+        return readonly(jit.gather(self.halfedge_face, ring) if jit else self.halfedge_face[ring])
+
+    def _faces_only(self) -> Any:
+        """This mesh's faces without its positions (a :class:`_Faces`).
+
+        For the producers an operator hands over with its output: they
+        derive what they need from the faces (shared with this mesh, so
+        nothing is derived twice) without keeping the positions alive.
+        """
+        return _Faces(self._shared, self.n_vertices)
+
+    # ------------------------------------------------------------------ geometry
+    @_geometry
+    def _extent(self) -> float:
+        """The largest absolute coordinate (an upper bound, for operator outputs).
+
+        Operators place new points by affine combinations with non-negative
+        weights, which never move a point outside the box of its input, so
+        an output inherits its input's extent (see :meth:`_note_extent`).
+        Above :data:`SAFE_EXTENT` sums of coordinates could overflow, and
+        the geometry is computed on positions scaled by a power of two
+        (exact) instead.
+        """
+        v = self._vertices
+        if v.size == 0:
+            return 0.0
+        return float(max(v.max(), -v.min()))
+
+    def _note_extent(self, bound: float) -> None:
+        """Record an upper bound of :attr:`_extent` known without a pass over the positions."""
+        self._own.setdefault("_extent", float(bound))
+
+    @_geometry
+    def face_centroids(self) -> FloatArray:
+        """(m, 3) float: the plain mean of each face's vertices."""
+        means = face_means(
+            self._vertices, self._corners, self._offsets, self._uniform_size, self._extent
+        )
+        return readonly(means)
+
+    def face_means(self, values: ArrayLike) -> np.ndarray:
+        """Average per-vertex values over every face.
+
+        Parameters
+        ----------
+        values : (n,) or (n, d) float
+
+        Returns
+        -------
+        (m,) or (m, d) float
+            A new array (the caller's to keep).  Finite for any finite
+            ``values``: sums that would overflow are taken on values scaled
+            down by a power of two.
+
+        Notes
+        -----
+        The corners are gathered in blocks of faces, so the memory beyond
+        the result stays small whatever the mesh's size.
+        """
+        values = np.asarray(values, dtype=np.float64)
+        flat = values.reshape(values.shape[0], -1)
+        extent = float(np.abs(flat).max()) if flat.size else 0.0
+        means = face_means(flat, self._corners, self._offsets, self._uniform_size, extent)
+        return means.reshape((self.n_faces,) + values.shape[1:])
+
+    @_geometry
+    def face_normals(self) -> FloatArray:
+        """(m, 3) float: unit normals (Newell's method; zero for degenerate faces).
+
+        Faces whose cross products would overflow or underflow (coordinates
+        near 1e-150 or 1e150 and beyond) are computed again from their
+        corners relative to the first, scaled per face by a power of two,
+        so their normals neither vanish nor become NaN.
+        """
+        p = self._vertices[self._corners]
+        q = self._vertices[self.head]
+        with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+            cross = np.cross(p, q)
+            n = np.add.reduceat(cross, self._offsets[:-1], axis=0)
+            length = np.linalg.norm(n, axis=1, keepdims=True)
+        # lengths outside [2**-800, 2**800] may have lost everything to
+        # underflow or overflow: those faces again, rescaled
+        redo = np.flatnonzero(~((length[:, 0] >= 2.0**-800) & (length[:, 0] <= 2.0**800)))
+        if redo.size:
+            n[redo] = scaled_newell(self._vertices, self._corners, self._offsets, redo)
+            length = np.linalg.norm(n, axis=1, keepdims=True)
+        return readonly(np.divide(n, length, out=np.zeros_like(n), where=length > 0))
+
+    @property
+    def volume(self) -> float:
+        """Signed enclosed volume (positive for outward-oriented faces).
+
+        Each face is fanned from its centroid; the tetrahedra to the origin
+        are summed.  Coordinates beyond 2**300 (or below 2**-300) are
+        scaled by a power of two first, so the result is ``inf`` (or 0)
+        only when the volume itself is beyond float64's range.
+        """
+        extent = self._extent
+        if extent == 0 or 2.0**-300 < extent < 2.0**300:
+            c = self.face_centroids[self.halfedge_face]
+            p = self._vertices[self._corners]
+            q = self._vertices[self.head]
+            return float(np.einsum("ij,ij->", c, np.cross(p, q)) / 6.0)
+        shift = int(np.frexp(extent)[1])
+        small = self._rescaled(-shift)
+        with np.errstate(over="ignore", under="ignore"):
+            return float(np.ldexp(small.volume, 3 * shift))
+
+    @property
+    def bounds(self) -> FloatArray:
+        """(2, 3) float: the lower and upper corners of the bounding box (read-only)."""
+        return readonly(np.stack([self._vertices.min(axis=0), self._vertices.max(axis=0)]))
+
+    def fan_triangles(self) -> tuple[IntArray, IntArray]:
+        """Fan triangulation of every face from its first corner (for drawing).
+
+        Returns
+        -------
+        triangles : (H - 2m, 3) int
+            Vertex indices, counter-clockwise like their faces: triangle
+            ``k`` of face ``f`` is its corners ``0, k + 1, k + 2``.
+        triangle_face : (H - 2m,) int
+            The face each triangle comes from.
+
+        See Also
+        --------
+        fan_triangle_corners : the same triangles as corner indices.
+        """
+        return self._fan
+
+    @_connectivity
+    def _fan(self) -> tuple[IntArray, IntArray]:
+        tri_corners, tri_face = fan_triangle_corners(self._offsets)
+        return readonly(self._corners[tri_corners]), tri_face
+
+    def component_labels_of_faces(self) -> IntArray:
+        """(m,) int: the component label of every face (read-only)."""
+        return readonly(self.component_labels[self._corners[self._offsets[:-1]]])
+
+    @_connectivity
+    def component_labels(self) -> IntArray:
+        """(n,) int: a component label (its smallest vertex index) per vertex.
+
+        Shiloach-Vishkin style: hook the larger root of every edge whose ends
+        disagree onto the smaller one, then jump pointers until every vertex
+        points at its root; a few rounds on any mesh.
+        """
+        u, w = self.edges[:, 0], self.edges[:, 1]
+        lab = np.arange(self.n_vertices, dtype=np.int64)
+        while True:
+            lu, lw = lab[u], lab[w]
+            differ = lu != lw
+            if not differ.any():
+                return readonly(lab)
+            lu, lw = lu[differ], lw[differ]
+            np.minimum.at(lab, np.maximum(lu, lw), np.minimum(lu, lw))
+            while True:
+                jumped = lab[lab]
+                if np.array_equal(jumped, lab):
+                    break
+                lab = jumped
+
+    # ------------------------------------------------------------------ checks
+
+
+class _Faces:
+    """The faces of a mesh without positions: :class:`Mesh`'s connectivity properties.
+
+    Reads and fills the same shared connectivity record as the meshes with
+    these faces.  Not a mesh (it has no positions and is never handed to
+    users): operators' producers hold one instead of the mesh, so that a
+    lazy twin or ring does not keep the input's positions alive.
+    """
+
+    __slots__ = ("_shared", "_corners", "_offsets", "_n")
+
+    def __init__(self, shared: _Connectivity, n: int) -> None:
+        self._shared = shared
+        self._corners = shared.corners
+        self._offsets = shared.offsets
+        self._n = n
+
+    @property
+    def n_vertices(self) -> int:
+        return self._n
+
+
+for _name in (
+    "corners",
+    "offsets",
+    "tail",
+    "n_faces",
+    "n_halfedges",
+    "n_edges",
+    "face_sizes",
+    "_uniform_size",
+    "valences",
+    "halfedge_face",
+    "halfedge_slot",
+    "next",
+    "prev",
+    "head",
+    "twin",
+    "_forward",
+    "halfedge_edge",
+    "edge_halfedge",
+    "edges",
+    "rotation",
+    "vertex_ring",
+):
+    setattr(_Faces, _name, Mesh.__dict__[_name])
+del _name
+
+
+def _rebuild(
+    vertices: np.ndarray, corners: np.ndarray, offsets: np.ndarray, known: dict[str, Any]
+) -> Mesh:
+    """Unpickle (or copy) a mesh: see :meth:`Mesh.__reduce__`."""
+    return Mesh._new(
+        vertices, corners, offsets, twin=known.get("twin"), rings=known.get("vertex_ring")
+    )
+
+
+def check_mesh(mesh: object, op: str) -> Mesh:
+    """``mesh`` itself, or a TypeError naming ``op`` when it is not a Mesh.
+
+    Every operator, writer and position solver starts with it.
+    """
+    if not isinstance(mesh, Mesh):
+        raise TypeError(f"{op} expects a pentanb.Mesh, got {type(mesh).__name__}")
+    return mesh

@@ -1,0 +1,321 @@
+"""Half-edges derived from CSR faces with whole-array numpy passes.
+
+A *half-edge* is a corner: half-edge ``h`` runs from ``corners[h]`` to the
+next corner of its face.  ``next``, ``prev``, ``head``, the rotation round a
+vertex, the vertex rings and the twins are derived here from ``corners`` and
+``offsets`` (the optional compiled kernels of :mod:`pentanb._jit` take over
+some passes on large meshes, with the same results bit for bit).  Twins are
+paired by one function per path: :func:`pair_twins` (numpy: one sort of
+packed keys; compiled: a counting sort on the tails).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from .. import _jit
+from .coerce import IntArray, MeshError, readonly
+
+__all__ = [
+    "BLOCK",
+    "uniform_size",
+    "halfedge_face",
+    "shifted",
+    "head_of",
+    "rotation_of",
+    "RotateUniform",
+    "next_of",
+    "prev_of",
+    "pair_twins",
+    "vertex_rings",
+    "multi_fan_vertex",
+    "fan_triangle_corners",
+]
+
+#: Elements per block of the block-wise passes: the temporaries of a pass
+#: stay a few hundred kilobytes (in cache, and out of the peak memory).
+BLOCK = 1 << 13
+
+
+def uniform_size(offsets: np.ndarray, n_corners: int) -> int:
+    """k when the faces of these offsets all have k corners, else 0."""
+    m = offsets.size - 1
+    if m < 1:
+        return 0
+    k = int(offsets[1] - offsets[0])
+    if k < 1 or k * m != n_corners or np.any(np.diff(offsets) != k):
+        return 0
+    return k
+
+
+def halfedge_face(offsets: np.ndarray, n_corners: int, k: int) -> IntArray:
+    jit = _jit.kernels(n_corners)
+    if jit is not None:  # the same array, each face's run written in one loop
+        return jit.halfedge_face(offsets, n_corners)
+    faces = np.arange(offsets.size - 1, dtype=offsets.dtype)
+    return np.repeat(faces, k if k else np.diff(offsets))
+
+
+def shifted(a: np.ndarray, k: int, step: int) -> np.ndarray:
+    """``a`` (one value per corner of k-gons) moved ``step`` places round every face.
+
+    ``out[h] = a[next[h]]`` for ``step = 1``, ``a[prev[h]]`` for ``step = -1``:
+    a copy column by column, without gathering.
+    """
+    rows = a.reshape(-1, k)
+    out = np.empty_like(rows)
+    if step == 1:
+        out[:, :-1] = rows[:, 1:]
+        out[:, -1] = rows[:, 0]
+    else:
+        out[:, 1:] = rows[:, :-1]
+        out[:, 0] = rows[:, -1]
+    return out.reshape(-1)
+
+
+def head_of(corners: np.ndarray, offsets: np.ndarray, k: int) -> IntArray:
+    """(H,) the vertex every half-edge reaches, for faces that are all k-gons."""
+    return shifted(corners, k, 1)
+
+
+def rotation_of(twin: np.ndarray, offsets: np.ndarray, k: int, mesh: Any = None) -> IntArray:
+    """(H,) ``twin[prev]``: the next outgoing half-edge counter-clockwise round its tail."""
+    if k:
+        return shifted(twin, k, -1)
+    prv = mesh.prev if mesh is not None else prev_of(offsets, twin.size, twin.dtype)
+    return twin[prv]
+
+
+class RotateUniform:
+    """``rotation[h]`` of a mesh of k-gons from its twins, without a rotation array.
+
+    ``rotate[cur]`` is ``twin[prev[cur]]``, ``prev[h]`` being ``h - 1``, or
+    ``h + k - 1`` at the first corner of a face.
+    """
+
+    def __init__(self, twin: np.ndarray, k: int) -> None:
+        self.twin, self.k = twin, k
+
+    def __getitem__(self, cur: np.ndarray) -> np.ndarray:
+        # the first corners: cur // k * k == cur (numpy divides by a constant
+        # with a multiplication, 4x faster here than its remainder)
+        first = cur // self.k
+        first *= self.k
+        first = first == cur
+        prv = cur - 1
+        prv[first] += self.k
+        return self.twin[prv]
+
+
+def next_of(offsets: np.ndarray, n_corners: int, dtype: Any) -> IntArray:
+    """(H,) the next half-edge round each face, from the offsets alone."""
+    nxt = np.arange(1, n_corners + 1, dtype=dtype)
+    nxt[offsets[1:] - 1] = offsets[:-1]
+    return nxt
+
+
+def prev_of(offsets: np.ndarray, n_corners: int, dtype: Any) -> IntArray:
+    """(H,) the previous half-edge round each face, from the offsets alone."""
+    prv = np.arange(-1, n_corners - 1, dtype=dtype)
+    prv[offsets[:-1]] = offsets[1:] - 1
+    return prv
+
+
+def pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) -> IntArray | None:
+    """The twin of every half-edge of a closed oriented manifold, or None.
+
+    Every half-edge ``h = (u, w)`` gets the key ``(min, max, u > w)`` of its
+    undirected edge and direction, packed with ``h`` itself into one 64-bit
+    integer: one sort of plain integers (numpy's vectorized sort, several
+    times faster than an argsort) then puts the two halves of every edge
+    side by side, the forward one first.  None when that pattern breaks (a
+    directed edge used twice, a boundary edge): the caller then looks for
+    the culprit (:func:`pentanb.mesh.validate.validate`).  Beyond the twins, only the packed
+    keys (8 bytes a half-edge) are allocated: keys are built, checked and
+    unpacked in blocks.  ``head`` may be None when every face is a k-gon:
+    it is then read block by block from ``tail``.
+
+    When key and index need more than 63 bits (meshes of millions of
+    vertices), the half-edges are first split by the high bits of their
+    smaller vertex (a radix pass; both halves of an edge fall in the same
+    part) and each part is sorted on its own.
+    """
+    H = tail.size
+    if H % 2:
+        return None
+    jit = _jit.kernels(H)
+    if jit is not None and n > 0:  # each half-edge's partner among its head's (compiled)
+        got = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
+        return got if got.size == H else None
+    twin = np.empty(H, dtype=tail.dtype)
+    index_bits = max(int(H - 1).bit_length(), 1)
+    vertex_bits = max(int(n - 1).bit_length(), 1)
+    # a key (lo * n + hi) * 2 + flip with lo < 2**low_bits is below 2**(63 - index_bits)
+    low_bits = 62 - index_bits - int(n).bit_length()
+    if low_bits >= vertex_bits:
+        return twin if _pair_part(tail, head, n, index_bits, None, None, twin, k) else None
+    if head is None:
+        head = head_of(tail, np.empty(0), k)
+    parts = vertex_bits - max(low_bits, 0)
+    if low_bits < 1 or parts > 16:  # pragma: no cover - beyond 2**40 half-edges
+        raise MeshError(f"{H:,} half-edges are more than twins can be paired for")
+    part = (np.minimum(tail, head) >> low_bits).astype(np.uint16)
+    order = np.argsort(part, kind="stable").astype(tail.dtype)  # radix sort: O(H)
+    bounds = np.concatenate([[0], np.cumsum(np.bincount(part, minlength=1 << parts))])
+    del part
+    mask = (1 << low_bits) - 1
+    for a, b in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
+        if a == b:
+            continue
+        ids = order[a:b]
+        if not _pair_part(tail[ids], head[ids], n, index_bits, ids, mask, twin):
+            return None
+    return twin
+
+
+def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0) -> bool:
+    """Pair the half-edges of one part (see :func:`pair_twins`); False if they do not pair.
+
+    ``ids`` maps the part's half-edges to the mesh's (None: the whole mesh);
+    ``mask`` keeps the low bits of the smaller vertex (None: all of it);
+    ``head`` None: faces of ``k`` corners, heads read from ``tail``.
+    """
+    size = tail.size
+    if size % 2:
+        return False
+    key = np.empty(size, dtype=np.int64)
+    step = BLOCK - BLOCK % k if head is None else BLOCK
+    for a in range(0, size, step):
+        t = tail[a : a + step]
+        h = head_of(t, np.empty(0), k) if head is None else head[a : a + step]
+        lo = np.minimum(t, h)
+        part = key[a : a + step]
+        np.multiply(lo & mask if mask is not None else lo, np.int64(n), out=part)
+        part += np.maximum(t, h)
+        part <<= 1
+        part |= t > h
+        part <<= index_bits
+        part |= np.arange(a, a + part.size, dtype=np.int64)
+        del t, h, lo, part
+    key.sort()
+    # the two halves of every edge must sit side by side: keys 2K and 2K + 1,
+    # which differ in their lowest bit only; then the low bits say which
+    # half-edges they are
+    low = np.int64((1 << index_bits) - 1)
+    for a in range(0, size, BLOCK):
+        part = key[a : a + BLOCK]
+        pair = np.bitwise_xor(part[0::2], part[1::2])
+        pair >>= index_bits
+        if not (pair == 1).all():
+            return False
+        part &= low
+        first, second = part[0::2], part[1::2]
+        if ids is not None:
+            first, second = ids[first], ids[second]
+        twin[first] = second
+        twin[second] = first
+    return True
+
+
+def vertex_rings(rotation, tail, valences):
+    """Outgoing half-edges of every vertex in rotation order, as CSR.
+
+    One vectorized step per position around the vertex (a loop over the
+    largest valence, not over vertices).  On a non-manifold vertex the orbit
+    closes early; the ring then repeats half-edges, which ``_validate``
+    detects.
+    """
+    n = valences.size
+    dtype = tail.dtype
+    ring_off = np.zeros(n + 1, dtype=dtype)
+    np.cumsum(valences, out=ring_off[1:])
+    start = np.empty(n, dtype=dtype)
+    # any outgoing half-edge per vertex: the last one written wins (in blocks:
+    # numpy widens a scatter's index array, the whole of it at once otherwise)
+    for a in range(0, tail.size, BLOCK):
+        start[tail[a : a + BLOCK]] = np.arange(a, min(a + BLOCK, tail.size), dtype=dtype)
+    ring = np.empty(tail.size, dtype=dtype)
+    if n == 0:
+        return ring, ring_off
+    # every vertex has at least `low` edges: the first `low` steps run over
+    # all vertices in index order (writes in increasing order of address)
+    low, top = int(valences.min()), int(valences.max())
+    base = ring_off[:-1]
+    cur = start
+    for k in range(low):
+        if k:
+            cur = rotation[cur]
+        ring[base + k] = cur
+    if top == low:
+        return ring, ring_off
+    # the rest, for the vertices of more edges, by valence (a radix sort on
+    # small ints): at step k the vertices still walking are a suffix
+    more = np.flatnonzero(valences > low).astype(dtype)
+    small = valences[more].astype(np.uint16 if top < 65536 else np.int64)
+    order = np.argsort(small, kind="stable").astype(dtype)
+    more = more[order]
+    first = np.searchsorted(small[order], np.arange(top), side="right")
+    cur = cur[more]
+    base = base[more]
+    for k in range(low, top):
+        lo = int(first[k])
+        c = rotation[cur[lo:]] if k else cur[lo:]
+        cur[lo:] = c
+        ring[base[lo:] + k] = c
+    return ring, ring_off
+
+
+def multi_fan_vertex(rotation, tail, valences) -> int:
+    """The first vertex whose rotation orbit is shorter than its valence."""
+    n = valences.size
+    start = np.empty(n, dtype=np.int64)
+    start[tail] = np.arange(tail.size, dtype=np.int64)
+    cur = start.copy()
+    closed_at = np.zeros(n, dtype=np.int64)
+    for k in range(1, int(valences.max(initial=0)) + 1):
+        cur = rotation[cur]
+        newly = (cur == start) & (closed_at == 0)
+        closed_at[newly] = k
+    bad = np.flatnonzero((closed_at < valences) & (valences > 0))
+    return int(bad[0]) if bad.size else -1
+
+
+def fan_triangle_corners(offsets: ArrayLike) -> tuple[IntArray, IntArray]:
+    """Fan triangulation of CSR polygons, as corner indices (for drawing).
+
+    Parameters
+    ----------
+    offsets : (m + 1,) int
+        Polygon ``f`` has corners ``offsets[f]`` to ``offsets[f + 1] - 1``.
+
+    Returns
+    -------
+    triangles : (T, 3) int
+        Triangle ``k`` of polygon ``f`` is corners ``(o, o + k + 1, o + k + 2)``
+        with ``o = offsets[f]``, counter-clockwise like the polygon;
+        ``T = offsets[-1] - 2m``.
+    triangle_face : (T,) int
+        The polygon each triangle comes from.
+
+    See Also
+    --------
+    Mesh.fan_triangles : the same triangles as vertex indices.
+    """
+    offsets = np.asarray(offsets, dtype=np.int64)
+    sizes = np.diff(offsets)
+    k = int(sizes[0]) if sizes.size else 0
+    if k >= 3 and int(sizes.min()) == k == int(sizes.max()):
+        # one size: every face's triangles are one pattern shifted by its offset
+        pattern = np.stack([np.zeros(k - 2, np.int64), np.arange(1, k - 1), np.arange(2, k)], 1)
+        tris = (offsets[:-1, None, None] + pattern).reshape(-1, 3)
+        tri_face = np.repeat(np.arange(sizes.size, dtype=np.int64), k - 2)
+        return readonly(tris), readonly(tri_face)
+    per = np.maximum(sizes - 2, 0)
+    tri_face = np.repeat(np.arange(per.size, dtype=np.int64), per)
+    start = offsets[:-1][tri_face]
+    k = np.arange(tri_face.size, dtype=np.int64) - (np.cumsum(per) - per)[tri_face]
+    tris = np.stack([start, start + k + 1, start + k + 2], axis=1)
+    return readonly(tris), readonly(tri_face)
