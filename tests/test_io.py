@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import pathlib
 import re
+import stat
 
 import numpy as np
 import pytest
@@ -414,10 +415,48 @@ def test_write_into_a_missing_directory_leaves_nothing(tmp_path):
 def test_write_over_a_directory_leaves_no_partial_file(tmp_path):
     target = tmp_path / "m.obj"
     target.mkdir()
-    with pytest.raises(OSError):
+    with pytest.raises(ValueError, match="is not a regular file"):
         write(shapes.cube(), target)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["m.obj"]
     assert target.is_dir()
+
+
+def test_write_leaves_a_file_named_like_its_temporary_alone(tmp_path):
+    (tmp_path / "model.obj.part").write_text("notes")
+    (tmp_path / "model.obj.tmp").write_text("more notes")
+    write(shapes.cube(), tmp_path / "model.obj")
+    assert (tmp_path / "model.obj.part").read_text() == "notes"
+    assert (tmp_path / "model.obj.tmp").read_text() == "more notes"
+    assert sorted(p.name for p in tmp_path.iterdir()) == [
+        "model.obj",
+        "model.obj.part",
+        "model.obj.tmp",
+    ]
+
+
+def test_rewriting_a_file_keeps_its_permissions(tmp_path):
+    target = tmp_path / "m.off"
+    write(shapes.tetrahedron(), target)
+    target.chmod(0o600)
+    write(shapes.cube(), target)
+    assert stat.S_IMODE(target.stat().st_mode) == 0o600
+    assert read(target).n_faces == 6
+
+
+def test_a_fifo_is_refused_not_replaced(tmp_path):
+    fifo = tmp_path / "pipe.obj"
+    os.mkfifo(fifo)
+    with pytest.raises(ValueError, match="is not a regular file"):
+        write(shapes.cube(), fifo)
+    assert stat.S_ISFIFO(fifo.stat().st_mode)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["pipe.obj"]
+
+
+def test_a_name_at_the_length_limit_is_written(tmp_path):
+    target = tmp_path / ("m" * 251 + ".obj")  # 255 bytes, the usual limit
+    write(shapes.cube(), target)
+    assert read(target).n_faces == 6
+    assert sorted(p.name for p in tmp_path.iterdir()) == [target.name]
 
 
 def test_failed_write_keeps_the_old_file_and_leaves_no_part(tmp_path, monkeypatch):

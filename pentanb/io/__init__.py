@@ -29,12 +29,11 @@ pentanb[convert]``): :func:`from_trimesh`, :func:`to_trimesh`,
 from __future__ import annotations
 
 import os
-from functools import partial
 from typing import Any
 
 from ..mesh import Mesh
 from . import obj, off, ply, stl
-from ._common import FORMATS, IgnoredDataWarning, as_path, check_mesh, format_of, write_atomically
+from ._common import FORMATS, IgnoredDataWarning, as_path, check_mesh, format_of, write_as
 from .convert import from_meshio, from_trimesh, to_meshio, to_trimesh
 from .obj import read_obj, write_obj
 from .off import read_off, write_off
@@ -146,16 +145,16 @@ def write(mesh: Mesh, path: str | os.PathLike, format: str | None = None, **opti
 
     Notes
     -----
-    The file is written to a temporary name first and renamed, so a failure
-    leaves nothing half-written (and an existing file as it was).
+    The file is written to a new temporary file beside it first and renamed,
+    so a failure leaves nothing half-written (and an existing file as it
+    was, with its permissions); a path that exists and is not a regular
+    file (a device, a FIFO, a directory) is refused with a ValueError.
     """
     check_mesh(mesh, "write")
-    path = as_path(path, "write")
-    fmt = format_of(path, format)
+    fmt = format_of(as_path(path, "write"), format)
     _check_options("write", fmt, options, WRITE_OPTIONS[fmt])
-    writer = _WRITERS[fmt]
     if fmt == "ply":
         ply.check_write_options(**options)
     elif fmt == "stl":
         stl.check_write_options(**options)
-    write_atomically(path, partial(writer, mesh, **options))
+    write_as(mesh, path, fmt, "write", _WRITERS[fmt], **options)

@@ -13,10 +13,14 @@
 
 from __future__ import annotations
 
+import contextlib
 import io
 import os
+import secrets
+import stat
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import IO, Any
 
@@ -84,19 +88,62 @@ def format_of(path: Path, format: str | None) -> str:
 
 
 def write_atomically(path: Path, write: Callable[[IO[bytes]], None]) -> None:
-    """Run ``write(file)`` on ``path + ".part"``, then rename it to ``path``.
+    """Run ``write(file)`` on a new temporary file beside ``path``, then rename it to ``path``.
 
-    A failure (an exception from ``write``, a full disk) removes the
-    partial file and leaves an existing ``path`` as it was.
+    The temporary file is created exclusively under a fresh random name
+    (never an existing file of the user's) and gets the permissions of the
+    file it replaces (a new file: the usual ones, after the umask).  A
+    failure (an exception from ``write``, a full disk) removes it and leaves
+    an existing ``path`` as it was.
+
+    Raises
+    ------
+    ValueError
+        ``path`` exists and is not a regular file (a directory, a device, a
+        FIFO, a socket): it is never replaced.
     """
-    tmp = path.with_name(path.name + ".part")
     try:
-        with open(tmp, "wb") as fh:
+        mode: int | None = stat.S_IMODE(os.stat(path).st_mode)
+        if not path.is_file():
+            raise ValueError(
+                f"{path} exists and is not a regular file: pentanb will not replace it"
+            )
+    except FileNotFoundError:
+        mode = None
+    stem = os.fsencode(path.name)[:200].decode(errors="ignore")  # room for the suffix
+    while True:
+        tmp = path.with_name(f".{stem}.{secrets.token_hex(6)}.tmp")
+        try:
+            fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+            break
+        except FileExistsError:  # pragma: no cover - 2**48 names
+            continue
+    try:
+        with os.fdopen(fd, "wb") as fh:
             write(fh)
+        if mode is not None:
+            os.chmod(tmp, mode)
         os.replace(tmp, path)
-    finally:
-        if tmp.exists() and not tmp.is_dir():
-            tmp.unlink()
+    except BaseException:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
+        raise
+
+
+def write_as(
+    mesh: Mesh,
+    path: str | os.PathLike,
+    format: str | None,
+    caller: str,
+    writer: Callable[..., None],
+    **options: Any,
+) -> None:
+    """Check ``mesh`` and ``path`` (the name must not name another format), then
+    write ``writer(mesh, file, **options)`` to ``path`` atomically."""
+    check_mesh(mesh, caller)
+    checked = as_path(path, caller)
+    format_of(checked, format)
+    write_atomically(checked, partial(writer, mesh, **options))
 
 
 def show(line: bytes, limit: int = 60) -> str:

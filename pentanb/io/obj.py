@@ -27,6 +27,7 @@ from ._common import (
     parse_ints,
     scan,
     show,
+    write_as,
 )
 
 __all__ = ["read_obj", "write_obj"]
@@ -226,9 +227,7 @@ def write_obj(mesh: Mesh, path: str | os.PathLike) -> None:
     back gives the very same numbers.  A name ending in another format's
     suffix (``.off``) is refused (ValueError).
     """
-    from . import write
-
-    write(mesh, path, format="obj")
+    write_as(mesh, path, "obj", "write_obj", _write)
 
 
 def _write(mesh: Mesh, fh: IO[bytes]) -> None:

@@ -25,6 +25,7 @@ from ._common import (
     parse_ints,
     scan,
     show,
+    write_as,
 )
 from .obj import write_faces, write_vertices
 
@@ -127,7 +128,7 @@ class _Reader:
         vl, fl = data[is_v], data[is_f]
         if vl.size:
             at = int(g[is_v][0])
-            self.vertices[at : at + vl.size] = self._vertices(s, vl, block, lineno)
+            self.vertices[at : at + vl.size] = self._read_vertices(s, vl, block, lineno)
         if fl.size:
             at = int(g[is_f][0]) - nv
             sizes, corners = self._faces(s, fl, block, lineno)
@@ -141,7 +142,7 @@ class _Reader:
                 f"{show(_line(block, s, line))}"
             )
 
-    def _vertices(self, s, vl: np.ndarray, block: bytes, lineno: int) -> np.ndarray:
+    def _read_vertices(self, s, vl: np.ndarray, block: bytes, lineno: int) -> np.ndarray:
         count = s.ntok[vl]
         uniform = bool(count.min() == count.max())
         values = parse_floats(
@@ -227,9 +228,7 @@ def write_off(mesh: Mesh, path: str | os.PathLike) -> None:
 
     A name ending in another format's suffix (``.obj``) is refused (ValueError).
     """
-    from . import write
-
-    write(mesh, path, format="off")
+    write_as(mesh, path, "off", "write_off", _write)
 
 
 def _write(mesh: Mesh, fh: IO[bytes]) -> None:

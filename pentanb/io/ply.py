@@ -33,6 +33,7 @@ from ._common import (
     parse_floats,
     scan,
     show,
+    write_as,
 )
 from .obj import WRITE_ROWS, write_faces, write_vertices
 
@@ -500,9 +501,8 @@ def write_ply(
     byteorder : {"little", "big"}
         Of a binary file.
     """
-    from . import write
-
-    write(mesh, path, format="ply", ascii=ascii, byteorder=byteorder)
+    check_write_options(ascii, byteorder)
+    write_as(mesh, path, "ply", "write_ply", _write, ascii=ascii, byteorder=byteorder)
 
 
 def _write(mesh: Mesh, fh: IO[bytes], ascii: bool = False, byteorder: str = "little") -> None:

@@ -20,7 +20,7 @@ import numpy as np
 
 from ..mesh import Mesh, MeshError
 from ..mesh.build import adopted
-from ._common import as_path, check_mesh, line_blocks, parse_floats, scan, show
+from ._common import as_path, check_mesh, line_blocks, parse_floats, scan, show, write_as
 from .obj import WRITE_ROWS
 
 __all__ = ["read_stl", "write_stl", "weld"]
@@ -306,9 +306,8 @@ def write_stl(mesh: Mesh, path: str | os.PathLike, *, ascii: bool = False) -> No
     numbers); ASCII STL is written with ``repr`` precision (exact).  Each
     facet's normal is its polygon's unit normal.
     """
-    from . import write
-
-    write(mesh, path, format="stl", ascii=ascii)
+    check_write_options(ascii)
+    write_as(mesh, path, "stl", "write_stl", _write, ascii=ascii)
 
 
 def _write(mesh: Mesh, fh: IO[bytes], ascii: bool = False) -> None:
