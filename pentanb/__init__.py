@@ -17,8 +17,7 @@ from . import shapes, topology
 from ._jit import use_jit
 from .io import read, write
 from .mesh import Mesh, MeshError
-from .notation import conway
-from .positions import ConvergenceError, canonical, planarize
+from .notation import ConvergenceError, canonical, conway, planarize
 from .schemes import (
     SCHEMES,
     Scheme,

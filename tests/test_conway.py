@@ -15,8 +15,10 @@ Expected values come from the literature, never from the code under test:
 
 from __future__ import annotations
 
+import ast
 import re
 from collections import Counter
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -32,13 +34,13 @@ from pentanb.notation import (
     antiprism,
     conway,
     parse,
-    predict_counts,
     prism,
     pyramid,
     reduce_notation,
     resolve,
 )
-from pentanb.schemes import conway as ops
+from pentanb.notation import operators as ops
+from pentanb.notation.build import _counts
 
 SEED_NAMES = ["T", "C", "O", "I", "D", "P3", "P5", "P6", "A4", "A5", "Y4", "Y5", "Y6"]
 LETTERS = list(OPERATORS)
@@ -127,7 +129,7 @@ def test_counts_match_the_literature_formula(letter, seed):
     got = (out.n_vertices, out.n_edges, out.n_faces)
     assert got == FORMULAS[letter](V, E, F)
     assert got == tuple(OPERATORS[letter].counts(V, E, F)), "registry formula"
-    assert got == predict_counts(letter + seed)[0]
+    assert got == _counts(letter + seed)[0][-1]
 
 
 @pytest.mark.parametrize("seed", SEED_NAMES)
@@ -194,7 +196,7 @@ def test_kis_n_raises_pyramids_on_n_gons_only(text, seed, n):
     hist = Counter(int(s) for s in m.face_sizes if s != n)
     hist[3] += n * fn
     assert out.face_size_histogram() == {k: v for k, v in sorted(hist.items()) if v}
-    assert OPERATORS["k"].exact_counts(m, n) == (out.n_vertices, out.n_edges, out.n_faces)
+    assert OPERATORS["k"].counts_on(m, n) == (out.n_vertices, out.n_edges, out.n_faces)
     check_valid(out)
 
 
@@ -653,10 +655,87 @@ def test_resolve_refuses_a_seed():
         resolve("pentagonalize")
 
 
-def test_predict_counts_flags_numeric_forms():
-    assert predict_counts("k4P6") == ((20, 54, 36), False)
-    assert predict_counts("gC") == ((38, 60, 24), True)
-    assert predict_counts("g", seed=shapes.dodecahedron()) == ((92, 150, 60), True)
+def test_counts_flag_numeric_forms():
+    # conway's size check: the seed's counts, then after every operator
+    assert _counts("k4P6") == ([(12, 18, 8), (20, 54, 36)], False)
+    assert _counts("gC") == ([(8, 12, 6), (38, 60, 24)], True)
+    assert _counts("g", seed=shapes.dodecahedron()) == ([(20, 30, 12), (92, 150, 60)], True)
+    assert _counts("dgT")[0] == [(4, 6, 4), (20, 30, 12), (12, 30, 20)]  # gT = D, dgT = I
+
+
+def test_truncate_n_counts_on_a_mesh():
+    m = seed_mesh("Y4")  # one 4-valent vertex (the apex), four 3-valent ones
+    for n in (3, 4):
+        out = conway(f"t{n}", seed=m)
+        assert OPERATORS["t"].counts_on(m, n) == (out.n_vertices, out.n_edges, out.n_faces)
+    assert OPERATORS["t"].counts_on(m) == OPERATORS["t"].counts(5, 8, 5)
+
+
+def test_as_scheme_takes_names_schemes_callables_and_notation():
+    from pentanb.notation import as_scheme
+    from pentanb.schemes.registry import SCHEMES, get_scheme
+
+    assert as_scheme("pentagonalize") is SCHEMES["pentagonalize"]
+    assert as_scheme(SCHEMES["honeycomb"]) is SCHEMES["honeycomb"]
+    assert as_scheme(pentanb.dual) is pentanb.dual
+    s = as_scheme("dg")
+    assert s.name == "dg" and s.formula == "(2E, 5E, V+2E+F)" and s.family == "conway"
+    assert as_scheme("k4").formula.endswith(" at most")
+    with pytest.raises(ValueError, match=r"unknown scheme 'pentagonalise'.*Conway operators"):
+        as_scheme("pentagonalise")
+    # the registry itself reads no notation
+    with pytest.raises(ValueError, match=r"^unknown scheme 'dg'; known schemes: pentagonalize"):
+        get_scheme("dg")
+
+
+ROOT = Path(pentanb.__file__).resolve().parent.parent
+
+
+def _imports(path: Path) -> set[str]:
+    """The modules a source file imports (at load time or inside functions),
+    relative imports made absolute."""
+    parts = list(path.relative_to(ROOT).with_suffix("").parts)
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.Import):
+            found.update(a.name for a in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            base = parts[: len(parts) - node.level] if node.level else []
+            module = ".".join(base + ([node.module] if node.module else []))
+            found.add(module)
+            found.update(f"{module}.{a.name}" for a in node.names)
+    return found
+
+
+@pytest.mark.parametrize(
+    "package, forbidden",
+    [("schemes", "pentanb.notation"), ("notation", "pentanb.analysis")],
+)
+def test_imports_go_one_way(package, forbidden):
+    """analysis -> notation -> schemes, never back (deferred imports included)."""
+    for path in sorted((ROOT / "pentanb" / package).glob("*.py")):
+        bad = sorted(m for m in _imports(path) if m == forbidden or m.startswith(forbidden + "."))
+        assert not bad, f"{path.name} imports {bad}"
+
+
+def test_registered_letters_share_the_schemes_count_formulas():
+    """Each count formula is written once: the letters that are registered
+    schemes take the scheme's function."""
+    from pentanb.schemes.registry import SCHEMES
+
+    pairs = {
+        "g": "pentagonalize",
+        "q": "preserve_pentagons",
+        "e": "corner_cutting",
+        "o": "vertex_insertion",
+        "c": "preserve_hexagons",
+        "z": "honeycomb",
+        "u": "loop_remesh",
+        "n": "sqrt3_remesh",
+    }
+    for letter, name in pairs.items():
+        assert OPERATORS[letter].counts is SCHEMES[name].counts, letter
+        assert OPERATORS[letter].formula == SCHEMES[name].formula, letter
 
 
 def test_registry_is_complete():

@@ -74,6 +74,7 @@ from numpy.typing import NDArray
 
 from .. import schemes as _schemes
 from ..mesh import Mesh
+from ..notation import seeds
 from ..schemes.registry import SCHEMES, Scheme, get_scheme
 from .subdivision_matrix import _name, dual_matrix, remesh_matrix
 
@@ -107,20 +108,39 @@ TOL = 1e-8
 
 
 def pyramid(size: int) -> Mesh:
-    """A pyramid over a regular ``size``-gon: apex (vertex 0) of valence ``size``,
-    base (face ``size``) with ``size`` sides; ``size`` triangles around.
+    """The pyramid ``Y<size>`` (:func:`pentanb.notation.pyramid`), renumbered and
+    perturbed: the mesh in which the elements are planted.
 
     The apex is lifted off-centre and the base ring is slightly irregular, so
     that no accidental symmetry of the positions hides a mode.
+
+    Parameters
+    ----------
+    size : int >= 3
+        The valence of the apex and the number of sides of the base.
+
+    Returns
+    -------
+    Mesh
+        ``size + 1`` vertices: the apex (vertex 0), then the base ring;
+        ``size + 1`` faces: the triangles ``(0, 1 + i, 1 + (i + 1) % size)``,
+        then the base (face ``size``).
+
+    Raises
+    ------
+    ValueError
+        ``size`` is not an integer >= 3.
     """
     k = _check_size(size)
+    seed = seeds.pyramid(k)  # ring 0 .. k - 1, apex k; faces: the base, then (i, i + 1, k)
+    label = (np.arange(k + 1) + 1) % (k + 1)  # seed vertex -> here: the apex first
+    tris = label[seed.corners[k:].reshape(k, 3)][:, [2, 0, 1]]  # each from the apex
+    base = label[seed.corners[:k]]
     t = 2 * np.pi * np.arange(k) / k
     r = 1.0 + 0.05 * np.cos(3 * t + 0.3)
     ring = np.stack([r * np.cos(t), r * np.sin(t), 0.1 * np.sin(2 * t + 0.7)], axis=1)
     apex = np.array([[0.07, -0.04, 1.1]])
-    faces = [[0, 1 + i, 1 + (i + 1) % k] for i in range(k)]
-    faces.append([1 + i for i in range(k)][::-1])
-    return Mesh(np.concatenate([apex, ring]), faces)
+    return Mesh(np.concatenate([apex, ring]), [*tris.tolist(), base.tolist()])
 
 
 def _check_size(size) -> int:

@@ -5,7 +5,13 @@ the command line and the tests can list them all.  Each entry knows its
 paper reference, its Conway name and how its output's counts follow from its
 input's (which lets :func:`pentanb.subdivide` refuse, before building
 anything, a request that would not fit in memory).  :func:`get_scheme` is
-the one place where a scheme name is checked.
+the one place where a registered name is checked.
+
+The count formulas are written here once: the Conway operators that are
+these schemes (:data:`pentanb.notation.OPERATORS`: ``g q e o c z u n``)
+take theirs from :data:`SCHEMES`.  Nothing in :mod:`pentanb.schemes`
+imports :mod:`pentanb.notation`; Conway strings used as scheme names
+(``"dg"``) are resolved by :func:`pentanb.notation.as_scheme`.
 """
 
 from __future__ import annotations
@@ -17,7 +23,7 @@ from typing import Any
 from ..mesh import Mesh
 from . import classic, pentagonal
 
-__all__ = ["Scheme", "SCHEMES", "get_scheme", "Counts"]
+__all__ = ["Scheme", "SCHEMES", "get_scheme", "count_formula", "Counts"]
 
 Counts = tuple[int, int, int]
 
@@ -74,12 +80,28 @@ class Scheme:
 
         ``counts`` is evaluated on symbols (it is linear in V, E and F).
         """
-        symbols: list[Any] = [_Linear((1, 0, 0)), _Linear((0, 1, 0)), _Linear((0, 0, 1))]
-        out = self.counts(*symbols)
-        text = "(" + ", ".join(str(x) for x in out) + ")"
+        text = count_formula(self.counts)
         if self.exact_counts:
             return text
         return text + " at most" + (f" ({self.bound})" if self.bound else "")
+
+
+def count_formula(counts: Callable[..., tuple]) -> str:
+    """A count formula as text: ``"(V+2E+F, 5E, 2E)"`` for pentagonalization's.
+
+    Parameters
+    ----------
+    counts : callable
+        ``counts(V, E, F) -> (V', E', F')``, linear in V, E and F (it is
+        evaluated on symbols: sums and integer multiples only).
+
+    Returns
+    -------
+    str
+        The three linear forms, their terms in the order V, E, F.
+    """
+    symbols: list[Any] = [_Linear((1, 0, 0)), _Linear((0, 1, 0)), _Linear((0, 0, 1))]
+    return "(" + ", ".join(str(x) for x in counts(*symbols)) + ")"
 
 
 class _Linear:
@@ -196,33 +218,30 @@ SCHEMES: dict[str, Scheme] = {s.name: s for s in _LIST}
 
 
 def get_scheme(scheme: str | Scheme | Callable) -> Scheme | Callable:
-    """Look a scheme up by name; a :class:`Scheme` or callable passes through.
+    """Look a registered scheme up by name; a :class:`Scheme` or callable passes through.
 
-    A name that is not in :data:`SCHEMES` is read as Conway notation
-    (operators only, no seed: ``"dg"``, ``"k4t"``), resolved by
-    :func:`pentanb.notation.resolve`, so the explorer, :func:`pentanb.subdivide`
-    and the step counts accept ``"gC"``-style strings wherever they take a
-    scheme name.
+    Conway strings (``"dg"``) are not read here (:mod:`pentanb.schemes`
+    does not import :mod:`pentanb.notation`): :func:`pentanb.notation.as_scheme`
+    accepts everything this function does, and Conway operators too.
+
+    Parameters
+    ----------
+    scheme : str, Scheme or callable
+        A key of :data:`SCHEMES`, or a scheme or ``Mesh -> Mesh`` callable.
+
+    Returns
+    -------
+    Scheme or callable
+        The registered :class:`Scheme`, or ``scheme`` itself.
 
     Raises
     ------
     ValueError
-        For an unknown name that is not Conway notation either; the message
-        lists the known names and says why the notation was refused.
+        For a name that is not in :data:`SCHEMES`; the message lists the
+        known names.
     """
     if isinstance(scheme, Scheme) or (callable(scheme) and not isinstance(scheme, str)):
         return scheme
-    if isinstance(scheme, str):
-        if scheme in SCHEMES:
-            return SCHEMES[scheme]
-        from ..notation import resolve
-
-        try:
-            return resolve(scheme)
-        except ValueError as exc:
-            why = str(exc).splitlines()[0] if str(exc) else "not Conway notation"
-            raise ValueError(
-                f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}, "
-                f"or Conway operators such as 'dg' ({why})"
-            ) from None
+    if isinstance(scheme, str) and scheme in SCHEMES:
+        return SCHEMES[scheme]
     raise ValueError(f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}")

@@ -40,8 +40,10 @@ iteration stalls on ``cY5`` and ``zY5``).  Here:
   the mesh onto the planar meshes nearby; if that collapses edges, a first
   phase that also keeps the edge lengths comes before the projection.
 
-scipy.sparse is imported when a function is called (``import pentanb``
-needs numpy only).
+The planarity measure (:func:`best_fit_planes`, :func:`face_planarity`)
+lives here, below :mod:`pentanb.analysis` (which may import it; nothing in
+:mod:`pentanb.notation` imports :mod:`pentanb.analysis`).  scipy.sparse is
+imported when a function is called (``import pentanb`` needs numpy only).
 """
 
 from __future__ import annotations
@@ -52,10 +54,17 @@ from typing import Literal, overload
 
 import numpy as np
 
-from .analysis.measures import face_planarity
-from .mesh import Mesh, MeshError, check_mesh
+from ..mesh import Mesh, MeshError, check_mesh
 
-__all__ = ["canonical", "planarize", "PlacementReport", "ConvergenceError", "tangency_points"]
+__all__ = [
+    "canonical",
+    "planarize",
+    "PlacementReport",
+    "ConvergenceError",
+    "tangency_points",
+    "best_fit_planes",
+    "face_planarity",
+]
 
 #: Default tolerance: edges tangent, tangency points centred and faces planar
 #: (relative to each face's mean edge length) within this.
@@ -124,6 +133,11 @@ class ConvergenceError(RuntimeError):
 def tangency_points(mesh: Mesh) -> tuple[np.ndarray, np.ndarray]:
     """The point of every edge's line closest to the origin, and its distance.
 
+    Parameters
+    ----------
+    mesh : Mesh
+        E edges.
+
     Returns
     -------
     points : (E, 3) float
@@ -135,6 +149,66 @@ def tangency_points(mesh: Mesh) -> tuple[np.ndarray, np.ndarray]:
     s = -np.einsum("ij,ij->i", u, lv) / np.einsum("ij,ij->i", lv, lv)
     t = u + s[:, None] * lv
     return t, np.linalg.norm(t, axis=1)
+
+
+def best_fit_planes(mesh: Mesh) -> tuple[np.ndarray, np.ndarray]:
+    """The least-squares plane of every face (through its corners' mean).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        m faces.
+
+    Returns
+    -------
+    centres : (m, 3) float
+        The mean of each face's corners (a point of its plane).
+    normals : (m, 3) float
+        Unit normals, turned to agree with the face's orientation (Newell's
+        normal); the direction of least spread of the corners.
+    """
+    v = mesh.vertices
+    p = v[mesh.corners]
+    starts = mesh.offsets[:-1]
+    sizes = mesh.face_sizes[:, None]
+    centres = np.add.reduceat(p, starts, axis=0) / sizes
+    d = p - centres[mesh.halfedge_face]
+    cov = np.add.reduceat(d[:, :, None] * d[:, None, :], starts, axis=0)
+    _, vecs = np.linalg.eigh(cov)
+    normals = vecs[:, :, 0]  # eigh sorts eigenvalues ascending
+    newell = np.add.reduceat(np.cross(p, v[mesh.head]), starts, axis=0)
+    flip = np.einsum("ij,ij->i", normals, newell) < 0
+    normals[flip] *= -1.0
+    return centres, normals
+
+
+def face_planarity(mesh: Mesh, relative_to: str = "mesh") -> np.ndarray:
+    """Largest distance of each face's corners from its best-fit plane.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        m faces.
+    relative_to : {"mesh", "face"}
+        Divide by the mean edge length of the whole mesh (``"mesh"``) or by
+        the mean length of the face's own edges (``"face"``).
+
+    Returns
+    -------
+    (m,) float
+        0 for triangles and for planar faces.
+    """
+    if relative_to not in ("mesh", "face"):
+        raise ValueError(f"relative_to must be 'mesh' or 'face', got {relative_to!r}")
+    centres, normals = best_fit_planes(mesh)
+    hf = mesh.halfedge_face
+    p = mesh.vertices[mesh.corners]
+    dist = np.abs(np.einsum("ij,ij->i", p - centres[hf], normals[hf]))
+    worst = np.maximum.reduceat(dist, mesh.offsets[:-1])
+    lengths = np.linalg.norm(mesh.vertices[mesh.head] - p, axis=1)
+    if relative_to == "mesh":
+        return worst / lengths.mean()
+    return worst / (np.add.reduceat(lengths, mesh.offsets[:-1]) / mesh.face_sizes)
 
 
 def _canonical_measures(mesh: Mesh) -> tuple[float, float, float, bool]:
@@ -889,8 +963,6 @@ def _solve_planar(
     v, f = mesh.corners[h], slot[hf[h]]
     nh = h.size
     sub = Mesh.from_csr(x0, mesh.corners, mesh.offsets, validate=False)
-    from .analysis.measures import best_fit_planes
-
     _, normals = best_fit_planes(sub)
     n0 = normals[big]
     c0 = np.add.reduceat(x0[mesh.corners], mesh.offsets[:-1], axis=0) / mesh.face_sizes[:, None]
