@@ -32,6 +32,7 @@ from helpers import (
 )
 
 from pentanb import Mesh, MeshError, pentagonalize, shapes
+from pentanb.mesh.build import trusted
 
 
 def relabelled(m: Mesh, seed: int) -> Mesh:
@@ -69,7 +70,9 @@ def test_corpus_extras_by_hand():
 def test_check_valid_catches_a_wrong_twin():
     c = shapes.cube()
     bad = np.roll(c.twin, 1)
-    m = Mesh.from_csr(c.vertices, c.corners, c.offsets, twin=bad, validate=False)
+    with pytest.raises(MeshError, match="not its opposite"):  # from_csr checks twins
+        Mesh.from_csr(c.vertices, c.corners, c.offsets, twin=bad, validate=False)
+    m = trusted(c.vertices.copy(), c.corners.copy(), c.offsets.copy(), twin=bad)  # unchecked
     with pytest.raises(AssertionError):
         check_valid(m)
     check_valid(Mesh.from_csr(c.vertices, c.corners, c.offsets, twin=c.twin.copy(), validate=False))
@@ -79,7 +82,9 @@ def test_check_valid_catches_an_invalid_mesh():
     c = shapes.cube()
     # faces 0 and 1 merged into one corner list without the offset between them
     offsets = np.concatenate([[0], c.offsets[2:]])
-    m = Mesh.from_csr(c.vertices, c.corners, offsets, validate=False)
+    with pytest.raises(MeshError):  # from_csr refuses it
+        Mesh.from_csr(c.vertices, c.corners, offsets, validate=False)
+    m = trusted(c.vertices.copy(), c.corners.copy(), offsets.astype(c.offsets.dtype))
     with pytest.raises((MeshError, AssertionError)):
         check_valid(m)
 

@@ -52,6 +52,7 @@ from .halfedge import (
     vertex_rings,
 )
 from .validate import validate as validate_mesh
+from .validate import validate_rings
 
 __all__ = ["Mesh", "Rings", "Several", "check_mesh"]
 
@@ -390,16 +391,29 @@ class Mesh:
             Face ``f`` is ``corners[offsets[f]:offsets[f + 1]]``; ``offsets[0] == 0``.
         twin : (H,) int, optional
             The opposite half-edge of each half-edge, when the caller knows
-            it (used only without validation, which derives the twins itself).
+            it: checked (an involution pairing every half-edge with its
+            reverse) instead of derived by sorting.
         validate : bool
-            Check the mesh, as the constructor does.  With False the arrays
-            are trusted as they are: nothing but the shape of ``vertices``
-            and the ranges of the indices is checked (an index outside the
-            arrays would make the compiled kernels read outside them), and
-            a mesh that is not a closed oriented manifold gives wrong
-            results or errors later (the operators refuse what they cannot
-            handle, e.g. :func:`pentanb.dual` a vertex with fewer than 3
-            edges).  For speed only, on arrays known to be good.
+            True: every check of the constructor.  False: only what the
+            arrays' consistency rests on (indices in range, finite
+            coordinates, faces of at least 3 distinct vertices, every
+            directed edge once and with its opposite, one fan round every
+            vertex), so that no operator, numpy's or a compiled kernel, can
+            read outside an array; what the operators refuse one by one
+            with their own message (a vertex of fewer than 3 edges, two
+            faces sharing two edges, an unused vertex) is let through, for
+            meshes such as a flat polygon closed by its reverse.
+
+        Returns
+        -------
+        Mesh
+
+        Raises
+        ------
+        MeshError
+            Naming the first culprit.
+        TypeError
+            An argument that is not an array of numbers.
 
         Notes
         -----
@@ -407,21 +421,19 @@ class Mesh:
         the half-edges): the mesh never aliases, nor freezes, the caller's
         arrays, so changing them afterwards cannot change the mesh.
         """
-        if validate:
-            v = as_vertices(vertices)
-            c = as_csr_part(corners, "corners")  # copies: the caller's
-            o = as_csr_part(offsets, "offsets")  # arrays stay theirs
-            check_offsets(c, o)
-            self = cls._new(v, *compact(c, o, v.shape[0]))
-            validate_mesh(self)
-            return self
-        v = np.array(vertices, dtype=np.float64)
-        if v.ndim != 2 or v.shape[1] != 3:
-            raise MeshError(f"vertices must be an (n, 3) array, got shape {v.shape}")
-        c, o = compact(as_csr_part(corners, "corners"), as_csr_part(offsets, "offsets"), v.shape[0])
-        t = None if twin is None else as_csr_part(twin, "twin")
-        check_ranges(c, o, t, v.shape[0])
-        return cls._new(v, c, o, twin=None if t is None else t.astype(c.dtype))
+        v = as_vertices(vertices)
+        c = as_csr_part(corners, "corners")  # copies: the caller's
+        o = as_csr_part(offsets, "offsets")  # arrays stay theirs
+        check_offsets(c, o)
+        c, o = compact(c, o, v.shape[0])
+        t = None
+        if twin is not None:
+            t = as_csr_part(twin, "twin")
+            check_ranges(c, o, t, v.shape[0])
+            t = t.astype(c.dtype)
+        self = cls._new(v, c, o)
+        validate_mesh(self, twin=t, strict=bool(validate))
+        return self
 
     def with_vertices(self, vertices: ArrayLike) -> Mesh:
         """The same connectivity with other vertex positions (``(n, 3)`` float).
@@ -438,8 +450,8 @@ class Mesh:
     def __reduce__(self) -> tuple[Callable[..., Mesh], tuple[Any, ...]]:
         """Pickle (and copy) as the arrays plus the twins and rings already known.
 
-        A producer an operator handed over is run now (no callable is
-        pickled); other derived arrays are derived again after loading.
+        Loading checks them (:func:`_rebuild`); everything else is derived
+        again on first use.
         """
         shared = self._shared
         known = {
@@ -894,10 +906,20 @@ del _name
 def _rebuild(
     vertices: np.ndarray, corners: np.ndarray, offsets: np.ndarray, known: dict[str, Any]
 ) -> Mesh:
-    """Unpickle (or copy) a mesh: see :meth:`Mesh.__reduce__`."""
-    return Mesh._new(
-        vertices, corners, offsets, twin=known.get("twin"), rings=known.get("vertex_ring")
-    )
+    """Unpickle (or copy) a mesh: see :meth:`Mesh.__reduce__`.
+
+    A pickle is outside data: the arrays are checked as by
+    ``Mesh.from_csr(..., validate=False)`` (the twins it holds are checked,
+    not trusted), so a tampered pickle is a MeshError, never a mesh that
+    sends an operator outside its arrays.
+    """
+    mesh = Mesh.from_csr(vertices, corners, offsets, twin=known.get("twin"), validate=False)
+    rings = known.get("vertex_ring")
+    if rings is not None:
+        if not (isinstance(rings, tuple) and len(rings) == 2):
+            raise MeshError("the pickled vertex rings are not a pair of arrays")
+        validate_rings(mesh, rings)
+    return mesh
 
 
 def check_mesh(mesh: object, op: str) -> Mesh:

@@ -18,10 +18,15 @@ from .boundary import describe_boundary
 from .coerce import MeshError, readonly
 from .halfedge import BLOCK, RotateUniform, multi_fan_vertex, pair_twins, rotation_of, vertex_rings
 
-__all__ = ["validate"]
+__all__ = ["validate", "validate_rings"]
 
 
-def validate(mesh: Any) -> None:
+def validate(
+    mesh: Any,
+    *,
+    twin: np.ndarray | None = None,
+    strict: bool = True,
+) -> None:
     """Check that the mesh is a closed, oriented 2-manifold; raise MeshError if not.
 
     Every check runs first as a whole-array pass that only says whether
@@ -29,12 +34,85 @@ def validate(mesh: Any) -> None:
     checked again, in order, by :func:`_diagnose`, which finds
     the first culprit and names it.  The twins and vertex rings the
     checks derive stay cached.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        A mesh just built from arrays nothing has checked yet.
+    twin : (H,) int, optional
+        The twins, when the caller knows them: checked to be the opposite
+        half-edges (an involution without fixed points, each reversing its
+        partner) instead of derived by sorting.
+    strict : bool
+        False accepts what the operators refuse one by one with their own
+        message (vertices of fewer than 3 edges, unused vertices, two faces
+        sharing two edges) but keeps every check that the arrays'
+        consistency rests on: indices in range, faces of at least 3
+        distinct vertices, every directed edge once and with its opposite,
+        one fan round every vertex.
+
+    Raises
+    ------
+    MeshError
+        Naming the first culprit.
     """
-    if not _valid(mesh):
-        _diagnose(mesh)
+    if twin is not None:
+        _check_twin(mesh, twin)
+    if not _valid(mesh, twin, strict):
+        _diagnose(mesh, strict)
 
 
-def _valid(mesh: Any) -> bool:
+def validate_rings(mesh: Any, rings: tuple[np.ndarray, np.ndarray]) -> None:
+    """Keep ``rings`` as the vertex rings of a valid ``mesh``, or MeshError unless
+    they are its rings (each vertex's outgoing half-edges in rotation order,
+    starting anywhere)."""
+    ring, off = (np.asarray(a) for a in rings)
+    derived, derived_off = mesh.vertex_ring
+    c = mesh._corners
+    ok = ring.shape == derived.shape and np.array_equal(off, derived_off)
+    if ok and ring.size:
+        ok = ring.dtype.kind in "iu" and 0 <= int(ring.min()) and int(ring.max()) < c.size
+    if ok and ring.size:
+        slot = np.arange(ring.size)
+        first = np.repeat(derived_off[:-1], np.diff(derived_off))
+        following = np.where(
+            slot + 1 < np.repeat(derived_off[1:], np.diff(derived_off)), slot + 1, first
+        )
+        ok = bool(
+            np.array_equal(c[ring], c[derived])
+            and np.array_equal(mesh.rotation[ring], ring[following])
+        )
+    if not ok:
+        raise MeshError("the vertex rings handed over are not the rings of these faces")
+    dtype = c.dtype
+    mesh._shared.values["vertex_ring"] = (readonly(ring.astype(dtype)), readonly(off.astype(dtype)))
+
+
+def _check_twin(mesh: Any, twin: np.ndarray) -> None:
+    """MeshError unless ``twin`` pairs every half-edge with its opposite."""
+    c = mesh._corners
+    H = c.size
+    if twin.shape != (H,):
+        raise MeshError(f"twin must have one entry per corner ({H:,}), got {twin.size:,}")
+    if H and (int(twin.min()) < 0 or int(twin.max()) >= H):
+        bad = int(np.flatnonzero((twin < 0) | (twin >= H))[0])
+        raise MeshError(
+            f"twin of half-edge {bad} is {int(twin[bad])}, outside the {H:,} half-edges"
+        )
+    h = np.arange(H, dtype=twin.dtype)
+    if (c.size and int(c.min()) < 0) or (c.size and int(c.max()) >= mesh.n_vertices):
+        return  # the corners' own check names this
+    head = mesh.head
+    wrong = (twin == h) | (twin[twin] != h) | (c[twin] != head)
+    if wrong.any():
+        bad = int(np.flatnonzero(wrong)[0])
+        raise MeshError(
+            f"twin of half-edge {bad} ({int(c[bad])} -> {int(head[bad])}) is half-edge "
+            f"{int(twin[bad])} ({int(c[twin[bad]])} -> {int(head[twin[bad]])}), not its opposite"
+        )
+
+
+def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bool:
     """Every check of :func:`_diagnose`, without messages.
 
     Faces of at least 3 corners; indices in range; no vertex twice in a
@@ -56,15 +134,17 @@ def _valid(mesh: Any) -> bool:
         return False
     # the arrays below are not kept (only the twins and rings are): the
     # peak stays a few bytes per corner above the faces themselves
-    twin = pair_twins(c, None if k else mesh.head, n, k)
     if twin is None:
-        return False
-    if int(mesh.valences.min()) < 3:
-        return False
-    neighbour = twin // k if k else mesh.halfedge_face[twin]
-    if _repeats_in_a_face(mesh, neighbour, mesh.n_faces):
-        return False
-    del neighbour
+        twin = pair_twins(c, None if k else mesh.head, n, k)
+        if twin is None:
+            return False
+    if strict:
+        if int(mesh.valences.min()) < 3:
+            return False
+        neighbour = twin // k if k else mesh.halfedge_face[twin]
+        if _repeats_in_a_face(mesh, neighbour, mesh.n_faces):
+            return False
+        del neighbour
     mesh._shared.values["twin"] = readonly(twin)
     # (no rotation array: a column copy of the twins walks the rings a
     # little faster, but raises the peak of reading a 1,000,000-triangle
@@ -118,7 +198,7 @@ def _repeats_in_a_face(mesh: Any, values: np.ndarray, bound: int) -> bool:
     return bool((key[1:] == key[:-1]).any())
 
 
-def _diagnose(mesh: Any) -> None:
+def _diagnose(mesh: Any, strict: bool = True) -> None:
     """Find the first culprit of an invalid mesh and raise a MeshError naming it."""
     n = mesh.n_vertices
     c = mesh._corners
@@ -169,6 +249,36 @@ def _diagnose(mesh: Any) -> None:
             f"(a boundary): the mesh must be closed; it has {describe_boundary(c, head)}"
         )
     mesh._shared.values["twin"] = readonly(twin)
+    if strict:
+        _diagnose_strict(mesh, twin)
+    ring, _ = mesh.vertex_ring
+    if not np.array_equal(np.sort(ring), np.arange(c.size)):
+        # a vertex whose rotation orbit is shorter than its valence
+        bad_v = multi_fan_vertex(mesh.rotation, c, mesh.valences)
+        raise MeshError(f"vertex {bad_v} is non-manifold: its faces form more than one fan")
+
+
+def _unpaired(tail: np.ndarray, head: np.ndarray, n: int) -> tuple[str, int]:
+    """Why the half-edges do not pair: ``("duplicate", h)``, a directed edge
+    used twice (``h`` one of them), or ``("boundary", h)``, a half-edge
+    without an opposite."""
+    n64 = np.int64(n)
+    lo = np.minimum(tail, head).astype(np.int64)
+    hi = np.maximum(tail, head).astype(np.int64)
+    key = (lo * n64 + hi) * 2 + (tail > head)
+    order = np.argsort(key, kind="stable")
+    skey = key[order]
+    dup = np.flatnonzero(skey[1:] == skey[:-1])
+    if dup.size:
+        return "duplicate", int(order[dup[0]])
+    want = (lo * n64 + hi) * 2 + (tail < head)
+    pos = np.minimum(np.searchsorted(skey, want), skey.size - 1)
+    return "boundary", int(np.flatnonzero(skey[pos] != want)[0])
+
+
+def _diagnose_strict(mesh: Any, twin: np.ndarray) -> None:
+    """The checks of :func:`_diagnose` that ``strict=False`` leaves out."""
+    fid = mesh.halfedge_face
     unused = np.flatnonzero(mesh.valences == 0)
     if unused.size:
         raise MeshError(
@@ -198,26 +308,3 @@ def _diagnose(mesh: Any) -> None:
             f"share more than one edge ({e1} and {e2}); the dual would "
             "have a double edge"
         )
-    ring, _ = mesh.vertex_ring
-    if not np.array_equal(np.sort(ring), np.arange(c.size)):
-        # a vertex whose rotation orbit is shorter than its valence
-        bad_v = multi_fan_vertex(mesh.rotation, c, mesh.valences)
-        raise MeshError(f"vertex {bad_v} is non-manifold: its faces form more than one fan")
-
-
-def _unpaired(tail: np.ndarray, head: np.ndarray, n: int) -> tuple[str, int]:
-    """Why the half-edges do not pair: ``("duplicate", h)``, a directed edge
-    used twice (``h`` one of them), or ``("boundary", h)``, a half-edge
-    without an opposite."""
-    n64 = np.int64(n)
-    lo = np.minimum(tail, head).astype(np.int64)
-    hi = np.maximum(tail, head).astype(np.int64)
-    key = (lo * n64 + hi) * 2 + (tail > head)
-    order = np.argsort(key, kind="stable")
-    skey = key[order]
-    dup = np.flatnonzero(skey[1:] == skey[:-1])
-    if dup.size:
-        return "duplicate", int(order[dup[0]])
-    want = (lo * n64 + hi) * 2 + (tail < head)
-    pos = np.minimum(np.searchsorted(skey, want), skey.size - 1)
-    return "boundary", int(np.flatnonzero(skey[pos] != want)[0])
