@@ -7,24 +7,53 @@ a slider.
 
 The memory guard
 ----------------
-:func:`estimate_bytes` predicts the peak memory of one iteration (a
-remeshing and its duals) from the counts ``(V, E, F)`` of its input and
-what is known of its regularity (every face a k-gon, every vertex
-d-valent), by :data:`MEMORY_MODEL`: linear forms per scheme and number of
-duals, calibrated on numpy's allocations as :mod:`tracemalloc` counts them
-(``benchmarks/calibrate_memory.py`` measures and fits them again).  The
-promise, tested for every scheme on meshes of tens of thousands of
-half-edges (tori, triangle, pentagonal and mixed meshes the forms were not
-fitted on): the measured peak of :func:`subdivide` above its input is at
-most the estimate, and the estimate at most 1.25 times the measured peak.
-Smaller meshes need a few dozen kilobytes of Python objects besides, which
-the estimate's fixed part covers.  With the default limit (half of the
-physical memory) an allowed request therefore leaves at least the other
-half.
+A mesh of counts ``(V, E, F)`` holds :func:`mesh_bytes` of them: 24 bytes
+of float64 positions per vertex, and one index per corner, twin and
+vertex-ring entry (2E each) and per face and vertex offset (4 bytes, 8 when
+the counts need int64 indices: 2**31 corners or vertices).  The peak memory
+of one iteration is bounded by multiples of that, from the predicted counts
+alone:
+
+* the remeshing: ``REMESH[scheme]`` times the bytes of its output;
+* each dual (all read the same two meshes: the remeshing's output and its
+  dual): ``DUAL`` times the bytes of its input and its output together (the
+  mesh it reads is held while it builds the next);
+* an iteration after the first also holds its input, built by the call:
+  plus the bytes of that input;
+* plus ``FIXED`` bytes for a call's Python objects and the operators'
+  block-wise temporaries, which stop growing beyond a few thousand faces;
+* a scheme without its own factor (Conway notation) or a callable:
+  ``UNKNOWN`` times the bytes of the largest mesh of its edge count
+  (vertices and faces at most 2E/3 each).
+
+How the constants were chosen: the peaks of :func:`subdivide` were measured
+once with :mod:`tracemalloc` (numpy's allocations above the input, a fresh
+mesh as the constructor leaves it, after a first run that loads the compiled
+kernels: numba's one-time loading, a few MB per process, is not counted), on
+both the numpy path and the compiled kernels, for every scheme with 0 to 3
+duals and one or two iterations, on tori of quads, triangles and pentagons
+of 200 to 240,000 half-edges, an octahedron after six Loop steps, and
+pentagonal and mixed meshes.  ``REMESH[s]`` is the largest peak without
+duals over the bytes of the output, on meshes of at least 16,384
+half-edges, plus 10 % and rounded up to a tenth; ``DUAL`` likewise the
+largest peak with duals over the bytes of a dual's input and output;
+``FIXED`` is twice the largest shortfall left on the smaller meshes (64
+kB); ``UNKNOWN`` is above every Conway operator and a few strings ("dg",
+"tk", ...) measured the same way (3.5 at most).  On meshes of at least
+16,384 half-edges the estimate is 1.1 to 2.6 times the measured peak (the
+looser end: meshes whose duals are cheap, the factor serving the costliest;
+tested below 3x in ``tests/test_scale.py``).  With int64 indices the index
+bytes double, and the temporaries (mostly indices) are taken to grow in
+proportion.  ``triangulate`` hands an all-triangle mesh back
+as it is (the predicted counts are the input's): its remeshing is then
+counted as free, but its duals, cheaper on such meshes than the factor
+allows for, make the estimate 2.5 to 5.5 times their measured peak.
 
 A request is checked iteration by iteration, from the first, and refused at
-the first iteration whose estimate is over the limit, before anything is
-built: the check takes microseconds whatever the number of iterations.
+the first iteration whose estimate is over the limit (or at a fixed point
+of the counts, let through), before anything is built: microseconds
+whatever the number of iterations.  The default limit is the memory this
+process may still take (:func:`default_max_bytes`).
 """
 
 from __future__ import annotations
@@ -33,6 +62,7 @@ import math
 import os
 import sys
 from collections.abc import Callable, Sequence
+from pathlib import Path
 
 import numpy as np
 
@@ -46,9 +76,9 @@ __all__ = [
     "predict_counts",
     "max_iterations",
     "estimate_bytes",
+    "mesh_bytes",
     "default_max_bytes",
     "MAX_STEPS",
-    "MEMORY_MODEL",
     "SCHEMES",
     "Scheme",
     "get_scheme",
@@ -63,144 +93,69 @@ MAX_STEPS = 100_000
 #: (2**62: the index arithmetic of 64-bit integers ends about there).
 _ABSOLUTE = 2**62
 
-Form = tuple[float, ...]
-
-#: Bytes every estimate starts from: the Python objects of a call (a few
-#: dozen kilobytes), negligible beside the arrays of any mesh worth guarding.
-_FIXED = 64 * 1024
-
-#: Room left above the fitted forms, for meshes unlike those of the calibration.
-_MARGIN = 1.02
-
-#: Half-edges beyond which the operators' block-wise temporaries stop growing.
-_SATURATION = 2**15
-
-#: What is known of a mesh's regularity: (k, d) with k the size of every
-#: face (0: sizes differ, or not known) and d the number of edges at every
-#: vertex (0 likewise).  Code paths for meshes of one face size need less
-#: memory; the model knows it through :func:`regressors`.
-Kind = tuple[int, int]
-
-#: The kind of each scheme's output, from its input's.
-_AFTER: dict[str, Callable[[int, int], Kind]] = {
-    "pentagonalize": lambda k, d: (5, 3 if (k, d) == (3, 3) else 0),
-    "preserve_pentagons": lambda k, d: (5 if k == 5 else 0, 0),
-    "triangulate": lambda k, d: (3, d) if k == 3 else (3, 0),
-    "loop_remesh": lambda k, d: (3 if k == 3 else 0, 6 if d == 6 else 0),
-    "sqrt3_remesh": lambda k, d: (3, d if d and d == 2 * k else 0),
-    "vertex_insertion": lambda k, d: (4, 4 if (k, d) == (4, 4) else 0),
-    "corner_cutting": lambda k, d: (4 if (k, d) == (4, 4) else 0, 4),
-    "preserve_hexagons": lambda k, d: (6 if k == 6 else 0, 3 if d == 3 else 0),
-    "honeycomb": lambda k, d: (k if k and k == 2 * d else 0, 3),
+#: Peak of a remeshing per byte of its output (:func:`mesh_bytes`); see the
+#: module's docstring for how these were measured.
+REMESH: dict[str, float] = {
+    "pentagonalize": 1.2,
+    "preserve_pentagons": 1.1,
+    "triangulate": 1.5,
+    "loop_remesh": 1.4,
+    "sqrt3_remesh": 1.2,
+    "vertex_insertion": 1.4,
+    "corner_cutting": 1.5,
+    "preserve_hexagons": 1.9,
+    "honeycomb": 1.6,
 }
 
+#: Peak of a dual per byte of its input and output together.
+DUAL = 1.7
 
-def _kind_after(s: Scheme, kind: Kind, duals: int) -> Kind:
-    """The kind of the mesh after one iteration (the duals swap faces and vertices)."""
-    if s.name not in _AFTER:  # a Conway string: its kind is not tracked
-        return (0, 0)
-    k, d = _AFTER[s.name](*kind)
-    return (d, k) if duals % 2 else (k, d)
+#: Peak of one iteration of a scheme without its own factor (Conway
+#: notation, callables) per byte of the largest mesh of its edge count.
+UNKNOWN = 4.0
 
-
-def _kind_of(mesh: Mesh) -> Kind:
-    valences = mesh.valences
-    top = int(valences.max()) if valences.size else 0
-    return mesh._uniform_size, top if valences.size and int(valences.min()) == top else 0
+#: Bytes every estimate adds: a call's Python objects and block-wise temporaries.
+FIXED = 128 * 1024
 
 
-def regressors(counts: Counts, scheme: str | Scheme | None = None, kind: Kind = (0, 0)) -> tuple:
-    """What :data:`MEMORY_MODEL`'s forms are linear in, for an input of ``counts``.
-
-    ``(V, E, F, min(2E, 2**15), 2E [input faces of several sizes],
-    2E [output faces of several sizes], 2E [output vertices of several
-    valences])``: the counts; the operators' temporaries, computed in
-    blocks (they grow with the mesh up to a block's size, then stay); and
-    the extra arrays (next, head, face of every half-edge) that meshes with
-    faces of several sizes need.  ``kind`` is the input's (see
-    :data:`Kind`); unknown, it is taken as irregular (an upper bound).
-    """
-    V, E, F = counts
-    H = 2 * E
-    k_out, d_out = (0, 0)
-    if scheme is not None:
-        k_out, d_out = _AFTER[get_scheme(scheme).name](*kind)  # type: ignore[union-attr]
-    return (
-        V,
-        E,
-        F,
-        min(H, _SATURATION),
-        H if not kind[0] else 0,
-        H if not k_out else 0,
-        H if not d_out else 0,
-    )
+def mesh_bytes(V: float, E: float, F: float) -> int:
+    """What a mesh of these counts holds: positions, corners, twins, vertex rings, offsets."""
+    return math.ceil(24 * V + _itemsize(V, 2 * E) * (3 * 2 * E + F + V + 2))
 
 
-#: Peak memory per scheme and number of duals (0, 1, or 2 and more):
-#: ``(step, hold)``, two linear forms in :func:`regressors` of the counts of
-#: the input of an iteration.  ``step``: the peak of the iteration above its
-#: input (a mesh as the constructor leaves it: twins and vertex rings
-#: derived).  ``hold``: what an input built by the earlier iterations of the
-#: same call adds (one term, in its edges; negative when such an input,
-#: having derived arrays already, costs less than a fresh one).  Measured
-#: with int32 indices; twice the whole when meshes need int64 (more than
-#: 2**31 corners).  Calibrated by ``benchmarks/calibrate_memory.py``.
-MEMORY_MODEL: dict[str, dict[int, tuple[Form, Form]]] = {
-    "pentagonalize": {
-        0: ((0.0, 158.1, 32.0, 19.4, 0.0, 0.0, 0.0), (0.0, 20.5, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: ((0.0, 281.3, 48.3, 8.9, 0.0, 0.0, 0.0), (0.0, -24.9, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: ((0.0, 363.4, 54.1, 13.6, 0.0, 0.0, 0.0), (0.0, -31.2, 0.0, 0.0, 0.0, 0.0, 0.0)),
-    },
-    "preserve_pentagons": {
-        0: ((201.4, 0.0, 189.3, 20.4, 0.0, 0.0, 0.0), (0.0, 32.9, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: ((0.0, 362.0, 88.8, 12.8, 0.0, 7.3, 0.0), (0.0, 19.2, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: ((0.0, 439.2, 70.8, 19.9, 0.0, 16.3, 0.0), (0.0, 36.5, 0.0, 0.0, 0.0, 0.0, 0.0)),
-    },
-    "triangulate": {
-        0: ((0.0, 67.2, 175.5, 0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: ((0.0, 171.8, 157.1, 7.9, 0.0, 0.0, 0.0), (0.0, 8.5, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: ((0.0, 229.9, 115.6, 7.9, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
-    },
-    "loop_remesh": {
-        0: ((0.0, 43.2, 134.3, 19.4, 0.0, 15.0, 0.0), (0.0, 22.1, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: ((0.0, 139.3, 190.9, 11.3, 0.0, 39.7, 0.0), (0.0, 46.5, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: ((196.8, 0.0, 356.2, 12.3, 0.0, 34.6, 0.0), (0.0, 20.2, 0.0, 0.0, 0.0, 0.0, 0.0)),
-    },
-    "sqrt3_remesh": {
-        0: ((72.1, 0.0, 102.5, 7.1, 0.0, 0.0, 0.0), (0.0, 33.6, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: ((0.0, 285.6, 84.5, 0.0, 0.0, 0.0, 0.0), (0.0, 28.6, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: ((0.0, 285.6, 84.5, 0.0, 0.0, 0.0, 0.0), (0.0, 11.7, 0.0, 0.0, 0.0, 0.0, 0.0)),
-    },
-    "vertex_insertion": {
-        0: ((0.0, 115.1, 93.8, 17.6, 0.0, 0.0, 0.0), (0.0, 31.3, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: ((0.0, 253.5, 138.0, 1.8, 0.0, 0.0, 0.0), (0.0, 18.1, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: ((278.7, 0.0, 394.2, 16.4, 0.0, 0.0, 0.8), (0.0, 17.9, 0.0, 0.0, 0.0, 0.0, 0.0)),
-    },
-    "corner_cutting": {
-        0: ((0.0, 158.1, 92.8, 1.4, 0.0, 0.0, 0.0), (0.0, 46.9, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: ((221.9, 0.0, 336.3, 16.0, 0.0, 17.7, 0.0), (0.0, 15.7, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: ((276.6, 0.0, 391.0, 9.9, 0.0, 10.0, 0.0), (0.0, 17.2, 0.0, 0.0, 0.0, 0.0, 0.0)),
-    },
-    "preserve_hexagons": {
-        0: ((0.0, 237.9, 54.3, 1.5, 0.0, 0.0, 5.8), (0.0, 42.6, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: ((0.0, 247.2, 90.7, 13.0, 0.0, 0.0, 9.5), (0.0, 57.1, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: ((0.0, 304.3, 68.8, 15.0, 0.0, 0.0, 17.4), (0.0, 24.5, 0.0, 0.0, 0.0, 0.0, 0.0)),
-    },
-    "honeycomb": {
-        0: ((0.0, 135.3, 94.8, 1.4, 0.0, 0.0, 0.0), (0.0, 61.8, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: ((0.0, 209.5, 128.7, 0.0, 0.0, 0.0, 0.0), (0.0, 103.1, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: ((0.0, 221.1, 117.9, 10.3, 0.0, 0.0, 0.0), (0.0, 28.3, 0.0, 0.0, 0.0, 0.0, 0.0)),
-    },
-    "triangulate (triangles)": {
-        0: ((0.0, 3.2, 0.0, 0.0, 0.0, 0.0, 0.0), (0.0, 42.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        1: ((29.3, 0.0, 25.4, 6.1, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
-        2: ((108.7, 0.0, 0.0, 9.3, 0.0, 0.0, 0.0), (0.0, 47.2, 0.0, 0.0, 0.0, 0.0, 0.0)),
-    },
-}
+def _itemsize(V: float, H: float) -> int:
+    """Bytes of an index: int32 while the counts allow, int64 beyond."""
+    return 4 if max(V, H) < 2**31 else 8
+
+
+def _largest_mesh_bytes(E: float) -> int:
+    """The most a mesh of ``E`` edges holds: no vertex of fewer than 3 edges and no
+    face of fewer than 3 sides leave at most 2E/3 vertices and 2E/3 faces."""
+    return mesh_bytes(2 * E / 3, E, 2 * E / 3)
+
+
+def _iteration_bytes(s: Scheme, counts: Counts, duals: int, later: bool) -> int:
+    """Peak bytes of one iteration on a mesh of ``counts`` (``later``: built by this call)."""
+    V2, E2, F2 = s.counts(*counts)
+    held = mesh_bytes(*counts) if later else 0
+    if s.name not in REMESH:  # Conway notation: several operators, not measured one by one
+        return math.ceil(FIXED + held + UNKNOWN * _largest_mesh_bytes(max(E2, counts[1])))
+    out = mesh_bytes(V2, E2, F2)
+    # the same counts: the mesh is handed back as it is (triangulate, all triangles)
+    need = 0.0 if (V2, E2, F2) == tuple(counts) else REMESH[s.name] * out
+    if duals:
+        need = max(need, DUAL * (out + mesh_bytes(F2, E2, V2)))
+    return math.ceil(FIXED + held + need)
+
+
+def _next_counts(s: Scheme, counts: Counts, duals: int) -> Counts:
+    """The counts after one iteration (an odd number of duals swaps V and F)."""
+    V, E, F = s.counts(*counts)
+    return (F, E, V) if duals % 2 else (V, E, F)
 
 
 def predict_counts(
-    counts: Counts,
+    mesh_or_counts: Mesh | Counts,
     scheme: str | Scheme,
     iterations: int = 1,
     duals: int = 2,
@@ -211,11 +166,11 @@ def predict_counts(
 
     Parameters
     ----------
-    counts : (V, E, F)
+    mesh_or_counts : Mesh or (V, E, F)
     scheme, iterations, duals : as for :func:`subdivide`
     max_bytes : float, optional
         As for :func:`subdivide`: a request that would not fit is refused
-        (default: half of the physical memory; ``float("inf")``: no limit).
+        (default: :func:`default_max_bytes`; ``float("inf")``: no limit).
 
     Returns
     -------
@@ -232,10 +187,10 @@ def predict_counts(
         A scheme that is not registered, a bad count, more than
         :data:`MAX_STEPS` steps.
     """
+    counts = _counts_of(mesh_or_counts, "predict_counts")
     s = get_scheme(scheme)
     if not isinstance(s, Scheme):
         raise ValueError("counts can only be predicted for a registered scheme")
-    counts = _as_counts(counts, "predict_counts")
     iterations = check_count(iterations, "iterations")
     duals = check_count(duals, "duals")
     _guard(counts, s, iterations, duals, _limit(max_bytes))
@@ -276,42 +231,35 @@ def max_iterations(
         Never more than this many iterations (any size: the answer comes
         in microseconds).
     max_bytes : float, optional
-        Also within this memory (as for :func:`subdivide`; default: half of
-        the physical memory).
+        Also within this memory (as for :func:`subdivide`; default:
+        :func:`default_max_bytes`).
 
     Returns
     -------
     int
         0 when even one iteration would be too large.
     """
-    counts = (
-        _vef(mesh_or_counts)
-        if isinstance(mesh_or_counts, Mesh)
-        else _as_counts(mesh_or_counts, "max_iterations")
-    )
+    counts = _counts_of(mesh_or_counts, "max_iterations")
     s = get_scheme(scheme)
     if not isinstance(s, Scheme):
         raise ValueError("max_iterations needs a registered scheme")
     duals = check_count(duals, "duals")
     cap = check_count(cap, "cap")
     limit = _limit(max_bytes)
-    V, E, F = counts
-    kind = _kind_of(mesh_or_counts) if isinstance(mesh_or_counts, Mesh) else (0, 0)
     for k in range(cap):
-        need = _iteration_bytes(s, (V, E, F), duals, later=k > 0, kind=kind)
-        V2, E2, F2 = s.counts(V, E, F)
+        V2, _, F2 = s.counts(*counts)
         biggest = max(F2, V2) if duals else F2
-        if biggest > max_faces or need > limit:
+        if biggest > max_faces or _iteration_bytes(s, counts, duals, later=k > 0) > limit:
             return k
-        after = ((F2, E2, V2) if duals % 2 else (V2, E2, F2)), _kind_after(s, kind, duals)
-        if after == ((V, E, F), kind) and k > 0:
+        after = _next_counts(s, counts, duals)
+        if after == counts and k > 0:
             return cap  # a fixed point: every later iteration is the same
-        (V, E, F), kind = after
+        counts = after
     return cap
 
 
-def _as_counts(counts: object, caller: str) -> Counts:
-    """``(V, E, F)`` from a tuple, list or array of three non-negative integers.
+def _counts_of(mesh_or_counts: object, caller: str) -> Counts:
+    """``(V, E, F)`` of a Mesh, or from a tuple, list or array of three non-negative integers.
 
     Raises
     ------
@@ -320,9 +268,13 @@ def _as_counts(counts: object, caller: str) -> Counts:
     ValueError
         Not three non-negative integers.
     """
+    if isinstance(mesh_or_counts, Mesh):
+        return _vef(mesh_or_counts)
+    counts = mesh_or_counts
     if isinstance(counts, (str, bytes)) or not isinstance(counts, (Sequence, np.ndarray)):
-        what = "a pentanb.Mesh or its counts" if caller == "max_iterations" else "counts"
-        raise TypeError(f"{caller} expects {what} (V, E, F), got {type(counts).__name__}")
+        raise TypeError(
+            f"{caller} expects a pentanb.Mesh or its counts (V, E, F), got {type(counts).__name__}"
+        )
     if len(counts) != 3:
         raise ValueError(f"counts must be (V, E, F), three numbers; got {len(counts)}")
     V, E, F = (check_count(x, name) for x, name in zip(counts, "VEF"))
@@ -353,97 +305,31 @@ def _vef(mesh: Mesh) -> Counts:
 
 
 def estimate_bytes(
-    V: int,
-    E: int,
-    F: int,
-    scheme: str | Scheme | None = None,
-    duals: int = 2,
-    *,
-    kind: Kind = (0, 0),
+    mesh_or_counts: Mesh | Counts, scheme: str | Scheme | None = None, duals: int = 2
 ) -> int:
-    """Bytes of memory for a mesh of these counts, or for one iteration on it.
+    """Bytes of memory for a mesh, or for one iteration on it.
 
     Parameters
     ----------
-    V, E, F : int
-        The counts of a mesh.
+    mesh_or_counts : Mesh or (V, E, F)
     scheme : str or Scheme, optional
         With a scheme: the peak memory of one iteration (``scheme``, then
-        ``duals`` duals) on a mesh of these counts, above that mesh
-        (:data:`MEMORY_MODEL`).  Without: what a mesh of these counts holds
-        (positions, faces, twins and vertex rings).
+        ``duals`` duals) on a mesh of these counts, above that mesh.
+        Without: what a mesh of these counts holds (:func:`mesh_bytes`).
     duals : int
         Duals after the remeshing.
-    kind : (k, d)
-        Every face a k-gon, every vertex d-valent, when known (0: not, or
-        not known: the estimate then bounds the irregular case).
 
     Returns
     -------
     int
     """
+    counts = _counts_of(mesh_or_counts, "estimate_bytes")
     if scheme is None:
-        itemsize = _itemsize(V, 2 * E)
-        return 24 * V + itemsize * (3 * 2 * E + F + V + 2)
+        return mesh_bytes(*counts)
     s = get_scheme(scheme)
     if not isinstance(s, Scheme):
         raise ValueError("memory can only be estimated for a registered scheme")
-    return _iteration_bytes(s, (V, E, F), check_count(duals, "duals"), later=False, kind=kind)
-
-
-def _itemsize(V: int, H: int) -> int:
-    return 4 if max(V, H) < 2**31 else 8
-
-
-def _iteration_bytes(
-    s: Scheme, counts: Counts, duals: int, later: bool, kind: Kind = (0, 0)
-) -> int:
-    """Peak bytes of one iteration on a mesh of ``counts`` (``later``: built by this call)."""
-    V, E, F = counts
-    if _model_name(s, counts) not in MEMORY_MODEL:
-        # a scheme written in Conway notation: no calibrated model, so the
-        # callable schemes' bound per output edge (their largest mesh)
-        V2, E2, _ = s.counts(V, E, F)
-        wide = 2 if _itemsize(max(V2, V), 2 * E2) == 8 else 1
-        return math.ceil(_FIXED + wide * CALLABLE_BYTES_PER_EDGE * max(E2, E))
-    step, hold = MEMORY_MODEL[_model_name(s, counts)][min(duals, 2)]
-    x = regressors(counts, s, kind)
-    stepped = sum(a * b for a, b in zip(step, x))
-    need = _FIXED + _MARGIN * stepped
-    if later:  # and the same room again: later inputs vary more
-        need += sum(a * b for a, b in zip(hold, x)) + (_MARGIN - 1) * stepped
-        need = max(need, _FIXED + stepped / 2)
-    V2, E2, _ = s.counts(V, E, F)
-    if _itemsize(max(V2, V), 2 * E2) == 8:
-        need *= 2  # int64 indices: about twice the memory (an upper bound)
-    return math.ceil(need)
-
-
-def _request_bytes(
-    s: Scheme, counts: Counts, iterations: int, duals: int, kind: Kind = (0, 0)
-) -> int:
-    """The peak bytes of a whole request: the largest of its iterations' (no limit)."""
-    need, V, E, F = 0, *counts
-    for i in range(iterations):
-        need = max(need, _iteration_bytes(s, (V, E, F), duals, later=i > 0, kind=kind))
-        V2, E2, F2 = s.counts(V, E, F)
-        after = ((F2, E2, V2) if duals % 2 else (V2, E2, F2)), _kind_after(s, kind, duals)
-        if after == ((V, E, F), kind) and i > 0:
-            break  # a fixed point: every later iteration is the same (as the second)
-        (V, E, F), kind = after
-    return need
-
-
-def _model_name(s: Scheme, counts: Counts) -> str:
-    """The entry of :data:`MEMORY_MODEL` for ``s`` on a mesh of ``counts``.
-
-    ``triangulate`` gives back an all-triangle mesh (2E = 3F) as it is: only
-    its duals cost memory then.
-    """
-    _, E, F = counts
-    if s.name == "triangulate" and 2 * E == 3 * F:
-        return "triangulate (triangles)"
-    return s.name
+    return _iteration_bytes(s, counts, check_count(duals, "duals"), later=False)
 
 
 def _limit(max_bytes: object) -> float:
@@ -459,20 +345,17 @@ def _readable(n: float) -> str:
     return f"{n / 1e3:.3g} kB" if n >= 1e3 else f"{int(n)} bytes"
 
 
-def _guard(
-    counts: Counts, s: Scheme, iterations: int, duals: int, limit: float, kind: Kind = (0, 0)
-) -> None:
+def _guard(counts: Counts, s: Scheme, iterations: int, duals: int, limit: float) -> None:
     """Refuse (MeshError) at the first iteration over ``limit``; then too many steps (ValueError).
 
     Walks the iterations one by one, from the first: stops at the first
     over the limit (or at a fixed point of the counts), so it answers in
     microseconds for any ``iterations``.
     """
-    V, E, F = counts
     for i in range(iterations):
-        need = _iteration_bytes(s, (V, E, F), duals, later=i > 0, kind=kind)
-        V2, E2, F2 = s.counts(V, E, F)
+        need = _iteration_bytes(s, counts, duals, later=i > 0)
         if need > limit or need > _ABSOLUTE:
+            V2, E2, F2 = s.counts(*counts)
             over = (
                 f"over the limit of {limit:,.0f} bytes ({_readable(limit)})"
                 if need > limit
@@ -484,10 +367,10 @@ def _guard(
                 f"needs about {need:,} bytes ({_readable(need)}) at its peak, {over}. "
                 "Lower iterations or raise max_bytes."
             )
-        after = ((F2, E2, V2) if duals % 2 else (V2, E2, F2)), _kind_after(s, kind, duals)
-        if after == ((V, E, F), kind) and i > 0:
+        after = _next_counts(s, counts, duals)
+        if after == counts and i > 0:
             break  # a fixed point: every later iteration is the same (as the second)
-        (V, E, F), kind = after
+        counts = after
     steps = iterations * (1 + duals)
     if steps > MAX_STEPS:
         raise ValueError(
@@ -497,18 +380,86 @@ def _guard(
         )
 
 
-def default_max_bytes() -> int:
+# ---------------------------------------------------------------- the default limit
+#: A cgroup v1 limit at least this large means no limit (the kernel writes
+#: about 2**63 there when none is set).
+_NO_CGROUP_LIMIT = 2**60
+
+
+def default_max_bytes(
+    meminfo: str | os.PathLike = "/proc/meminfo", cgroup: str | os.PathLike = "/sys/fs/cgroup"
+) -> int:
+    """The memory this process may still take: the default ``max_bytes``.
+
+    The smaller of the memory the kernel says is available (``MemAvailable``
+    in ``meminfo``) and the room left under the container's limit (cgroup
+    v2: ``memory.max`` minus ``memory.current`` in ``cgroup``; v1:
+    ``memory.limit_in_bytes`` minus ``memory.usage_in_bytes``, in ``cgroup``
+    or its ``memory`` directory), whichever can be read; where neither can
+    (not Linux), half of the physical memory, or 4 GiB.
+
+    Parameters
+    ----------
+    meminfo, cgroup : path
+        Where to read them (other paths for tests).
+
+    Returns
+    -------
+    int
+        Bytes, at least 0.
+    """
+    found = [x for x in (_meminfo_available(meminfo), _cgroup_room(cgroup)) if x is not None]
+    return max(min(found), 0) if found else _half_physical()
+
+
+def _read(path: str | os.PathLike) -> str | None:
+    """A file's text, or None when it cannot be read."""
+    try:
+        return Path(path).read_text()
+    except (OSError, UnicodeDecodeError):
+        return None
+
+
+def _meminfo_available(path: str | os.PathLike) -> int | None:
+    """Bytes of ``MemAvailable`` in a /proc/meminfo file (in kB there), or None."""
+    for line in (_read(path) or "").splitlines():
+        key, _, value = line.partition(":")
+        if key.strip() == "MemAvailable":
+            fields = value.split()
+            if fields and fields[0].isdigit():
+                unit = 1024 if fields[1:] == ["kB"] else 1
+                return int(fields[0]) * unit
+    return None
+
+
+def _cgroup_room(root: str | os.PathLike) -> int | None:
+    """Bytes left under a cgroup's memory limit, or None (no limit, or none found)."""
+    root = Path(root)
+    pairs = [(root, "memory.max", "memory.current")]  # v2
+    pairs += [
+        (d, "memory.limit_in_bytes", "memory.usage_in_bytes") for d in (root, root / "memory")
+    ]
+    for where, limit_file, usage_file in pairs:
+        text = _read(where / limit_file)
+        if text is None:
+            continue
+        text = text.strip()
+        if not text.isdigit():  # "max": no limit
+            return None
+        limit = int(text)
+        if limit >= _NO_CGROUP_LIMIT:
+            return None
+        usage = (_read(where / usage_file) or "0").strip()
+        return limit - (int(usage) if usage.isdigit() else 0)
+    return None
+
+
+def _half_physical() -> int:
     """Half of this machine's physical memory (4 GiB where it cannot be read)."""
     try:
         return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // 2
-    except (ValueError, OSError, AttributeError):  # pragma: no cover - non-POSIX
+    except (ValueError, OSError, AttributeError):  # non-POSIX
         return 4 << 30
-
-
-#: Bytes per output edge that a user's callable scheme is assumed to need at
-#: the peak of one iteration with its duals: more than any registered scheme
-#: needs (their estimates stay below it, tested), twice with int64 indices.
-CALLABLE_BYTES_PER_EDGE = 160
 
 
 def subdivide(
@@ -528,7 +479,9 @@ def subdivide(
     mesh : Mesh
     scheme : str, Scheme or callable
         A name from :data:`SCHEMES` (``"pentagonalize"``,
-        ``"preserve_pentagons"``, ...) or any ``Mesh -> Mesh`` callable.
+        ``"preserve_pentagons"``, ...), a :class:`Scheme` (e.g.
+        :func:`pentanb.notation.as_scheme` of Conway operators, ``"dg"``) or
+        any ``Mesh -> Mesh`` callable.
     iterations : int, >= 0
         How many times to remesh.
     duals : int, >= 0
@@ -540,7 +493,7 @@ def subdivide(
     max_bytes : float, optional
         Refuse (with :class:`MeshError`) a request whose peak memory would
         be more than this many bytes (:func:`estimate_bytes`); default:
-        half of the physical memory; ``float("inf")``: no limit (still
+        :func:`default_max_bytes`; ``float("inf")``: no limit (still
         refused beyond 2**62 bytes, which no computer indexes).
     **options
         Options of the scheme, e.g. ``scale=0.6`` for ``preserve_pentagons``.
@@ -568,7 +521,7 @@ def subdivide(
     A callable scheme's growth is not known in advance: its first
     iteration runs, and the later ones are predicted from it (each is
     assumed to grow the mesh as the first did, and to need
-    :data:`CALLABLE_BYTES_PER_EDGE` bytes per edge of its output); a request
+    what a scheme without its own factor does, :data:`UNKNOWN`); a request
     over ``max_bytes`` is refused before the second.  Its first iteration is
     refused when its input alone would be over the limit.
     """
@@ -582,13 +535,13 @@ def subdivide(
         if unknown:
             takes = ", ".join(s.options) or "no options"
             raise ValueError(f"scheme {s.name!r} takes {takes}; got {sorted(unknown)}")
-        _guard(_vef(mesh), s, iterations, duals, limit, _kind_of(mesh) if iterations else (0, 0))
+        _guard(_vef(mesh), s, iterations, duals, limit)
     else:
         if iterations * (1 + duals) > MAX_STEPS:
             raise ValueError(
                 f"{iterations * (1 + duals):,} steps; at most {MAX_STEPS:,} are taken in one call"
             )
-        if iterations and estimate_bytes(*_vef(mesh)) > limit:
+        if iterations and mesh_bytes(*_vef(mesh)) > limit:
             raise MeshError(
                 f"the input mesh alone ({mesh.n_faces:,} faces) is over the limit of "
                 f"{limit:,.0f} bytes ({_readable(limit)}); raise max_bytes"
@@ -606,6 +559,7 @@ def subdivide(
                 "(a callable scheme maps a Mesh to a Mesh)"
             )
         mesh = out
+        del out  # so that the duals below free it as soon as they are done with it
         if i == 0 and not isinstance(s, Scheme) and iterations > 1:
             _guard_callable(name, before, _vef(mesh), iterations, duals, limit)
         done += 1
@@ -624,13 +578,15 @@ def _guard_callable(
 ) -> None:
     """After a callable's first iteration: refuse if a later one would be over the limit.
 
-    Each iteration is assumed to multiply the counts as the first did.
+    Each iteration is assumed to multiply the counts as the first did, and
+    to need what a scheme without its own factor needs (:data:`UNKNOWN`).
     """
     growth = [a / b if b else 1.0 for a, b in zip(after, before)]
     V, E, F = (float(x) for x in after)
     for i in range(1, iterations):
+        held = mesh_bytes(V, E, F)
         V, E, F = V * growth[0], E * growth[1], F * growth[2]
-        need = CALLABLE_BYTES_PER_EDGE * E * (2 if max(V, 2 * E) >= 2**31 else 1)
+        need = FIXED + held + UNKNOWN * _largest_mesh_bytes(E)
         if need > limit or need > _ABSOLUTE:
             raise MeshError(
                 f"{name} iteration {i + 1} of {iterations:,} would build a mesh of about "

@@ -496,9 +496,9 @@ def subdivision_matrix(
     if isinstance(s, Scheme):
         steps = predict_counts((mesh.n_vertices, mesh.n_edges, mesh.n_faces), s, iterations, duals)
         if steps:
-            V, E, F = max(steps, key=lambda c: estimate_bytes(*c))
+            V, E, F = max(steps, key=estimate_bytes)
             # the matrix holds about 8 weights of 12 bytes for every vertex of every step
-            need = estimate_bytes(V, E, F) + 96 * V
+            need = estimate_bytes((V, E, F)) + 96 * V
             limit = max_bytes if max_bytes is not None else _default_limit()
             if need > limit:
                 raise MeshError(
