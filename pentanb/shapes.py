@@ -13,6 +13,7 @@ from collections.abc import Callable, Iterable
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .memory import default_max_bytes, mesh_bytes
 from .mesh import Mesh, MeshError
 from .schemes.smoothing import dual
 
@@ -75,20 +76,38 @@ def outward(vertices: ArrayLike, faces: Iterable[ArrayLike]) -> Mesh:
 
 
 def tetrahedron() -> Mesh:
-    """Regular tetrahedron inscribed in the cube [-1, 1]^3 (4 triangles)."""
+    """Regular tetrahedron inscribed in the cube [-1, 1]^3 (4 triangles).
+
+    Returns
+    -------
+    Mesh
+        4 vertices, 6 edges, 4 triangles.
+    """
     v = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], dtype=float)
     return outward(v, [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]])
 
 
 def cube() -> Mesh:
-    """The cube [-1, 1]^3 (6 quads); vertex ``4x + 2y + z`` has coordinates (x, y, z) in {-1, 1}."""
+    """The cube [-1, 1]^3 (6 quads); vertex ``4x + 2y + z`` has coordinates (x, y, z) in {-1, 1}.
+
+    Returns
+    -------
+    Mesh
+        8 vertices, 12 edges, 6 quads.
+    """
     v = np.array(list(itertools.product([-1.0, 1.0], repeat=3)))
     faces = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]
     return outward(v, faces)
 
 
 def octahedron() -> Mesh:
-    """Regular octahedron with vertices at +-1 on the axes (8 triangles)."""
+    """Regular octahedron with vertices at +-1 on the axes (8 triangles).
+
+    Returns
+    -------
+    Mesh
+        6 vertices, 12 edges, 8 triangles.
+    """
     v = np.concatenate([np.eye(3), -np.eye(3)])
     faces = [
         [a + 3 * sa, b + 3 * sb, c + 3 * sc]
@@ -99,7 +118,13 @@ def octahedron() -> Mesh:
 
 
 def icosahedron() -> Mesh:
-    """Regular icosahedron, vertices (0, +-1, +-phi) and cyclic shifts (20 triangles)."""
+    """Regular icosahedron, vertices (0, +-1, +-phi) and cyclic shifts (20 triangles).
+
+    Returns
+    -------
+    Mesh
+        12 vertices, 30 edges, 20 triangles.
+    """
     base = [(0.0, s1, s2 * PHI) for s1 in (-1, 1) for s2 in (-1, 1)]
     v = np.array([np.roll(p, k) for k in range(3) for p in base])
     d = np.linalg.norm(v[:, None] - v[None], axis=2)
@@ -113,7 +138,13 @@ def icosahedron() -> Mesh:
 
 
 def dodecahedron() -> Mesh:
-    """Regular dodecahedron (12 pentagons): the dual of :func:`icosahedron`."""
+    """Regular dodecahedron (12 pentagons): the dual of :func:`icosahedron`.
+
+    Returns
+    -------
+    Mesh
+        20 vertices, 30 edges, 12 pentagons.
+    """
     return dual(icosahedron())
 
 
@@ -128,6 +159,11 @@ def torus(rings: int = 12, sides: int = 8, radius: float = 1.0, tube: float = 0.
         Quads around the tube.
     radius, tube : float
         Distance of the tube's centre from the axis, and the tube's radius.
+
+    Returns
+    -------
+    Mesh
+        ``rings * sides`` vertices and quads, ``2 rings sides`` edges; genus 1.
 
     Notes
     -----
@@ -155,6 +191,15 @@ def hexagonal_torus(
     The dual of a torus grid whose quads are cut by parallel diagonals (every
     vertex of that triangulation is 6-valent); the hexagons' corners are put
     back on the torus at the triangles' parametric centres.
+
+    Parameters
+    ----------
+    rings : int, >= 3
+        Hexagons around the central axis (z).
+    sides : int, >= 3
+        Hexagons around the tube.
+    radius, tube : float
+        Distance of the tube's centre from the axis, and the tube's radius.
 
     Returns
     -------
@@ -195,20 +240,19 @@ def _radii(radius, tube) -> None:
 
 
 def _check_size(what: str, V: int, E: int, F: int, extra: int = 0) -> None:
-    """Refuse (MeshError) a shape whose mesh would need more than half the memory.
+    """Refuse (MeshError) a shape whose mesh would need more than the memory available.
 
-    The bytes are :func:`pentanb.subdivision.estimate_bytes` of its counts
-    (plus ``extra``), the limit :func:`pentanb.subdivision.default_max_bytes`,
+    The bytes are :func:`pentanb.memory.mesh_bytes` of its counts
+    (plus ``extra``), the limit :func:`pentanb.memory.default_max_bytes`,
     as for :func:`pentanb.subdivide`.
     """
-    from .subdivision import default_max_bytes, estimate_bytes
 
     limit = default_max_bytes()
-    need = estimate_bytes(V, E, F) + extra
+    need = mesh_bytes(V, E, F) + extra
     if need > limit:
         raise MeshError(
             f"{what} would build a mesh of {F:,} faces ({V:,} vertices, {E:,} edges) needing "
-            f"about {need:,} bytes, over the limit of {limit:,} bytes (half the physical memory)"
+            f"about {need:,} bytes, over the limit of {limit:,} bytes (the memory available)"
         )
 
 
@@ -237,6 +281,11 @@ def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8, side
         Default: ``torus(rings, sides)``.
     rings, sides : int
         Size of the default base (ignored when ``base`` is given).
+
+    Returns
+    -------
+    Mesh
+        One connected surface of genus ``genus``.
     """
     if isinstance(genus, bool) or not isinstance(genus, (int, np.integer)) or genus < 1:
         raise ValueError(f"genus must be an integer >= 1, got {genus!r}")
@@ -305,7 +354,18 @@ def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8, side
 
 
 def double_torus(rings: int = 8, sides: int = 6) -> Mesh:
-    """Genus 2: two quad tori glued along a face (see :func:`genus_surface`)."""
+    """Genus 2: two quad tori glued along a face (see :func:`genus_surface`).
+
+    Parameters
+    ----------
+    rings, sides : int, >= 3
+        Size of each quad torus (:func:`torus`).
+
+    Returns
+    -------
+    Mesh
+        Quads only, genus 2.
+    """
     return genus_surface(2, torus(rings, sides), rings, sides)
 
 
@@ -313,6 +373,17 @@ def hexagonal_surface(genus: int = 2, rings: int = 8, sides: int = 6) -> Mesh:
     """A mesh of hexagons only with any genus >= 1 (Figure 4B style).
 
     ``genus`` hexagonal tori glued in a chain; see :func:`genus_surface`.
+
+    Parameters
+    ----------
+    genus : int, >= 1
+    rings, sides : int, >= 3
+        Size of each hexagonal torus (:func:`hexagonal_torus`).
+
+    Returns
+    -------
+    Mesh
+        Hexagons only, genus ``genus``.
     """
     return genus_surface(genus, hexagonal_torus(rings, sides), rings, sides)
 
@@ -326,6 +397,13 @@ def voxels(occupied) -> Mesh:
         Which cells are solid.  Cells may touch only face to face (two
         cells sharing just an edge or a corner make a non-manifold surface,
         which is refused with :class:`MeshError`).
+
+    Returns
+    -------
+    Mesh
+        One quad per exposed cell face; the vertices are the cells' corners,
+        at integer coordinates (the cell ``(i, j, k)`` spans ``[i, i + 1] x
+        [j, j + 1] x [k, k + 1]``).
     """
     occ = np.asarray(occupied, dtype=bool)
     if occ.ndim != 3 or not occ.any():
@@ -371,6 +449,11 @@ def hard_edged_cube(inset: float = 0.8) -> Mesh:
     ----------
     inset : float in (0, 1)
         Where the edge loops sit; closer to 1 keeps the edges harder.
+
+    Returns
+    -------
+    Mesh
+        54 quads spanning [-1, 1]^3.
     """
     if isinstance(inset, bool) or not isinstance(inset, (int, float, np.integer, np.floating)):
         raise TypeError(f"inset must be a number in (0, 1), got {type(inset).__name__}")
@@ -416,6 +499,11 @@ def rabbit() -> Mesh:
     built by :mod:`pentanb.data.make_rabbit` (a star-shaped union of
     ellipsoids, triangulated and partly merged into larger faces) and
     shipped as ``pentanb/data/rabbit.obj`` (read here with numpy only).
+
+    Returns
+    -------
+    Mesh
+        172 vertices, 231 faces.
     """
     from importlib import resources
 
@@ -431,6 +519,11 @@ def animal() -> Mesh:
     Genus 0 with hard features: a body, four legs, a head with a snout, two
     long ears and a tail.  Figure 12 used it before :func:`rabbit`; it stays
     as a quads-only shape with hard edges.
+
+    Returns
+    -------
+    Mesh
+        178 quads in [-1, 1]^3.
     """
     occ = np.zeros((11, 5, 10), dtype=bool)
     occ[2:7, 1:4, 2:5] = True  # body
@@ -468,6 +561,16 @@ SHAPES: dict[str, Callable[[], Mesh]] = {
 
 def get(name: str) -> Mesh:
     """Build the shape called ``name`` (see :data:`SHAPES`).
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`SHAPES`, e.g. ``"cube"``.
+
+    Returns
+    -------
+    Mesh
+        A new mesh at every call.
 
     Raises
     ------

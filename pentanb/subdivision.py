@@ -59,16 +59,16 @@ process may still take (:func:`default_max_bytes`).
 from __future__ import annotations
 
 import math
-import os
 import sys
 from collections.abc import Callable, Sequence
-from pathlib import Path
 
 import numpy as np
 
+from .memory import default_max_bytes, mesh_bytes, readable
 from .mesh import Mesh, MeshError
+from .notation import as_scheme as get_scheme
 from .schemes._build import check_count, check_mesh
-from .schemes.registry import SCHEMES, Counts, Scheme, get_scheme
+from .schemes.registry import SCHEMES, Counts, Scheme
 from .schemes.smoothing import dual
 
 __all__ = [
@@ -116,16 +116,6 @@ UNKNOWN = 4.0
 
 #: Bytes every estimate adds: a call's Python objects and block-wise temporaries.
 FIXED = 128 * 1024
-
-
-def mesh_bytes(V: float, E: float, F: float) -> int:
-    """What a mesh of these counts holds: positions, corners, twins, vertex rings, offsets."""
-    return math.ceil(24 * V + _itemsize(V, 2 * E) * (3 * 2 * E + F + V + 2))
-
-
-def _itemsize(V: float, H: float) -> int:
-    """Bytes of an index: int32 while the counts allow, int64 beyond."""
-    return 4 if max(V, H) < 2**31 else 8
 
 
 def _largest_mesh_bytes(E: float) -> int:
@@ -337,14 +327,6 @@ def _limit(max_bytes: object) -> float:
     return float(default_max_bytes()) if max_bytes is None else float(_as_limit(max_bytes))
 
 
-def _readable(n: float) -> str:
-    """Bytes as "3.2 GB" (powers of 1000), for messages."""
-    for unit, size in (("EB", 1e18), ("PB", 1e15), ("TB", 1e12), ("GB", 1e9), ("MB", 1e6)):
-        if n >= size:
-            return f"{n / size:.3g} {unit}"
-    return f"{n / 1e3:.3g} kB" if n >= 1e3 else f"{int(n)} bytes"
-
-
 def _guard(counts: Counts, s: Scheme, iterations: int, duals: int, limit: float) -> None:
     """Refuse (MeshError) at the first iteration over ``limit``; then too many steps (ValueError).
 
@@ -357,14 +339,14 @@ def _guard(counts: Counts, s: Scheme, iterations: int, duals: int, limit: float)
         if need > limit or need > _ABSOLUTE:
             V2, E2, F2 = s.counts(*counts)
             over = (
-                f"over the limit of {limit:,.0f} bytes ({_readable(limit)})"
+                f"over the limit of {limit:,.0f} bytes ({readable(limit)})"
                 if need > limit
-                else f"beyond what any computer can index ({_readable(_ABSOLUTE)})"
+                else f"beyond what any computer can index ({readable(_ABSOLUTE)})"
             )
             raise MeshError(
                 f"{s.name} iteration {i + 1} of {iterations:,} would build a mesh of "
                 f"{F2:,} faces ({V2:,} vertices, {E2:,} edges); with {duals} duals it "
-                f"needs about {need:,} bytes ({_readable(need)}) at its peak, {over}. "
+                f"needs about {need:,} bytes ({readable(need)}) at its peak, {over}. "
                 "Lower iterations or raise max_bytes."
             )
         after = _next_counts(s, counts, duals)
@@ -381,87 +363,6 @@ def _guard(counts: Counts, s: Scheme, iterations: int, duals: int, limit: float)
 
 
 # ---------------------------------------------------------------- the default limit
-#: A cgroup v1 limit at least this large means no limit (the kernel writes
-#: about 2**63 there when none is set).
-_NO_CGROUP_LIMIT = 2**60
-
-
-def default_max_bytes(
-    meminfo: str | os.PathLike = "/proc/meminfo", cgroup: str | os.PathLike = "/sys/fs/cgroup"
-) -> int:
-    """The memory this process may still take: the default ``max_bytes``.
-
-    The smaller of the memory the kernel says is available (``MemAvailable``
-    in ``meminfo``) and the room left under the container's limit (cgroup
-    v2: ``memory.max`` minus ``memory.current`` in ``cgroup``; v1:
-    ``memory.limit_in_bytes`` minus ``memory.usage_in_bytes``, in ``cgroup``
-    or its ``memory`` directory), whichever can be read; where neither can
-    (not Linux), half of the physical memory, or 4 GiB.
-
-    Parameters
-    ----------
-    meminfo, cgroup : path
-        Where to read them (other paths for tests).
-
-    Returns
-    -------
-    int
-        Bytes, at least 0.
-    """
-    found = [x for x in (_meminfo_available(meminfo), _cgroup_room(cgroup)) if x is not None]
-    return max(min(found), 0) if found else _half_physical()
-
-
-def _read(path: str | os.PathLike) -> str | None:
-    """A file's text, or None when it cannot be read."""
-    try:
-        return Path(path).read_text()
-    except (OSError, UnicodeDecodeError):
-        return None
-
-
-def _meminfo_available(path: str | os.PathLike) -> int | None:
-    """Bytes of ``MemAvailable`` in a /proc/meminfo file (in kB there), or None."""
-    for line in (_read(path) or "").splitlines():
-        key, _, value = line.partition(":")
-        if key.strip() == "MemAvailable":
-            fields = value.split()
-            if fields and fields[0].isdigit():
-                unit = 1024 if fields[1:] == ["kB"] else 1
-                return int(fields[0]) * unit
-    return None
-
-
-def _cgroup_room(root: str | os.PathLike) -> int | None:
-    """Bytes left under a cgroup's memory limit, or None (no limit, or none found)."""
-    root = Path(root)
-    pairs = [(root, "memory.max", "memory.current")]  # v2
-    pairs += [
-        (d, "memory.limit_in_bytes", "memory.usage_in_bytes") for d in (root, root / "memory")
-    ]
-    for where, limit_file, usage_file in pairs:
-        text = _read(where / limit_file)
-        if text is None:
-            continue
-        text = text.strip()
-        if not text.isdigit():  # "max": no limit
-            return None
-        limit = int(text)
-        if limit >= _NO_CGROUP_LIMIT:
-            return None
-        usage = (_read(where / usage_file) or "0").strip()
-        return limit - (int(usage) if usage.isdigit() else 0)
-    return None
-
-
-def _half_physical() -> int:
-    """Half of this machine's physical memory (4 GiB where it cannot be read)."""
-    try:
-        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // 2
-    except (ValueError, OSError, AttributeError):  # non-POSIX
-        return 4 << 30
-
-
 def subdivide(
     mesh: Mesh,
     scheme: str | Scheme | Callable = "pentagonalize",
@@ -544,7 +445,7 @@ def subdivide(
         if iterations and mesh_bytes(*_vef(mesh)) > limit:
             raise MeshError(
                 f"the input mesh alone ({mesh.n_faces:,} faces) is over the limit of "
-                f"{limit:,.0f} bytes ({_readable(limit)}); raise max_bytes"
+                f"{limit:,.0f} bytes ({readable(limit)}); raise max_bytes"
             )
     report = _progress_printer if progress is True else progress
     total = iterations * (1 + duals)
@@ -591,8 +492,8 @@ def _guard_callable(
             raise MeshError(
                 f"{name} iteration {i + 1} of {iterations:,} would build a mesh of about "
                 f"{F:,.0f} faces ({V:,.0f} vertices, {E:,.0f} edges), if it grows as its "
-                f"first iteration did; that needs about {need:,.0f} bytes ({_readable(need)}), "
-                f"over the limit of {limit:,.0f} bytes ({_readable(limit)}). Lower iterations "
+                f"first iteration did; that needs about {need:,.0f} bytes ({readable(need)}), "
+                f"over the limit of {limit:,.0f} bytes ({readable(limit)}). Lower iterations "
                 "or raise max_bytes."
             )
         if growth == [1.0, 1.0, 1.0]:

@@ -519,7 +519,7 @@ def test_a_registered_schemes_estimate_is_below_an_unknown_schemes(name):
 
 def test_conway_notation_is_a_scheme_name():
     """Issue 10 item 5: wherever a scheme name is taken, Conway operators are too."""
-    from pentanb.schemes.registry import get_scheme
+    from pentanb.subdivision import get_scheme
 
     s = get_scheme("dg")
     assert s.name == "dg" and s.formula == "(2E, 5E, V+2E+F)"
