@@ -7,25 +7,50 @@ import os
 import sys
 
 import pytest
-from hypothesis import settings
+from hypothesis import HealthCheck, settings
 
 sys.path.insert(0, os.path.dirname(__file__))
 
-# The suite checks the numpy path, pentanb's reference, everywhere (notebook
-# kernels inherit this); tests/test_jit.py switches the optional compiled
-# kernels on and compares them with it.  PENTANB_JIT=1 runs everything compiled.
-os.environ.setdefault("PENTANB_JIT", "0")
+# The suite runs the path users get by default: the compiled kernels when
+# numba is installed (it is in the test extra), else the numpy path.
+# tests/test_jit.py switches between the two explicitly and compares them;
+# PENTANB_JIT=0 runs everything else on the numpy path.
 
+# No property test depends on the machine's speed: hypothesis's deadline (200
+# ms an example) and its too_slow health check are timings, so both are off.
 # Under CI the property tests draw the same examples on every run (a failure
 # there is reproducible, never luck); elsewhere they explore new ones.
-settings.register_profile("ci", derandomize=True, print_blob=True)
-if os.environ.get("CI"):
-    settings.load_profile("ci")
+_UNTIMED = {"deadline": None, "suppress_health_check": [HealthCheck.too_slow]}
+settings.register_profile("untimed", **_UNTIMED)
+settings.register_profile("ci", derandomize=True, print_blob=True, **_UNTIMED)
+settings.load_profile("ci" if os.environ.get("CI") else "untimed")
 
 from helpers import CORPUS_NAMES, OPERATORS, SMALL_NAMES, corpus  # noqa: E402
 
+#: The corpus meshes the fast selection (``-m "not slow"``) runs the corpus-wide
+#: tests on: genus 0 to 2, every face size from 3 to 6, valences 3 to 6, mixed
+#: faces.  The others, each like one of these, are marked slow: the full suite
+#: runs every test on every corpus mesh.
+FAST_CORPUS = (
+    "tetrahedron",
+    "cube",
+    "icosahedron",
+    "dodecahedron",
+    "hexagonal_torus",
+    "small_torus",
+    "double_torus",
+    "cube_split",
+    "pentagonal_pyramid",
+    "merged_icosahedron",
+)
 
-@pytest.fixture(params=CORPUS_NAMES)
+
+@pytest.fixture(
+    params=[
+        name if name in FAST_CORPUS else pytest.param(name, marks=pytest.mark.slow)
+        for name in CORPUS_NAMES
+    ]
+)
 def corpus_name(request) -> str:
     """The name of a corpus mesh (every shape and every mixed mesh)."""
     return request.param
@@ -47,32 +72,3 @@ def small_mesh(request):
 def operator_name(request) -> str:
     """Every registered scheme and ``dual``."""
     return request.param
-
-
-# ------------------------------------------------------------------ pytest-xdist
-#: Files run whole in one worker: the browser tests share one JupyterLab and one
-#: Chromium; these others build expensive module or session fixtures once.
-WHOLE_FILES = ("test_browser.py", "test_figures.py", "test_claims.py", "test_cli.py")
-
-try:
-    from xdist.scheduler import LoadScopeScheduling
-except ImportError:  # pragma: no cover - xdist is in the test extra
-    LoadScopeScheduling = None
-
-if LoadScopeScheduling is not None:
-
-    class _Scheduling(LoadScopeScheduling):
-        """Load balancing test by test, except :data:`WHOLE_FILES` (a file each).
-
-        The browser file is collected first, so one worker starts it at once
-        while the other works through the rest, test by test.  (xdist's
-        ``loadgroup`` would do this with a mark, but its grouping is lost
-        under pytest 9.)
-        """
-
-        def _split_scope(self, nodeid: str) -> str:
-            path = nodeid.split("::", 1)[0]
-            return path if path.endswith(WHOLE_FILES) else nodeid
-
-    def pytest_xdist_make_scheduler(config, log):
-        return _Scheduling(config, log)

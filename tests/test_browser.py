@@ -36,18 +36,23 @@ import browser_support as bs
 import notebook_support as ns
 
 # one JupyterLab and one Chromium: the whole file runs in one pytest-xdist worker
-# (conftest.WHOLE_FILES)
+# (``--dist loadfile`` in pyproject.toml)
 pytestmark = pytest.mark.browser
 
 ROOT = bs.ROOT
 NOTEBOOKS = ns.NOTEBOOKS
 
+# The waits below poll for something the browser or the kernel must do and
+# return as soon as it is done: their limits only end a test that hangs, so
+# they are far above what a busy machine needs (a test never fails for being slow).
 #: Seconds a notebook may take to run its cells, and the sweep.
-RUN_TIMEOUT = 240
+RUN_TIMEOUT = 900
 #: Seconds to wait for a picture to appear or to change.
-DRAW_TIMEOUT = 45
+DRAW_TIMEOUT = 180
 #: seconds to wait for the sweep's stdout once the kernel is idle
-SWEEP_GRACE = 30
+SWEEP_GRACE = 180
+#: Seconds to wait for JupyterLab to start, and for a notebook page to be ready.
+START_TIMEOUT = 600
 
 
 @pytest.fixture(scope="module")
@@ -68,7 +73,9 @@ def artifacts(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def lab(browser):
-    with bs.JupyterLab(NOTEBOOKS, transform=ns.instrumented) as server:
+    with bs.JupyterLab(
+        NOTEBOOKS, transform=ns.instrumented, startup_timeout=START_TIMEOUT
+    ) as server:
         yield server
 
 
@@ -251,11 +258,12 @@ def _movable_slider(cell):
 def test_notebook_runs_and_draws_in_jupyterlab(notebook, browser, lab, artifacts):
     stem = notebook.stem
     page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    page.set_default_timeout(START_TIMEOUT * 1000)  # (playwright's own default: 30 s)
     messages = _listen(page)
     t0 = time.monotonic()
     try:
         page.goto(f"{lab.url}/lab/tree/{notebook.name}?reset")
-        page.wait_for_function(JS_READY, timeout=90_000)
+        page.wait_for_function(JS_READY, timeout=START_TIMEOUT * 1000)
         result = _run(page, last=False, name=notebook.name)
         page.screenshot(path=str(artifacts / f"{stem}-run.png"), full_page=True)
         t_run = time.monotonic() - t0
@@ -349,6 +357,7 @@ def test_offline_html_works_without_network_or_kernel(kind, browser, artifacts, 
     widget = _offline_page(kind)
     path = export_html(widget, tmp_path / f"{kind}.html", offline=True)
     context = browser.new_context(offline=True, viewport={"width": 1000, "height": 1000})
+    context.set_default_timeout(START_TIMEOUT * 1000)  # (playwright's own default: 30 s)
     page = context.new_page()
     requests = []
     page.on("request", lambda r: requests.append(r.url))

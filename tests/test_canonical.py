@@ -103,7 +103,9 @@ def test_canonical_seeds(seed):
     assert np.array_equal(out.corners, m.corners) and np.array_equal(out.offsets, m.offsets)
 
 
-@pytest.mark.parametrize("seed", ["T", "C", "D", "P5", "A4", "Y5"])
+@pytest.mark.parametrize(
+    "seed", ["T", "C", "P5", *(pytest.param(s, marks=pytest.mark.slow) for s in ("D", "A4", "Y5"))]
+)
 @pytest.mark.parametrize("letter", list(OPERATORS))
 def test_canonical_every_operator(letter, seed):
     assert_canonical(conway(letter + seed, canonical=True))
@@ -391,6 +393,7 @@ def test_planarity_of_a_bent_quad():
     assert planarity(m) == pytest.approx(per_face.max() * 2 / edge_lengths(m).mean(), rel=1e-6)
 
 
+@pytest.mark.slow
 def test_planarity_of_the_papers_figures():
     """Issue 10: "after two duals the faces here are not planar (6-15 % of an
     edge length off the best-fit plane on Figures 1B, 9A, 12B)".  Measured:

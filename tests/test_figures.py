@@ -204,6 +204,7 @@ def test_regressed_claim_gives_exit_1(monkeypatch, tmp_path):
     )
 
 
+@pytest.mark.slow
 def test_continuity_table_is_computed_once_per_figures_run(monkeypatch, tmp_path):
     # the two continuity figures and their claims share one table: count its computations
     # (an empty stand-in, so that the run is fast; its claims then regress)
@@ -236,6 +237,7 @@ def test_continuity_table_is_computed_once_per_figures_run(monkeypatch, tmp_path
     ]
 
 
+@pytest.mark.slow
 def test_continuity_figures_draw_the_rows_they_are_given():
     from pentanb.analysis.spectral import continuity_table
 
@@ -383,7 +385,17 @@ def test_panels_and_claims_need_no_matplotlib():
     subprocess.run([sys.executable, "-c", code], check=True)
 
 
-@pytest.mark.parametrize("name", list(figures.FIGURES))
+#: Figures whose claims take seconds to check (studies, the continuity table).
+SLOW_CLAIMS = ("lateral", "convergence", "spectra", "characteristic_maps")
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        pytest.param(name, marks=pytest.mark.slow) if name in SLOW_CLAIMS else name
+        for name in figures.FIGURES
+    ],
+)
 def test_claims_are_as_recorded(name):
     claims = figures.claims(name)
     assert claims, f"{name} checks no claim"

@@ -70,6 +70,7 @@ CASES = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("jit", paths(), ids=lambda j: "compiled" if j else "numpy")
 @pytest.mark.parametrize("name", sorted(CASES))
 def test_bad_arrays_are_a_mesh_error_on_both_paths(name, jit):
@@ -80,6 +81,7 @@ def test_bad_arrays_are_a_mesh_error_on_both_paths(name, jit):
     assert done.stdout.startswith("MeshError:"), done.stdout + done.stderr[-2000:]
 
 
+@pytest.mark.slow
 def test_the_harness_sees_a_crash_and_an_accepted_input():
     crash = run_case("import os, signal; os.kill(os.getpid(), signal.SIGSEGV)", False)
     assert crash.returncode < 0

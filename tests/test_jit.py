@@ -1,21 +1,21 @@
 """The optional compiled kernels (:mod:`pentanb._jit`) against the numpy path, bit for bit.
 
-The rest of the suite runs the numpy path (``tests/conftest.py`` sets
-``PENTANB_JIT=0``); here the kernels are switched on for meshes of every
-size and must give the same arrays, byte for byte.  Without numba these
-tests are skipped, except on CI, where numba is in the test extra and its
-absence fails them.
+The one module that compares the two paths: the rest of the suite runs the
+path users get by default (the kernels, numba being in the test extra, on
+meshes of at least ``MIN_CORNERS`` corners).  Here each test switches
+explicitly between the numpy path and the kernels, switched on for meshes
+of every size, and the two must give the same arrays, byte for byte.
+Without numba these tests are skipped, except on CI, where numba is in the
+test extra and its absence fails them.  The comparisons are marked ``slow``:
+they compile every kernel for every argument type it takes (tens of seconds
+in a fresh checkout, before numba's disk cache holds them).
 """
 
 from __future__ import annotations
 
 import dataclasses
-import os
-import signal
 import sys
 import threading
-import time
-import warnings
 
 import numpy as np
 import pytest
@@ -28,21 +28,12 @@ from pentanb.mesh.geometry import face_means as _face_means
 from pentanb.viz import drawing
 
 
-@pytest.fixture(params=["one thread", "three threads"])
-def compiled(monkeypatch, request):
-    """The kernels, used for meshes of any size for the test's duration.
-
-    Twice: on one thread, and with every kernel's items cut into three
-    parts run by threads at once (whatever this machine's CPUs).
-    """
+@pytest.fixture
+def compiled(monkeypatch):
+    """The kernels, used for meshes of any size for the test's duration."""
     if not _jit.available():
         skip_or_fail("numba is not installed (pip install 'pentanb[jit]')")
     monkeypatch.setattr(_jit, "MIN_CORNERS", 0)
-    if request.param == "one thread":
-        monkeypatch.setattr(_jit, "threads", lambda: 1)
-    else:
-        monkeypatch.setattr(_jit, "threads", lambda: 3)
-        monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
     before = _jit.use_jit(True)
     yield _jit.kernels(0)
     _jit.use_jit(before)
@@ -69,6 +60,7 @@ def fresh(m: pentanb.Mesh) -> pentanb.Mesh:
 # -- the face means ------------------------------------------------------------------
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("d", [1, 3, 5])
 def test_face_means_are_the_numpy_sums_bit_for_bit(corpus_mesh, compiled, d):
     rng = np.random.default_rng(d)
@@ -80,6 +72,7 @@ def test_face_means_are_the_numpy_sums_bit_for_bit(corpus_mesh, compiled, d):
     assert same_bytes(a, b)
 
 
+@pytest.mark.slow
 def test_face_centroids_of_every_scheme_are_the_same_compiled(compiled):
     base = shapes.icosahedron()
     for name in pentanb.SCHEMES:
@@ -88,6 +81,7 @@ def test_face_centroids_of_every_scheme_are_the_same_compiled(compiled):
         assert same_bytes(a, b), name
 
 
+@pytest.mark.slow
 def test_the_kernels_add_in_the_numpy_paths_order(compiled):
     # 1e16 + 1 + 1 is 1e16 left to right but 1e16 + 2 with the ones added first:
     # the expected values are Python's sums in the order each path documents
@@ -107,6 +101,7 @@ def test_the_kernels_add_in_the_numpy_paths_order(compiled):
     assert same_bytes(mixed, _face_means(values, corners, offsets, 0, big))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [9, 12, 16, 17, 30, 128, 129])
 def test_long_faces_are_summed_pairwise_as_numpy_does(compiled, n):
     # a face of n corners: v[c0] + (v[c1] + ... ), the bracket numpy's
@@ -133,6 +128,7 @@ def test_long_faces_are_summed_pairwise_as_numpy_does(compiled, n):
     assert not np.array_equal(b[0], seq / n)
 
 
+@pytest.mark.slow
 def test_faces_of_more_than_129_corners_keep_the_numpy_sums(compiled, monkeypatch):
     m = prism(130)  # numpy's pairwise sum splits 129 or more terms in two halves
 
@@ -163,6 +159,7 @@ def test_small_meshes_never_load_the_kernels(monkeypatch):
 # -- the twins ------------------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_twins_are_the_numpy_twins(corpus_mesh, compiled):
     from pentanb.mesh.halfedge import pair_twins as _pair_twins
 
@@ -175,6 +172,7 @@ def test_twins_are_the_numpy_twins(corpus_mesh, compiled):
     assert same_bytes(a, b)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "faces",
     [
@@ -193,6 +191,7 @@ def test_half_edges_that_do_not_pair_give_none_both_ways(compiled, faces):
     assert a is None and b is None
 
 
+@pytest.mark.slow
 def test_twins_of_indices_out_of_range_are_refused_not_written(compiled):
     from pentanb.mesh.halfedge import pair_twins as _pair_twins
 
@@ -201,6 +200,7 @@ def test_twins_of_indices_out_of_range_are_refused_not_written(compiled):
     assert _pair_twins(tail, None, 4, 3) is None
 
 
+@pytest.mark.slow
 def test_bad_meshes_get_the_same_message_compiled(compiled):
     # the constructor's messages come from the exact checker either way
     bad = [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]]  # one face turned the wrong way
@@ -217,6 +217,7 @@ def test_bad_meshes_get_the_same_message_compiled(compiled):
 # -- the WebGL index arrays ----------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_edge_index_is_the_meshs_edges(corpus_mesh, compiled):
     got = compiled.edge_index(corpus_mesh.corners, corpus_mesh.offsets)
     assert got.dtype == np.uint32
@@ -233,6 +234,7 @@ def same_buffers(a: drawing.Buffers, b: drawing.Buffers) -> None:
             assert x == y, f.name
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("text", ["C", "dgC", "k4P6", "ddgT", "tI", "bbP5", "pD"])
 def test_mesh_buffers_are_the_same_compiled(text, compiled):
     m = pentanb.conway(text)
@@ -240,6 +242,7 @@ def test_mesh_buffers_are_the_same_compiled(text, compiled):
     same_buffers(a, b)
 
 
+@pytest.mark.slow
 def test_mesh_buffers_of_every_scheme_with_duals_are_the_same_compiled(compiled):
     base = shapes.octahedron()
     for name in pentanb.SCHEMES:
@@ -248,6 +251,7 @@ def test_mesh_buffers_of_every_scheme_with_duals_are_the_same_compiled(compiled)
         same_buffers(a, b)
 
 
+@pytest.mark.slow
 def test_buffers_comparison_fails_on_a_moved_vertex_or_another_fan(compiled):
     m = shapes.cube()
     a = drawing.mesh_buffers(m)
@@ -261,6 +265,7 @@ def test_buffers_comparison_fails_on_a_moved_vertex_or_another_fan(compiled):
         same_buffers(a, drawing.mesh_buffers(other))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list(pentanb.SCHEMES))
 def test_subdivision_is_the_same_compiled(compiled, name):
     # positions (edge points, centroids), faces and rings (start_at_max) of
@@ -273,6 +278,7 @@ def test_subdivision_is_the_same_compiled(compiled, name):
     assert same_bytes(a.twin, b.twin)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [5, 12, 129, 130])
 def test_preserved_copies_of_long_faces_are_the_same_compiled(compiled, n):
     # the copies' centres are the faces' means in np.add.reduceat's order
@@ -284,6 +290,7 @@ def test_preserved_copies_of_long_faces_are_the_same_compiled(compiled, n):
     assert same_bytes(a, b)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "op",
     [
@@ -309,6 +316,7 @@ def test_the_points_and_rings_schemes_write_are_the_numpy_ones(corpus_mesh, comp
         assert same_bytes(x, y)
 
 
+@pytest.mark.slow
 def test_start_at_max_is_the_numpy_permutation(compiled):
     from pentanb.schemes._build import start_at_max
 
@@ -331,6 +339,7 @@ def test_start_at_max_is_the_numpy_permutation(compiled):
     assert same_bytes(a, b)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("k", [1, 2, 3])
 def test_edge_points_are_the_numpy_points(compiled, k):
     from pentanb.schemes._build import edge_points
@@ -399,210 +408,21 @@ def test_the_environment_switch_is_read_strictly(monkeypatch):
     assert not _jit.enabled() and _jit.kernels(10**9) is None
 
 
-# -- the threads ---------------------------------------------------------------------
+@pytest.mark.slow
+def test_kernels_run_on_the_calling_thread_over_every_item(compiled):
+    from pentanb import _kernels
 
-
-def test_split_covers_every_item_once_in_parts(monkeypatch):
-    monkeypatch.setattr(_jit, "threads", lambda: 3)
-    monkeypatch.setattr(_jit, "MIN_SPLIT", 10)
-    seen = []
+    calls = []
 
     def kernel(out, lo, hi):
-        seen.append((lo, hi))
+        calls.append((lo, hi, threading.current_thread()))
         out[lo:hi] += 1
 
-    for n, parts in ((0, 1), (9, 1), (25, 2), (31, 3), (1000, 3)):
-        seen.clear()
+    for n in (0, 1, 1000):
+        calls.clear()
         out = np.zeros(n, int)
-        _jit.split(n, kernel, out)
-        assert (out == 1).all() and len(seen) == parts, (n, seen)
-        assert sorted(seen)[0][0] == 0 and sorted(seen)[-1][1] == n
-
-
-def test_pentanb_threads_sets_the_parts(monkeypatch):
-    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
-    for value, parts in (("1", 1), ("3", 3), (" 2 ", 2)):
-        monkeypatch.setenv("PENTANB_THREADS", value)
-        seen: list[tuple[int, int]] = []
-        _jit.split(30, lambda lo, hi, seen=seen: seen.append((lo, hi)))
-        assert len(seen) == parts, value
-    for bad in ("0", "-2", "two", "1.5"):
-        monkeypatch.setenv("PENTANB_THREADS", bad)
-        with pytest.raises(ValueError, match="PENTANB_THREADS must be a positive integer"):
-            _jit.threads()
-    monkeypatch.setenv("PENTANB_THREADS", "100000")  # not 100,000 threads
-    assert _jit.threads() == 64
-    monkeypatch.delenv("PENTANB_THREADS")
-    assert 1 <= _jit.threads() <= 8
-
-
-def test_a_kernel_error_in_a_thread_reaches_the_caller(monkeypatch):
-    monkeypatch.setattr(_jit, "threads", lambda: 2)
-    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
-
-    def kernel(lo, hi):
-        if lo > 0:
-            raise IndexError(f"part {lo}:{hi}")
-
-    with pytest.raises(IndexError, match="part 5:10"):
-        _jit.split(10, kernel)
-
-
-@pytest.mark.parametrize("why", ["interpreter exiting", "no thread can start"])
-def test_parts_no_thread_can_take_run_on_the_calling_thread(monkeypatch, why):
-    monkeypatch.setattr(_jit, "threads", lambda: 3)
-    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
-    if why == "interpreter exiting":  # (what the atexit hook sets)
-        monkeypatch.setitem(_jit._crew, "closed", True)
-    else:
-        monkeypatch.setitem(_jit._crew, "workers", [])
-
-        def refuse(name):
-            raise RuntimeError("can't create new thread at interpreter shutdown")
-
-        monkeypatch.setattr(_jit, "_Worker", refuse)
-    calls: list[str] = []
-    out = np.zeros(10, int)
-
-    def kernel(out, lo, hi):
-        calls.append(threading.current_thread().name)
-        out[lo:hi] += 1
-
-    _jit.split(10, kernel, out)
-    assert (out == 1).all() and calls == [threading.current_thread().name] * 3
-
-
-def test_the_workers_are_started_once_and_reused(monkeypatch):
-    monkeypatch.setattr(_jit, "threads", lambda: 3)
-    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
-    names: set[str] = set()
-
-    def kernel(out, lo, hi):
-        names.add(threading.current_thread().name)
-        out[lo:hi] += 1
-
-    out = np.zeros(30, int)
-    _jit.split(30, kernel, out)
-    before = {t.ident for t in threading.enumerate() if t.name.startswith("pentanb-kernel")}
-    for _ in range(50):
-        _jit.split(30, kernel, out)
-    after = {t.ident for t in threading.enumerate() if t.name.startswith("pentanb-kernel")}
-    assert (out == 51).all()
-    assert after == before and len(before) >= 2  # no thread per call
-    assert {"pentanb-kernel-0", "pentanb-kernel-1"} <= names
-
-
-def test_every_part_ends_before_an_error_reaches_the_caller(monkeypatch):
-    # the calling thread's part raises at once; the worker's part is still
-    # writing: split may only return once nothing writes into the output
-    monkeypatch.setattr(_jit, "threads", lambda: 2)
-    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
-    out = np.zeros(10, int)
-
-    def kernel(out, lo, hi):
-        if lo == 0:
-            raise ValueError("first part")
-        time.sleep(0.2)
-        out[lo:hi] = 1
-
-    with pytest.raises(ValueError, match="first part"):
-        _jit.split(10, kernel, out)
-    assert (out[5:] == 1).all()
-    # and the workers take the next call's parts as before
-    out[:] = 0
-    _jit.split(10, lambda out, lo, hi: out.__setitem__(slice(lo, hi), 2), out)
-    assert (out == 2).all()
-
-
-def test_a_thread_runs_its_own_parts_while_the_workers_are_busy(monkeypatch):
-    # thread A's part holds the worker; a split on this thread meanwhile
-    # must run both its parts itself, at once, not queue behind A's
-    monkeypatch.setattr(_jit, "threads", lambda: 2)
-    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
-    entered, release = threading.Event(), threading.Event()
-
-    def slow(lo, hi):
-        if lo > 0:  # the worker's part
-            entered.set()
-            release.wait(10)
-
-    first = threading.Thread(target=_jit.split, args=(10, slow))
-    first.start()
-    assert entered.wait(10)
-    timer = threading.Timer(3, release.set)  # (a split that queued would wait for it)
-    timer.start()
-    names: list[str] = []
-    second = threading.Thread(  # (a thread, so that a split that deadlocks fails the test)
-        target=_jit.split,
-        args=(10, lambda lo, hi: names.append(threading.current_thread().name)),
-        name="second",
-        daemon=True,
-    )
-    second.start()
-    second.join(10)
-    at_once = not release.is_set()
-    release.set()
-    first.join(10)
-    timer.cancel()
-    assert not second.is_alive() and not first.is_alive()
-    assert names == ["second", "second"] and at_once
-
-
-def test_two_threads_splitting_at_once_both_get_every_part(monkeypatch):
-    # while one thread's parts run on the workers, another thread runs its
-    # own parts itself: both outputs complete, none written twice
-    monkeypatch.setattr(_jit, "threads", lambda: 3)
-    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
-    outs = [np.zeros(3000, int) for _ in range(2)]
-    failures: list[BaseException] = []
-
-    def kernel(out, lo, hi):
-        for i in range(lo, hi):
-            out[i] += 1
-            if i % 500 == 0:
-                time.sleep(0.001)
-
-    def run(out):
-        try:
-            for _ in range(20):
-                _jit.split(out.size, kernel, out)
-        except BaseException as err:
-            failures.append(err)
-
-    threads = [threading.Thread(target=run, args=(out,)) for out in outs]
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join(60)
-    assert not failures and not any(t.is_alive() for t in threads)
-    assert all((out == 20).all() for out in outs)
-
-
-@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
-def test_a_forked_child_gets_its_own_threads(compiled, monkeypatch):
-    # the parent's worker threads do not exist in a forked child: work handed
-    # to them there would wait for ever; the child starts threads of its own
-    monkeypatch.setattr(_jit, "threads", lambda: 2)
-    monkeypatch.setattr(_jit, "MIN_SPLIT", 1)
-    m = shapes.icosahedron()
-    expected = fresh(m).face_centroids
-    with warnings.catch_warnings():  # (Python 3.12 warns on forking a threaded process)
-        warnings.simplefilter("ignore", DeprecationWarning)
-        pid = os.fork()
-    if pid == 0:  # the child: exit 0 only if the kernels ran and agreed
-        code = 1
-        try:
-            code = 0 if same_bytes(fresh(m).face_centroids, expected) else 2
-        finally:
-            os._exit(code)
-    deadline = time.monotonic() + 60
-    while True:
-        done, status = os.waitpid(pid, os.WNOHANG)
-        if done:
-            break
-        if time.monotonic() > deadline:
-            os.kill(pid, signal.SIGKILL)
-            os.waitpid(pid, 0)
-            pytest.fail("the forked child hung on the parent's threads")
-        time.sleep(0.05)
-    assert os.waitstatus_to_exitcode(status) == 0
+        _kernels.split(n, kernel, out)
+        assert calls == [(0, n, threading.current_thread())] and (out == 1).all()
+    before = threading.active_count()
+    pentanb.subdivide(shapes.torus(), "preserve_pentagons", 1, 1)
+    assert threading.active_count() == before  # pentanb starts no thread

@@ -11,6 +11,7 @@ from __future__ import annotations
 import pickle
 
 import numpy as np
+import pytest
 from helpers import (
     OPERATORS,
     check_sealed,
@@ -157,6 +158,7 @@ def test_conversion_schemes_give_their_type(m):
     assert int(np.sum(q.face_sizes != 5)) == int(np.sum(m.face_sizes != 5))
 
 
+@pytest.mark.slow
 @PROPS
 @given(
     closed_meshes(),
@@ -179,6 +181,7 @@ def test_subdivide_random_scheme_sequences(m, steps):
     assert m.volume > 0
 
 
+@pytest.mark.slow
 @PROPS
 @given(closed_meshes(), st.lists(st.sampled_from(list(SCHEMES) + ["dual"]), max_size=3))
 def test_pickled_meshes_equal_and_operate_like_the_originals(m, names):
@@ -227,6 +230,7 @@ def _union_find_labels(faces, n):
     return [find(x) for x in range(n)]
 
 
+@pytest.mark.slow
 @PROPS
 @given(st.lists(closed_meshes(), min_size=1, max_size=4), st.randoms(use_true_random=False))
 def test_components_of_disjoint_unions(parts, rnd):
