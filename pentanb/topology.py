@@ -649,6 +649,16 @@ def limit_face_size(m: int) -> Fraction:
     For ``m = 5`` it is 10/3: the chart's ``(10/3, 5)``, "the dual of
     ``(5, 10/3)``".
 
+    Parameters
+    ----------
+    m : int, >= 3
+        The valence of every vertex.
+
+    Returns
+    -------
+    Fraction
+        ``2m / (m - 2)``.
+
     Raises
     ------
     ValueError
@@ -697,6 +707,13 @@ def face_range(m: int, g: int) -> Range | None:
     The dual of :func:`vertex_range` (swap ``v`` and ``f``, ``n`` and ``m``):
     faces must have 3 or more sides on average.
 
+    Parameters
+    ----------
+    m : int, >= 3
+        The valence of every vertex.
+    g : int, >= 0
+        The genus.
+
     Returns
     -------
     (int, int or float) or None
@@ -718,6 +735,18 @@ def min_faces(m: int, g: int) -> int | None:
     The dual of :func:`min_vertices`: for ``g = 0``, 4 faces for ``m = 3``
     (tetrahedron), 8 for ``m = 4`` (octahedron), 20 for ``m = 5``
     (icosahedron), none for ``m = 6``.
+
+    Parameters
+    ----------
+    m : int, >= 3
+        The valence of every vertex.
+    g : int, >= 0
+        The genus.
+
+    Returns
+    -------
+    int or None
+        The smallest number of faces; None when no such mesh exists.
 
     Raises
     ------

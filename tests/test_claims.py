@@ -430,7 +430,7 @@ def test_claim_eq1_non_integer_fails_on_meshes_larger_than_the_dodecahedron():
 # ====================================================================== lateral artifact
 @pytest.fixture(scope="module")
 def small_lateral():
-    """A small study (3-cell box, two levels) of the schemes the swaps below need."""
+    """A small study (3-cell box, two iterations) of the schemes the swaps below need."""
     return lt.study(2, ("3 cells",), ("vertex_insertion", "honeycomb", "pentagonalize"))
 
 
@@ -494,34 +494,38 @@ UNIFORM_HOLDS = [k for k, v in convergence.RECORDED_UNIFORM.items() if v == HOLD
 UNIFORM_FAILS = [k for k, v in convergence.RECORDED_UNIFORM.items() if v == FAILS]
 
 
+@pytest.mark.slow
 @falsifies(*[f"convergence.crease.{m}.{s}" for m, s in CREASE_HOLDS])
-def test_claim_convergence_crease_fails_on_levels_without_duals(study):
+def test_claim_convergence_crease_fails_on_iterations_without_duals(study):
     # remeshing alone keeps every crease of the input: the angles do not fall
     unsmoothed = {
-        (m, s): cv.subdivision_convergence(cv.STUDY_MESHES[m](), s, levels=3, duals=0)
+        (m, s): cv.subdivision_convergence(cv.STUDY_MESHES[m](), s, iterations=3, duals=0)
         for m, s in CREASE_HOLDS
     }
-    data = dict(study, levels={**study["levels"], **unsmoothed})
+    data = dict(study, iterations={**study["iterations"], **unsmoothed})
     leaves(convergence.claims(data=data), *[f"convergence.crease.{m}.{s}" for m, s in CREASE_HOLDS])
 
 
+@pytest.mark.slow
 @falsifies(*[f"convergence.crease.{m}.{s}" for m, s in CREASE_FAILS])
 def test_claim_convergence_crease_fails_on_the_cube_in_place_of_the_rabbit(study):
-    data = relabel(study, "levels", {k: ("cube", k[1]) for k in CREASE_FAILS})
+    data = relabel(study, "iterations", {k: ("cube", k[1]) for k in CREASE_FAILS})
     leaves(convergence.claims(data=data), *[f"convergence.crease.{m}.{s}" for m, s in CREASE_FAILS])
 
 
+@pytest.mark.slow
 @falsifies(*[f"convergence.uniform.{m}.{s}" for m, s in UNIFORM_HOLDS])
 def test_claim_convergence_uniform_fails_on_the_torus_in_place(study):
-    data = relabel(study, "pairs", {k: ("torus", "preserve_pentagons") for k in UNIFORM_HOLDS})
+    data = relabel(study, "duals", {k: ("torus", "preserve_pentagons") for k in UNIFORM_HOLDS})
     leaves(
         convergence.claims(data=data), *[f"convergence.uniform.{m}.{s}" for m, s in UNIFORM_HOLDS]
     )
 
 
+@pytest.mark.slow
 @falsifies(*[f"convergence.uniform.{m}.{s}" for m, s in UNIFORM_FAILS])
 def test_claim_convergence_uniform_fails_on_the_pentagonalized_cube_in_place(study):
-    data = relabel(study, "pairs", {k: ("cube", "pentagonalize") for k in UNIFORM_FAILS})
+    data = relabel(study, "duals", {k: ("cube", "pentagonalize") for k in UNIFORM_FAILS})
     leaves(
         convergence.claims(data=data), *[f"convergence.uniform.{m}.{s}" for m, s in UNIFORM_FAILS]
     )
@@ -578,6 +582,7 @@ def perturbed(row, weight=1e-3, i=1):
     return dataclasses.replace(row, spectrum=dataclasses.replace(sp, eigenvalues=w))
 
 
+@pytest.mark.slow
 def test_the_detached_table_reads_like_the_full_one():
     pytest.importorskip("scipy")
     full = pentanb.analysis.continuity_table(PAPER_CASES, sizes=[3, 5])
@@ -591,6 +596,7 @@ def test_the_detached_table_reads_like_the_full_one():
     ]
 
 
+@pytest.mark.slow
 @falsifies(
     *[
         skey(p, label, "vertex")
@@ -611,6 +617,7 @@ def test_claim_continuity_of_vertices_fails_on_a_3_valent_vertex_without_duals(t
     )
 
 
+@pytest.mark.slow
 @falsifies("spectra.preserve_pentagons_075.vertices", "spectra.preserve_pentagons_05.vertices")
 def test_claim_spectra_fails_on_a_wrong_weight_in_the_local_matrix(table):
     # one weight of the 5-valent vertex's matrix moved by 1e-3 splits |lambda1| = |lambda2|.
@@ -631,6 +638,7 @@ def test_claim_spectra_fails_on_a_wrong_weight_in_the_local_matrix(table):
         assert still[skey("spectra", label, row.kind)].holds, label
 
 
+@pytest.mark.slow
 @falsifies(
     "spectra.preserve_pentagons_075.faces", "characteristic_maps.preserve_pentagons_075.faces"
 )
@@ -643,6 +651,7 @@ def test_claim_continuity_of_scale_075_faces_fails_on_scale_05_at_triangles(tabl
     )
 
 
+@pytest.mark.slow
 @falsifies("spectra.preserve_pentagons_05.faces", "characteristic_maps.preserve_pentagons_05.faces")
 def test_claim_continuity_of_scale_05_faces_fails_on_scale_075_at_triangles(table):
     # the finding is the triangle alone: with scale 0.75's triangle the claims hold
@@ -654,6 +663,7 @@ def test_claim_continuity_of_scale_05_faces_fails_on_scale_075_at_triangles(tabl
     )
 
 
+@pytest.mark.slow
 @falsifies("characteristic_maps.c1")
 def test_claim_c1_fails_on_a_spline_background_granted_to_the_pentagonal_schemes(
     table, monkeypatch
@@ -668,6 +678,7 @@ def test_claim_c1_fails_on_a_spline_background_granted_to_the_pentagonal_schemes
     )
 
 
+@pytest.mark.slow
 @falsifies("characteristic_maps.c1")
 def test_claim_c1_fails_on_bilinear_subdivision_as_the_control(table, undualled):
     # vertex insertion without duals (bilinear subdivision) is not C1: an analysis
@@ -703,6 +714,7 @@ def report_claims():
     return [c for cl_ in figures.check_all().values() for c in cl_]
 
 
+@pytest.mark.slow
 def test_every_claim_has_a_falsifying_test(report_claims):
     keys = [c.key for c in report_claims]
     assert len(keys) == len(set(keys)), "claim keys must be unique"
@@ -735,6 +747,7 @@ def _letters(text: str) -> str:
     return "".join(ch for ch in text.lower() if ch.isalnum())
 
 
+@pytest.mark.slow
 def test_every_claim_quotes_the_paper_and_is_as_recorded(report_claims):
     for c in report_claims:
         assert c.section and c.quote and c.measured and c.criterion, c.key

@@ -18,7 +18,7 @@ from pentanb.analysis import lateral as lt
 
 
 def test_dual_convergence_shape_and_values():
-    res = cv.dual_convergence(shapes.tetrahedron(), "pentagonalize", pairs=4)
+    res = cv.dual_convergence(shapes.tetrahedron(), "pentagonalize", duals=8)
     assert list(res.steps) == [0, 1, 2, 3, 4]  # 0: the remeshing alone
     assert list(res.faces) == [12] * 5
     # Figure 7: with every pair of duals the dodecahedron gets rounder
@@ -33,13 +33,13 @@ def test_dual_convergence_shape_and_values():
 
 def test_pentagon_preservation_makes_the_tetrahedron_less_round_with_more_duals():
     # the finding behind convergence.uniform.tetrahedron.preserve_pentagons
-    res = cv.dual_convergence(shapes.tetrahedron(), "preserve_pentagons", pairs=6)
+    res = cv.dual_convergence(shapes.tetrahedron(), "preserve_pentagons", duals=12)
     assert res.radius_spread[1] < 0.11 and res.radius_spread[6] > 0.25
     assert res.max_normal_angle[1] < 66 and res.max_normal_angle[6] > 98
 
 
 def test_subdivision_convergence_angles_fall():
-    res = cv.subdivision_convergence(shapes.cube(), "pentagonalize", levels=3)
+    res = cv.subdivision_convergence(shapes.cube(), "pentagonalize", iterations=3)
     assert list(res.faces) == [24, 120, 600]
     assert np.all(np.diff(res.max_normal_angle) < 0)
     assert np.all(np.diff(res.crease_at) < 0) and np.all(np.diff(res.crease_elsewhere) < 0)
@@ -68,18 +68,22 @@ def test_options_reach_the_scheme():
 
 
 def test_bad_counts_are_refused():
-    with pytest.raises(ValueError, match="pairs"):
-        cv.dual_convergence(shapes.cube(), pairs=0)
-    with pytest.raises(ValueError, match="levels"):
-        cv.subdivision_convergence(shapes.cube(), levels=0)
+    with pytest.raises(ValueError, match="duals"):
+        cv.dual_convergence(shapes.cube(), duals=0)
+    with pytest.raises(ValueError, match="even"):
+        cv.dual_convergence(shapes.cube(), duals=3)  # measured in pairs of duals
+    with pytest.raises(TypeError, match="duals"):
+        cv.dual_convergence(shapes.cube(), duals=2.0)
+    with pytest.raises(ValueError, match="iterations"):
+        cv.subdivision_convergence(shapes.cube(), iterations=0)
 
 
 def test_study_covers_both_schemes_on_every_mesh():
     data = cv.study()
     keys = {(m, s) for m in cv.STUDY_MESHES for s in cv.STUDY_SCHEMES}
-    assert set(data["pairs"]) == keys and set(data["levels"]) == keys
+    assert set(data["duals"]) == keys and set(data["iterations"]) == keys
     assert cv.STUDY_MESHES["rabbit"] is shapes.rabbit
-    for (m, _), res in data["levels"].items():
+    for (m, _), res in data["iterations"].items():
         assert len(res.steps) == (3 if m == "rabbit" else 4)
 
 
@@ -99,7 +103,7 @@ def test_lateral_wave_has_the_grid_period_on_every_edge():
     data = lt.study(2, ("6 cells",), ("pentagonalize",))
     amp = data.amplitude["6 cells", "pentagonalize"]
     assert np.ptp(amp, axis=1).max() < 1e-12  # the same on all 12 edges (the cube's symmetry)
-    x, r = data.profile["6 cells", "pentagonalize"]  # level 2 (at level 1: half a cell)
+    x, r = data.profile["6 cells", "pentagonalize"]  # iteration 2 (at 1: half a cell)
     assert lt.wavelength(x, r) == pytest.approx(2 / 6, rel=0.02)
 
 
@@ -114,5 +118,5 @@ def test_lateral_study_refuses_unknown_names():
         lt.study(1, ("7 cells",))
     with pytest.raises(ValueError, match="unknown scheme"):
         lt.study(1, ("3 cells",), ("gyro",))
-    with pytest.raises(ValueError, match="levels"):
+    with pytest.raises(ValueError, match="iterations"):
         lt.study(0)

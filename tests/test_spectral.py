@@ -8,7 +8,7 @@ Validation against what can be trusted without this code:
   DeRose 1993; Stam 1998), which vertex insertion + 2 duals shares (its
   edge and face rules are Catmull-Clark's; Warren and Weimer 2001, 7.2);
 * the 1-ring contraction measured with :func:`pentanb.subdivide` alone over
-  six levels, which must match ``|lambda1|`` to 1 %.
+  six iterations, which must match ``|lambda1|`` to 1 %.
 
 Every verdict is also shown failing: on a scheme where it does fail
 (pentagon preservation at scale 0.5 around triangles, sqrt(3) at
@@ -88,7 +88,7 @@ def test_vertex_insertion_has_catmull_clarks_blocks(k):
     ],
 )
 def test_measured_contraction_matches_lambda1(scheme, k, about):
-    ratios, limit = ring_contraction(scheme, "vertex", k, levels=6)
+    ratios, limit = ring_contraction(scheme, "vertex", k, iterations=6)
     sp = local_spectrum(scheme, "vertex", k)
     assert len(ratios) == 6
     assert abs(limit / sp.moduli[1] - 1) < 0.01
@@ -96,7 +96,7 @@ def test_measured_contraction_matches_lambda1(scheme, k, about):
 
 
 def test_measured_contraction_of_a_face():
-    _, limit = ring_contraction("preserve_pentagons", "face", 5, levels=5)
+    _, limit = ring_contraction("preserve_pentagons", "face", 5, iterations=5)
     sp = local_spectrum("preserve_pentagons", "face", 5)
     assert abs(limit / sp.moduli[1] - 1) < 0.01
 
@@ -320,8 +320,8 @@ def test_bad_input_is_refused():
         local_spectrum("pentagonalize", "vertex", 4, mesh=shapes.cube(), element=0)
     with pytest.raises(ValueError, match="does not exist"):
         local_spectrum("pentagonalize", "vertex", 3, mesh=shapes.cube(), element=99)
-    with pytest.raises(ValueError, match="levels"):
-        characteristic_map("vertex_insertion", "vertex", 4, levels=-1)
+    with pytest.raises(ValueError, match="iterations"):
+        characteristic_map("vertex_insertion", "vertex", 4, iterations=-1)
 
 
 # ---------------------------------------------------------------------- the table

@@ -431,6 +431,26 @@ def test_explorer_shows_subdivides_memory_error():
     assert "bytes" in e.status.value and "faces" in e.status.value
 
 
+class FakeClock:
+    """The explorer's clock (:attr:`Explorer.clock`): each reading ``step``
+    seconds after the last, whatever the machine's load (0: time stands still)."""
+
+    def __init__(self, step: float = 0.0):
+        self.now, self.step = 0.0, step
+
+    def __call__(self) -> float:
+        t = self.now
+        self.now += self.step
+        return t
+
+
+def test_the_explorer_measures_its_progress_delay_on_the_real_clock():
+    import time
+
+    assert explorer.Explorer.clock is time.perf_counter
+    assert pentanb.explore("cube", iterations=0).clock is time.perf_counter
+
+
 def test_explorer_drives_the_progress_bar():
     e = pentanb.explore("cube", iterations=0)
     e.PROGRESS_FACES = 0  # every request counts as long: the bar from the start
@@ -442,39 +462,53 @@ def test_explorer_drives_the_progress_bar():
     assert shown == ["visible", "hidden"]
 
 
-def test_a_quick_move_sends_no_progress_but_a_slow_one_does(monkeypatch):
+def test_a_quick_move_sends_no_progress_but_a_slow_one_does():
     e = pentanb.explore("cube", iterations=0)
+    e.clock = clock = FakeClock()  # time stands still: every move is quick
     changes = []
     for label, w in (("steps", e.progress), ("status", e.status)):
         w.observe(lambda c, label=label: changes.append((label, c["new"])), names="value")
     e.progress.layout.observe(lambda c: changes.append(("bar", c["new"])), names="visibility")
-    e.iterations.value = 1  # a few hundred faces, well under PROGRESS_AFTER
+    e.iterations.value = 1  # three steps, no time passes: no message at all
     assert changes == []
     assert e.mesh.n_faces > 6
-    # a move that takes longer than PROGRESS_AFTER shows the bar from then on
-    e.PROGRESS_AFTER = 0.0
+    # a move that takes longer than PROGRESS_AFTER shows the bar from then on:
+    # each step's report comes 0.6 PROGRESS_AFTER after the last, so the
+    # first comes too early and the second shows the bar
+    clock.step = 0.6 * e.PROGRESS_AFTER
     e.iterations.value = 2
-    assert ("bar", "visible") in changes and changes[-1] == ("status", "")
-    assert max(v for k, v in changes if k == "steps") == 3
-    # and a request that builds PROGRESS_FACES faces shows it before the first step
-    e.PROGRESS_AFTER, e.PROGRESS_FACES = 10.0, 1
+    assert changes[:2] == [("bar", "visible"), ("status", "<i>computing...</i>")]
+    assert [v for k, v in changes if k == "steps"] == [2, 3]  # (not 0 or 1)
+    assert changes[-2:] == [("bar", "hidden"), ("status", "")]
+    # a step reported just before the delay passes sends nothing
+    clock.step = 0.3 * e.PROGRESS_AFTER  # reports at 0.3, 0.6, 0.9 of the delay
     changes.clear()
     e.iterations.value = 3
+    assert changes == []
+    # and a request that builds PROGRESS_FACES faces shows it before the first step
+    clock.step = 0.0
+    e.PROGRESS_FACES = 1
+    e.iterations.value = 4
     assert changes[:3] == [("steps", 0), ("bar", "visible"), ("status", "<i>computing...</i>")]
+    assert [v for k, v in changes if k == "steps"] == [0, 1, 2, 3]
 
 
+@pytest.mark.slow  # (the compiled kernels' first use in a process)
 def test_a_slider_move_of_a_hundred_thousand_faces_sends_no_progress():
     # pentagon preservation of 16,384 quads: 114,688 faces at its first
-    # dual, some ten milliseconds of work: no bar, no status message
+    # dual, some ten milliseconds of work: under PROGRESS_FACES, so no bar
+    # and no status message (time stands still: the delay is tested above)
     e = pentanb.explore(
         shapes.torus(128, 128), "preserve_pentagons", iterations=0, max_faces=200_000
     )
+    e.clock = FakeClock()
     changes = []
     for w in (e.progress, e.status):
         w.observe(lambda c: changes.append(c["new"]), names="value")
     e.progress.layout.observe(lambda c: changes.append(c["new"]), names="visibility")
     e.iterations.value = 1
     assert max(F for _, (_, _, F) in e._largest_steps(e._base(e.shape.value), 1)) == 114_688
+    assert 114_688 < e.PROGRESS_FACES
     assert e.mesh.n_faces == 16_384 + 4 * 16_384 and changes == []
 
 
@@ -529,8 +563,16 @@ def test_explore_refuses_what_its_controls_cannot_show(kwargs, error, message):
         (lambda e: e.mesh_at(-1), ValueError, r"iterations must be an integer in \[0, 5\], got -1"),
         (lambda e: e.mesh_at(6), ValueError, r"iterations must be an integer in \[0, 5\], got 6"),
         (lambda e: e.mesh_at(1.0), TypeError, r"iterations must be an integer in \[0, 5\]"),
-        (lambda e: e.static_copy(levels=-1), ValueError, r"levels must be an integer in \[0, 5\]"),
-        (lambda e: e.static_copy(levels="1"), TypeError, r"levels must be an integer in \[0, 5\]"),
+        (
+            lambda e: e.static_copy(iterations=-1),
+            ValueError,
+            r"iterations must be an integer in \[0, 5\]",
+        ),
+        (
+            lambda e: e.static_copy(iterations="1"),
+            TypeError,
+            r"iterations must be an integer in \[0, 5\]",
+        ),
     ],
     ids=["mesh_at(-1)", "mesh_at(6)", "mesh_at(1.0)", "static_copy(-1)", "static_copy('1')"],
 )

@@ -4,15 +4,15 @@ Section 7: "we have visually confirmed that the algorithms converge with G1
 continuity".  Two studies turn that into numbers, with the measures of
 :mod:`pentanb.analysis.measures`:
 
-* :func:`dual_convergence`: one remeshing, then pairs of duals; after the
-  remeshing and after each pair, how round the mesh is
+* :func:`dual_convergence`: one remeshing, then an even number of duals;
+  after the remeshing and after every pair of duals, how round the mesh is
   (:func:`~pentanb.analysis.measures.radius_spread`), how uniform (the
   spreads of its edge lengths and face angles) and how sharp its sharpest
   crease is (the largest of :func:`~pentanb.analysis.measures.normal_angles`).
   Section 5.1 says of Figure 7 that the shape "becomes more and more uniform
   with each application of dual operation".
-* :func:`subdivision_convergence`: the same after every subdivision level
-  (one remeshing and two duals), with the largest crease angle measured
+* :func:`subdivision_convergence`: the same after every iteration (one
+  remeshing and two duals), with the largest crease angle measured
   separately at the extraordinary vertices and elsewhere.  On a G1
   (tangent-continuous) limit surface the largest crease angle must fall
   towards 0 as the mesh refines; a falling angle is necessary for G1, not a
@@ -62,9 +62,9 @@ class Convergence:
     ----------
     scheme : str
     steps : (k,) int
-        0, 1, 2, ...: pairs of duals after the remeshing (:func:`dual_convergence`;
-        0 is the remeshing alone) or 1, 2, ...: subdivision levels
-        (:func:`subdivision_convergence`).
+        0, 1, 2, ...: pairs of duals done after the remeshing
+        (:func:`dual_convergence`; 0 is the remeshing alone) or 1, 2, ...:
+        iterations (:func:`subdivision_convergence`).
     faces : (k,) int
         Number of faces after each step.
     radius_spread : (k,) float
@@ -147,26 +147,40 @@ def _name(scheme) -> str:
     return getattr(s, "name", getattr(s, "__name__", str(scheme)))
 
 
-def dual_convergence(mesh: Mesh, scheme="pentagonalize", pairs: int = 6, **options) -> Convergence:
-    """Remesh once, then apply ``pairs`` pairs of duals, measuring after the remeshing
-    and after each pair.
+def dual_convergence(mesh: Mesh, scheme="pentagonalize", duals: int = 12, **options) -> Convergence:
+    """Remesh once, then apply ``duals`` duals, measuring after the remeshing and after
+    every second dual.
 
     Parameters
     ----------
     mesh : Mesh
     scheme : str, Scheme or callable
         As for :func:`pentanb.subdivide`.
-    pairs : int, >= 1
+    duals : int, even, >= 2
+        Number of dual operations after the remeshing; they are measured in
+        pairs (the dual of a dual is a mesh of the remeshing's kind again),
+        so the number must be even.
     **options
         Options of the scheme (e.g. ``scale``).
 
     Returns
     -------
     Convergence
-        ``steps`` = 0 .. pairs (0: the remeshing alone).
+        ``steps`` = 0 .. duals / 2: the pairs of duals done (0: the remeshing
+        alone).
+
+    Raises
+    ------
+    TypeError
+        ``duals`` is not an integer.
+    ValueError
+        ``duals`` is odd or < 2.
     """
-    if pairs < 1:
-        raise ValueError(f"pairs must be >= 1, got {pairs}")
+    if isinstance(duals, bool) or not isinstance(duals, (int, np.integer)):
+        raise TypeError(f"duals must be an even integer >= 2, got {duals!r}")
+    if duals < 2 or duals % 2:
+        raise ValueError(f"duals must be an even integer >= 2 (pairs of duals), got {duals}")
+    pairs = int(duals) // 2
     m = subdivide(mesh, scheme, 1, 0, **options)
     out = [m]
     for _ in range(pairs):
@@ -176,28 +190,46 @@ def dual_convergence(mesh: Mesh, scheme="pentagonalize", pairs: int = 6, **optio
 
 
 def subdivision_convergence(
-    mesh: Mesh, scheme="pentagonalize", levels: int = 4, duals: int = 2, **options
+    mesh: Mesh, scheme="pentagonalize", iterations: int = 4, duals: int = 2, **options
 ) -> Convergence:
-    """Subdivide ``levels`` times (remesh + ``duals`` duals), measuring after each level.
+    """Subdivide ``iterations`` times (remesh + ``duals`` duals), measuring after each
+    iteration.
 
     The crease angle is measured at the extraordinary vertices
     (:func:`extraordinary`; meaningful for the paper's two schemes) and elsewhere.
 
+    Parameters
+    ----------
+    mesh : Mesh
+    scheme : str, Scheme or callable
+        As for :func:`pentanb.subdivide`.
+    iterations : int, >= 1
+        Repetitions of the scheme, each followed by ``duals`` duals.
+    duals : int, >= 0
+        Dual operations after every remeshing.
+    **options
+        Options of the scheme (e.g. ``scale``).
+
     Returns
     -------
     Convergence
-        ``steps`` = 1 .. levels.
+        ``steps`` = 1 .. iterations.
+
+    Raises
+    ------
+    ValueError
+        ``iterations`` < 1.
     """
-    if levels < 1:
-        raise ValueError(f"levels must be >= 1, got {levels}")
+    if iterations < 1:
+        raise ValueError(f"iterations must be >= 1, got {iterations}")
     out = []
     m = mesh
-    for _ in range(levels):
+    for _ in range(iterations):
         m = subdivide(m, scheme, 1, duals, **options)
         out.append(m)
     name = _name(scheme)
     source = mesh if name in ("pentagonalize", "preserve_pentagons") and duals % 2 == 0 else None
-    return _measure(out, name, np.arange(1, levels + 1), source)
+    return _measure(out, name, np.arange(1, iterations + 1), source)
 
 
 #: Meshes of the convergence study (name -> builder).
@@ -214,29 +246,36 @@ STUDY_SCHEMES = ("pentagonalize", "preserve_pentagons")
 
 
 @functools.lru_cache(maxsize=4)
-def study(pairs: int = 6, levels: int = 4) -> dict:
+def study(duals: int = 12, iterations: int = 4) -> dict:
     """Both schemes on :data:`STUDY_MESHES`.
+
+    Parameters
+    ----------
+    duals : int, even, >= 2
+        Duals after one remeshing, for :func:`dual_convergence`.
+    iterations : int, >= 1
+        Iterations (remesh + two duals), for :func:`subdivision_convergence`.
 
     Returns
     -------
     dict
-        ``"meshes"``: the mesh names; ``"pairs"`` and ``"levels"``: dicts
+        ``"meshes"``: the mesh names; ``"duals"`` and ``"iterations"``: dicts
         ``{(mesh name, scheme): Convergence}`` from :func:`dual_convergence`
         and :func:`subdivision_convergence`.  (Meshes of more than 50 faces,
-        here the rabbit, are refined at most three levels, to keep the study
-        to a few seconds.)  The torus is 8 x 6 quads.
+        here the rabbit, are refined at most three iterations, to keep the
+        study to a few seconds.)  The torus is 8 x 6 quads.
 
     Notes
     -----
-    The results of the last four ``(pairs, levels)`` asked for are kept
+    The results of the last four ``(duals, iterations)`` asked for are kept
     (``functools.lru_cache(maxsize=4)``): the convergence figure and its
     claims share one study.  Treat the returned dict as read-only.
     """
-    res_pairs, res_levels = {}, {}
+    res_duals, res_iterations = {}, {}
     for name, build in STUDY_MESHES.items():
         mesh = build()
         for scheme in STUDY_SCHEMES:
-            res_pairs[name, scheme] = dual_convergence(mesh, scheme, pairs)
-            lv = min(levels, 3) if mesh.n_faces > 50 else levels
-            res_levels[name, scheme] = subdivision_convergence(mesh, scheme, lv)
-    return {"meshes": tuple(STUDY_MESHES), "pairs": res_pairs, "levels": res_levels}
+            res_duals[name, scheme] = dual_convergence(mesh, scheme, duals)
+            it = min(iterations, 3) if mesh.n_faces > 50 else iterations
+            res_iterations[name, scheme] = subdivision_convergence(mesh, scheme, it)
+    return {"meshes": tuple(STUDY_MESHES), "duals": res_duals, "iterations": res_iterations}

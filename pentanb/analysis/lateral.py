@@ -9,8 +9,8 @@ subdivision does not create any lateral artifact."
 cells per edge (:func:`pentanb.shapes.box`), and Figure 1's hard-edged cube,
 with every scheme of :data:`pentanb.SCHEMES` (but the simplest
 triangulation, which the paper sets aside because it stops changing the mesh
-after one round) followed by two duals, levels 1 to 4, and measures after
-every level the absolute peak-to-peak height of the wave along each of the
+after one iteration) followed by two duals, iterations 1 to 4, and measures
+after every iteration the absolute peak-to-peak height of the wave along each of the
 box's 12 edges (:func:`~pentanb.analysis.measures.lateral_amplitude`), away
 from the corners (one grid cell from each end).  :func:`wavelength` finds
 the wave's period.  numpy only.
@@ -35,7 +35,7 @@ from .measures import edge_profile, lateral_amplitude
 __all__ = [
     "BOXES",
     "LATERAL_SCHEMES",
-    "LEVELS",
+    "ITERATIONS",
     "Lateral",
     "study",
     "wavelength",
@@ -52,11 +52,11 @@ BOXES: dict[str, tuple[Callable[[], Mesh], float, float]] = {
     "10 cells": (lambda: shapes.box(10), 1 - 2 / 10, 2 / 10),
     "Figure 1's cube": (shapes.hard_edged_cube, 0.6, 0.2),
 }
-#: Every scheme but the simplest triangulation (Section 3: after one round it
-#: does not change the mesh, so its levels would be duals only).
+#: Every scheme but the simplest triangulation (Section 3: after one iteration
+#: it does not change the mesh, so its iterations would be duals only).
 LATERAL_SCHEMES: tuple[str, ...] = tuple(s for s in SCHEMES if s != "triangulate")
-#: Levels of the study (remeshing + two duals each).
-LEVELS = 4
+#: Iterations of the study (remeshing + two duals each).
+ITERATIONS = 4
 
 
 @dataclass(frozen=True)
@@ -66,15 +66,15 @@ class Lateral:
     Attributes
     ----------
     amplitude : dict
-        ``{(box, scheme): (levels, 12) float}``: peak-to-peak height of the
+        ``{(box, scheme): (iterations, 12) float}``: peak-to-peak height of the
         wave along each of the 12 edges (:data:`~pentanb.analysis.measures.BOX_EDGES`),
-        level by level, in the box's units (the boxes span [-1, 1]^3).
+        iteration by iteration, in the box's units (the boxes span [-1, 1]^3).
     profile : dict
-        ``{(box, scheme): (x, r)}`` at the last level: the distance from the
+        ``{(box, scheme): (x, r)}`` after the last iteration: the distance from the
         axis of the edge ``y = z = 1`` along it, in the plane through the edge
         (45 degrees), over the stretch measured.
     seconds : dict
-        ``{(box, scheme): seconds}`` to build and measure all levels.
+        ``{(box, scheme): seconds}`` to build and measure all iterations.
     """
 
     amplitude: dict[tuple[str, str], NDArray[np.float64]]
@@ -82,21 +82,34 @@ class Lateral:
     seconds: dict[tuple[str, str], float]
 
     def worst(self, box: str, scheme: str) -> NDArray[np.float64]:
-        """(levels,) float: the largest of the 12 edges at every level."""
+        """The largest of the 12 edges after every iteration.
+
+        Parameters
+        ----------
+        box : str
+            A name of :data:`BOXES`.
+        scheme : str
+            A name of :data:`LATERAL_SCHEMES`.
+
+        Returns
+        -------
+        (iterations,) float
+        """
         return self.amplitude[box, scheme].max(axis=1)
 
 
 @functools.lru_cache(maxsize=2)
 def study(
-    levels: int = LEVELS,
+    iterations: int = ITERATIONS,
     boxes: tuple[str, ...] = tuple(BOXES),
     schemes: tuple[str, ...] = LATERAL_SCHEMES,
 ) -> Lateral:
-    """Every scheme with two duals on every box, levels 1 .. ``levels``, measured.
+    """Every scheme with two duals on every box, iterations 1 .. ``iterations``, measured.
 
     Parameters
     ----------
-    levels : int, >= 1
+    iterations : int, >= 1
+        Repetitions of every scheme (each followed by two duals).
     boxes : tuple of str
         Names of :data:`BOXES`.
     schemes : tuple of str
@@ -110,11 +123,11 @@ def study(
     -----
     The results of the last two calls are kept (``functools.lru_cache``):
     the lateral figure and its claims share one study.  The largest mesh
-    (pentagon preservation of the 10-cell box at level 4) has 1.6 million
+    (pentagon preservation of the 10-cell box after 4 iterations) has 1.6 million
     edges; the whole default study takes about 10 s of one core.
     """
-    if isinstance(levels, bool) or not isinstance(levels, int) or levels < 1:
-        raise ValueError(f"levels must be an integer >= 1, got {levels!r}")
+    if isinstance(iterations, bool) or not isinstance(iterations, int) or iterations < 1:
+        raise ValueError(f"iterations must be an integer >= 1, got {iterations!r}")
     for b in boxes:
         if b not in BOXES:
             raise ValueError(f"unknown box {b!r}; known: {', '.join(BOXES)}")
@@ -128,7 +141,7 @@ def study(
         for s in schemes:
             t = time.perf_counter()
             mesh, rows = start, []
-            for _ in range(levels):
+            for _ in range(iterations):
                 mesh = subdivide(mesh, s, 1, 2)
                 rows.append(lateral_amplitude(mesh, window))
             amp[b, s] = np.array(rows)

@@ -36,6 +36,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..mesh import Mesh
+from ..notation.positions import best_fit_planes, face_planarity
 
 __all__ = [
     "vertex_configurations",
@@ -179,6 +180,11 @@ def configuration_counts(configs: Iterable[str]) -> dict[str, int]:
     ----------
     configs : iterable of str
         E.g. the output of :func:`vertex_configurations`.
+
+    Returns
+    -------
+    dict
+        ``{configuration (str): count (int)}``, most frequent first.
     """
     names, counts = np.unique(
         np.asarray(list(configs), dtype=object).astype(str), return_counts=True
@@ -427,6 +433,11 @@ def angle_spread(mesh: Mesh, faces: ArrayLike | None = None, by: str = "size") -
 def uniformity(mesh: Mesh) -> dict[str, float]:
     """The three spreads of Figure 7's "more and more uniform".
 
+    Parameters
+    ----------
+    mesh : Mesh
+        A closed manifold polygon mesh.
+
     Returns
     -------
     dict
@@ -442,60 +453,6 @@ def uniformity(mesh: Mesh) -> dict[str, float]:
 
 
 # ====================================================================== flatness
-def best_fit_planes(mesh: Mesh) -> tuple[np.ndarray, np.ndarray]:
-    """The least-squares plane of every face (through its corners' mean).
-
-    Returns
-    -------
-    centres : (m, 3) float
-        The mean of each face's corners (a point of its plane).
-    normals : (m, 3) float
-        Unit normals, turned to agree with the face's orientation (Newell's
-        normal); the direction of least spread of the corners.
-    """
-    v = mesh.vertices
-    p = v[mesh.corners]
-    starts = mesh.offsets[:-1]
-    sizes = mesh.face_sizes[:, None]
-    centres = np.add.reduceat(p, starts, axis=0) / sizes
-    d = p - centres[mesh.halfedge_face]
-    cov = np.add.reduceat(d[:, :, None] * d[:, None, :], starts, axis=0)
-    _, vecs = np.linalg.eigh(cov)
-    normals = vecs[:, :, 0]  # eigh sorts eigenvalues ascending
-    newell = np.add.reduceat(np.cross(p, v[mesh.head]), starts, axis=0)
-    flip = np.einsum("ij,ij->i", normals, newell) < 0
-    normals[flip] *= -1.0
-    return centres, normals
-
-
-def face_planarity(mesh: Mesh, relative_to: str = "mesh") -> np.ndarray:
-    """Largest distance of each face's corners from its best-fit plane.
-
-    Parameters
-    ----------
-    mesh : Mesh
-    relative_to : {"mesh", "face"}
-        Divide by the mean edge length of the whole mesh (``"mesh"``) or by
-        the mean length of the face's own edges (``"face"``).
-
-    Returns
-    -------
-    (m,) float
-        0 for triangles and for planar faces.
-    """
-    if relative_to not in ("mesh", "face"):
-        raise ValueError(f"relative_to must be 'mesh' or 'face', got {relative_to!r}")
-    centres, normals = best_fit_planes(mesh)
-    hf = mesh.halfedge_face
-    p = mesh.vertices[mesh.corners]
-    dist = np.abs(np.einsum("ij,ij->i", p - centres[hf], normals[hf]))
-    worst = np.maximum.reduceat(dist, mesh.offsets[:-1])
-    lengths = np.linalg.norm(mesh.vertices[mesh.head] - p, axis=1)
-    if relative_to == "mesh":
-        return worst / lengths.mean()
-    return worst / (np.add.reduceat(lengths, mesh.offsets[:-1]) / mesh.face_sizes)
-
-
 def planarity(mesh: Mesh) -> float:
     """The largest distance of a corner from its face's best-fit plane,
     over the mesh's mean edge length (0 when every face is planar).
@@ -504,6 +461,16 @@ def planarity(mesh: Mesh) -> float:
     9A, 12B) are 6-15 % of an edge length off; canonical positions
     (:func:`pentanb.canonical`) and :func:`pentanb.planarize` bring it to
     rounding level.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        A closed manifold polygon mesh.
+
+    Returns
+    -------
+    float, >= 0
+        0 when every face is planar.
 
     Examples
     --------

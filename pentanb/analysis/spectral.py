@@ -51,7 +51,7 @@ pair, reported with their argument.
 What is proven and what is not.  The eigenvalues are those of an exactly
 assembled matrix (floating point, checked against the operators), so the
 necessary condition and its failures are established up to round-off.  The
-characteristic map is drawn from its control net a few levels down; the
+characteristic map is drawn from its control net a few iterations down; the
 verdict on it (all faces turn the same way, the boundary winds once) is
 numerical evidence, not a proof of regularity of the limit map.  Reif's
 criterion also assumes a C1 surface away from the element (true for
@@ -75,7 +75,8 @@ from numpy.typing import NDArray
 from .. import schemes as _schemes
 from ..mesh import Mesh
 from ..notation import seeds
-from ..schemes.registry import SCHEMES, Scheme, get_scheme
+from ..schemes.registry import SCHEMES, Scheme
+from ..subdivision import get_scheme
 from .subdivision_matrix import _name, dual_matrix, remesh_matrix
 
 __all__ = [
@@ -421,7 +422,18 @@ class LocalSpectrum:
         return np.angle(self.eigenvalues)
 
     def lam(self, i: int) -> complex:
-        """Eigenvalue ``i`` (0 = the eigenvalue 1) over one period."""
+        """Eigenvalue ``i`` (0 = the eigenvalue 1) over one period.
+
+        Parameters
+        ----------
+        i : int, >= 0
+            Index into :attr:`eigenvalues` (sorted by modulus, decreasing).
+
+        Returns
+        -------
+        complex
+            The eigenvalue of the matrix of one period (``period`` steps).
+        """
         return complex(self.eigenvalues[i])
 
     @property
@@ -456,6 +468,13 @@ class LocalSpectrum:
         return ""
 
     def summary(self) -> str:
+        """One line: the scheme, the element, the period, the neighbourhood and
+        the leading eigenvalues (or why there is no stationary neighbourhood).
+
+        Returns
+        -------
+        str
+        """
         if not self.stationary:
             return f"{self.scheme} {self.kind} {self.size}: {self.note}"
         lam = ", ".join(_fmt(z) for z in self.eigenvalues[:5])
@@ -927,19 +946,19 @@ def ring_contraction(
     scheme="pentagonalize",
     kind: str = "vertex",
     size: int = 3,
-    levels: int = 6,
+    iterations: int = 6,
     duals: int = 2,
     *,
     mesh: Mesh | None = None,
     element: int | None = None,
     **options,
 ) -> tuple[NDArray[np.float64], float]:
-    """The measured contraction of an element's 1-ring, level after level.
+    """The measured contraction of an element's 1-ring, iteration after iteration.
 
     Computed with :func:`pentanb.subdivide` alone (no matrices, so it checks
     them): the root mean square distance from a surviving vertex to its
     neighbours (or from a surviving face's centroid to its corners) after
-    each level, and the ratio of consecutive levels.  For a scheme with a
+    each iteration, and the ratio of consecutive iterations.  For a scheme with a
     stationary neighbourhood the ratio tends to ``|lambda1|`` (the root
     mean square is unchanged by a rotation of the ring, so a complex
     ``lambda1`` gives a steady ratio too).
@@ -952,15 +971,15 @@ def ring_contraction(
     ----------
     scheme, kind, size, duals, **options
         As for :func:`local_spectrum`.
-    levels : int, >= 1
-        Subdivision levels.
+    iterations : int, >= 1
+        Repetitions of the scheme, each followed by ``duals`` duals.
     mesh : Mesh, optional
         Start here instead of :func:`pyramid` ``(size)``; ``element`` then
         names the vertex (or face) to follow.
 
     Returns
     -------
-    ratios : (levels,) float
+    ratios : (iterations,) float
     limit : float
         Aitken's extrapolation of the ratios (:func:`extrapolate_ratio`).
 
@@ -986,7 +1005,7 @@ def ring_contraction(
 
     n0 = measure(mesh)
     meshes = [mesh]
-    for _ in range(levels):
+    for _ in range(iterations):
         mesh = subdivide(mesh, s, 1, duals, **options)
         count = mesh.n_vertices if kind == "vertex" else mesh.n_faces
         if el[1] >= count or measure(mesh) != n0:
@@ -1005,20 +1024,21 @@ def ring_contraction(
 
 @dataclass(frozen=True)
 class CharacteristicMap:
-    """The characteristic map's control net a few levels down, and its verdict.
+    """The characteristic map's control net a few iterations down, and its verdict.
 
     Attributes
     ----------
     spectrum : LocalSpectrum
     points : (n, 2) float
         Planar positions (the two subdominant eigenvectors, or the real and
-        imaginary parts of a complex one), subdivided ``levels`` times.
+        imaginary parts of a complex one), subdivided ``iterations`` times.
     corners, offsets : int arrays
         The faces whose positions are all determined by the neighbourhood
         (CSR, indices into ``points``).
     centre : (2,) float
         Where the element itself goes (the origin).
-    levels : int
+    iterations : int
+        Iterations of the scheme below the analysed neighbourhood.
     signs : (m,) int
         Orientation of every face's fan triangles (+1, -1, or 0 when mixed
         or degenerate).
@@ -1036,7 +1056,7 @@ class CharacteristicMap:
     corners: NDArray[np.int64]
     offsets: NDArray[np.int64]
     centre: NDArray[np.float64]
-    levels: int
+    iterations: int
     signs: NDArray[np.int64]
     winding: int
     complex_pair: bool
@@ -1112,18 +1132,18 @@ def characteristic_map(
     size: int = 3,
     duals: int = 2,
     *,
-    levels: int = 2,
+    iterations: int = 2,
     **options,
 ) -> CharacteristicMap:
     """The characteristic map around an extraordinary element, with its verdict.
 
     The two subdominant eigenvectors (or the real and imaginary parts of a
     complex one) are put on the analysed neighbourhood as planar positions
-    and subdivided ``levels`` more times with the real subdivision
+    and subdivided ``iterations`` more times with the real subdivision
     matrices; every vertex whose new position depends only on the
     neighbourhood is kept.  Its faces are the control net of the
     characteristic map (Reif 1995), which converges to the map as the
-    levels grow.
+    iterations grow.
 
     Parameters
     ----------
@@ -1131,8 +1151,9 @@ def characteristic_map(
         A result of :func:`local_spectrum`, or the scheme to analyse (then
         ``kind``, ``size``, ``duals`` and ``options`` go to
         :func:`local_spectrum`).
-    levels : int, >= 0
-        Subdivision levels below the analysed neighbourhood.
+    iterations : int, >= 0
+        Iterations of the scheme (remesh + duals, as subdivision matrices)
+        below the analysed neighbourhood.
 
     Returns
     -------
@@ -1147,8 +1168,12 @@ def characteristic_map(
         spectrum = local_spectrum(spectrum, kind, size, duals, **options)
     if not spectrum.stationary or spectrum._context is None:
         raise ValueError(f"no characteristic map: {spectrum.note or 'no stationary neighbourhood'}")
-    if isinstance(levels, bool) or not isinstance(levels, (int, np.integer)) or levels < 0:
-        raise ValueError(f"levels must be a non-negative integer, got {levels!r}")
+    if (
+        isinstance(iterations, bool)
+        or not isinstance(iterations, (int, np.integer))
+        or iterations < 0
+    ):
+        raise ValueError(f"iterations must be a non-negative integer, got {iterations!r}")
     ctx: _Context = spectrum._context
     w = spectrum.eigenvalues
     V = ctx.vectors
@@ -1164,19 +1189,19 @@ def characteristic_map(
     # positions on the whole level, NaN outside the neighbourhood
     steps = ctx.steps
     L = ctx.level
-    while len(steps) <= L + levels:
+    while len(steps) <= L + iterations:
         last = steps[-1]
         steps.append(_build_step(last, ctx.scheme, ctx.duals, ctx.options))
     x = np.full((steps[L].mesh.n_vertices, 2), np.nan)
     x[ctx.domain] = psi
-    for j in range(L, L + levels):
+    for j in range(L, L + iterations):
         x = _propagate(steps[j].S, x)
-    mesh = steps[L + levels].mesh
+    mesh = steps[L + iterations].mesh
     known = np.isfinite(x).all(axis=1)
     face_ok = np.logical_and.reduceat(known[mesh.corners], mesh.offsets[:-1])
     faces = np.flatnonzero(face_ok)
     # keep the faces connected to the element
-    element = steps[L + levels].element
+    element = steps[L + iterations].element
     faces = _component(mesh, faces, element)
     sizes = mesh.face_sizes[faces]
     offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
@@ -1202,7 +1227,7 @@ def characteristic_map(
         corners=local.astype(np.int64),
         offsets=offsets,
         centre=np.asarray(centre, dtype=np.float64),
-        levels=int(levels),
+        iterations=int(iterations),
         signs=signs,
         winding=winding,
         complex_pair=complex_pair,
@@ -1335,6 +1360,19 @@ class ContinuityRow:
         return f"{self.kind} {self.size}"
 
     def lam(self, i: int) -> str:
+        """Eigenvalue ``i`` as the table shows it: its modulus per step, and
+        its argument in degrees when it is complex (``"0.3840∠20.2°"``).
+
+        Parameters
+        ----------
+        i : int, >= 0
+            Index into the spectrum's eigenvalues (sorted by modulus, decreasing).
+
+        Returns
+        -------
+        str
+            Empty when there is no stationary spectrum or no eigenvalue ``i``.
+        """
         if self.spectrum is None or not self.spectrum.stationary:
             return ""
         sp = self.spectrum
@@ -1394,7 +1432,7 @@ def continuity_table(
     sizes=range(3, 9),
     duals: int = 2,
     *,
-    char_levels: int = 2,
+    map_iterations: int = 2,
     progress: Callable[[str], None] | None = None,
 ) -> list[ContinuityRow]:
     """The results table: every scheme + ``duals`` duals at every element type.
@@ -1406,8 +1444,9 @@ def continuity_table(
     sizes : iterable of int
         Valences and face sizes (default 3 to 8).
     duals : int
-    char_levels : int
-        Levels of the characteristic map's control net.
+    map_iterations : int
+        Iterations of the characteristic map's control net
+        (:func:`characteristic_map`'s ``iterations``).
     progress : callable, optional
         Called with a line of text after every row.
 
@@ -1434,7 +1473,7 @@ def continuity_table(
                     break
                 cm = None
                 if sp.stationary and sp.eigenvalues.size > 3:
-                    cm = characteristic_map(sp, levels=char_levels)
+                    cm = characteristic_map(sp, iterations=map_iterations)
                 row = ContinuityRow(label, kind, n, sp, cm)
                 rows.append(row)
                 if progress:
@@ -1448,7 +1487,18 @@ def _fate_rule(lost: dict[int, str]) -> str:
 
 
 def table_markdown(rows: list[ContinuityRow]) -> str:
-    """The table as markdown (for the README)."""
+    """The table as markdown (for the README).
+
+    Parameters
+    ----------
+    rows : list of ContinuityRow
+        From :func:`continuity_table`.
+
+    Returns
+    -------
+    str
+        A header and one table line per row, ending with a newline.
+    """
     head = (
         "| scheme + 2 duals | element | period | N | λ1 | λ2 | λ3 | λ4 | "
         "necessary condition | characteristic map | C1 |\n"

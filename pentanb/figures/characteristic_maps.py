@@ -14,7 +14,7 @@ Reif's sufficient condition (Reif 1995; Peters and Reif 2008), which also
 asks for a real double subdominant eigenvalue and a C1 surface away from
 the element.
 
-The figure ``characteristic_maps`` draws the maps' control nets two levels
+The figure ``characteristic_maps`` draws the maps' control nets two iterations
 down, one row per scheme and kind of element, one panel per valence or
 size (:func:`pentanb.viz.spectra.plot_characteristic_maps`): (A)
 pentagonalization's vertices, (B)-(C) pentagon preservation with scale 0.75
@@ -97,6 +97,11 @@ def draw(
     rows : sequence of ContinuityRow, optional
         The table (default: the shared one,
         :func:`pentanb.figures._continuity.table`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure, its panels labelled ``(A)``, ``(B)``, ...
     """
     from ..viz import mpl as vz
     from ..viz import spectra as vs
@@ -124,7 +129,7 @@ def map_claim(rows: Sequence[ContinuityRow], label: str, kind: str, recorded: st
     """
     by_size = {r.size: r for r in rows_of(rows, label, kind)}
     groups: dict[str, list[int]] = {}
-    ok, levels = True, 2
+    ok, iterations = True, 2
     for n in SIZES:
         r = by_size.get(n)
         if r is None or r.char_map is None:
@@ -132,7 +137,7 @@ def map_claim(rows: Sequence[ContinuityRow], label: str, kind: str, recorded: st
             text = f"no characteristic map ({note})"
             ok = False
         else:
-            levels = r.char_map.levels
+            iterations = r.char_map.iterations
             text = r.char_map.verdict
             if not r.char_map.injective:
                 ok = False
@@ -149,7 +154,7 @@ def map_claim(rows: Sequence[ContinuityRow], label: str, kind: str, recorded: st
         f"characteristic_maps.{key_label(label)}.{plural(kind)}",
         "Section 7",
         G1,
-        f"{scheme_name(label)}, characteristic map's control net {levels} levels down at "
+        f"{scheme_name(label)}, characteristic map's control net {iterations} levels down at "
         f"{plural(kind)} by {word}: "
         + "; ".join(f"{text} at {sizes_text(ns)}" for text, ns in groups.items()),
         "numerical evidence for G1 (with the necessary condition), not a proof: holds if the "

@@ -127,7 +127,14 @@ class Claim:
         return self.verdict == FAILS
 
     def lines(self) -> list[str]:
-        """The claim as report lines (no indentation)."""
+        """The claim as report lines (no indentation).
+
+        Returns
+        -------
+        list of str
+            Four lines: the verdict and key, the paper's words, what was
+            measured, and the criterion.
+        """
         tag = "  FINDING" if self.finding else ""
         if self.regressed:
             tag = f"  REGRESSION (recorded: {self.recorded})"
@@ -296,7 +303,7 @@ def counts_claim(
     panel : str
         E.g. ``"(B)"``.
     before, after : Mesh
-        The input and the output of ``iterations`` rounds of ``scheme``.
+        The input and the output of ``scheme`` applied ``iterations`` times.
     scheme : str
         A name of :data:`pentanb.SCHEMES`.
     iterations : int
@@ -396,18 +403,19 @@ def region_claim(
     key: str,
     section: str,
     quote: str,
-    levels: Sequence[tuple[str, Mesh]],
+    meshes: Sequence[tuple[str, Mesh]],
     config: str,
     recorded: str,
 ) -> Claim:
     """Section 5.1's "classical (or geometrical) semi-regular regions", measured as geometry.
 
-    The faces whose corner valences make ``config`` are compared, level by
-    level, with the classical tile (:func:`classical_tile`): within every
-    group of corners of one valence the angles should be equal (angle
-    spread 0), their mean the tile's angle, and the faces flat (planarity
-    0, the largest distance of a corner from its face's least-squares
-    plane over the region's mean edge length).  Holds when all three are 0
+    The faces whose corner valences make ``config`` are compared, mesh by
+    mesh (iteration by iteration), with the classical tile
+    (:func:`classical_tile`): within every group of corners of one valence
+    the angles should be equal (angle spread 0), their mean the tile's
+    angle, and the faces flat (planarity 0, the largest distance of a
+    corner from its face's least-squares plane over the region's mean edge
+    length).  Holds when all three are 0
     to rounding; within tolerance when the angle spread and the planarity
     are at most :data:`REGION_TOLERANCE` and every mean angle is within 5 %
     of the tile's; the edge spread is reported next to the tile's.
@@ -415,8 +423,9 @@ def region_claim(
     Parameters
     ----------
     key, section, quote : str
-    levels : sequence of (label, Mesh)
-        E.g. ``[("level 1", mesh)]``.
+    meshes : sequence of (label, Mesh)
+        The meshes to measure, e.g. after successive iterations:
+        ``[("level 1", mesh)]``.
     config : str
         The paper's notation, e.g. ``"4.3.3.4.3"``.
     recorded : str
@@ -425,7 +434,7 @@ def region_claim(
     tile = classical_tile(config)
     parts, worst = [], 0.0
     strict = True
-    for label, mesh in levels:
+    for label, mesh in meshes:
         fc = face_configurations(mesh)
         faces = [i for i, c in enumerate(fc) if c == canon]
         if not faces:

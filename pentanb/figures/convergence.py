@@ -5,9 +5,9 @@ continuity"; Section 5.1 (of Figure 7): "the resulting shape becomes more and
 more uniform with each application of dual operation".  The figure
 ``convergence`` plots :func:`pentanb.analysis.convergence.study`: after one
 remeshing and each pair of duals, (A) the radius spread, (B) the spread of
-the edge lengths and (C) the largest crease angle; after every subdivision
-level, the largest crease angle (D) at the extraordinary vertices and (E)
-elsewhere.  Its panels are charts: :func:`panels` is empty.
+the edge lengths and (C) the largest crease angle; after every iteration
+(remesh + two duals), the largest crease angle (D) at the extraordinary
+vertices and (E) elsewhere.  Its panels are charts: :func:`panels` is empty.
 
 A falling crease angle is necessary for a G1 limit, not sufficient: the
 claims here test that necessary condition only.
@@ -47,15 +47,23 @@ def panels() -> dict[str, Mesh]:
     return {}
 
 
-def draw(meshes: Mapping[str, Mesh] | None = None, *, pairs: int = 6, levels: int = 4) -> Figure:
-    """Convergence measured: roundness, uniformity and creases per dual pair and per level.
+def draw(
+    meshes: Mapping[str, Mesh] | None = None, *, duals: int = 12, iterations: int = 4
+) -> Figure:
+    """Convergence measured: roundness, uniformity and creases per dual pair and per iteration.
 
     Parameters
     ----------
     meshes : dict, optional
         Ignored (the figure has no mesh panels); accepted like every figure's.
-    pairs, levels : int
-        Of :func:`pentanb.analysis.convergence.study`.
+    duals : int, even, >= 2
+        Duals after one remeshing (panels A-C, measured after every pair).
+    iterations : int, >= 1
+        Iterations of remesh + two duals (panels D and E).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
     """
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
@@ -63,7 +71,7 @@ def draw(meshes: Mapping[str, Mesh] | None = None, *, pairs: int = 6, levels: in
 
     from ..viz import mpl as vz
 
-    data = cv.study(pairs=pairs, levels=levels)
+    data = cv.study(duals=duals, iterations=iterations)
     names = list(data["meshes"])
     with vz.style():
         fig = Figure(figsize=(10.5, 8.0), dpi=vz.DPI)
@@ -72,13 +80,13 @@ def draw(meshes: Mapping[str, Mesh] | None = None, *, pairs: int = 6, levels: in
         grid[1, 2].set_axis_off()
         fig.subplots_adjust(left=0.07, right=0.98, bottom=0.12, top=0.93, wspace=0.3, hspace=0.62)
         fig.suptitle("Convergence under duals (beyond the paper)", fontsize=10.5)
-        for (mesh_name, scheme), res in data["pairs"].items():
+        for (mesh_name, scheme), res in data["duals"].items():
             c, ls = COLORS[names.index(mesh_name)], STYLES[scheme]
             if mesh_name in cv.ROUND_MESHES:
                 axes[0].plot(res.steps, res.radius_spread, ls, color=c, marker="o", ms=3)
             axes[1].plot(res.steps, res.edge_spread, ls, color=c, marker="o", ms=3)
             axes[2].plot(res.steps, res.max_normal_angle, ls, color=c, marker="o", ms=3)
-        for (mesh_name, scheme), res in data["levels"].items():
+        for (mesh_name, scheme), res in data["iterations"].items():
             c, ls = COLORS[names.index(mesh_name)], STYLES[scheme]
             axes[3].semilogy(res.steps, res.crease_at, ls, color=c, marker="o", ms=3)
             axes[4].semilogy(res.steps, res.crease_elsewhere, ls, color=c, marker="o", ms=3)
@@ -155,14 +163,14 @@ RECORDED_UNIFORM = {
 
 
 def _falls(values: np.ndarray) -> bool:
-    """Strictly falling from the first level where the value exists (NaN: no such edge)."""
+    """Strictly falling from the first iteration where the value exists (NaN: no such edge)."""
     v = values[~np.isnan(values)]
     return bool(np.all(np.diff(v) < 0))
 
 
 def claims(meshes: Mapping[str, Mesh] | None = None, data: dict | None = None) -> list[Claim]:
-    """The crease angle per level (at the extraordinary vertices and elsewhere) and the
-    uniformity per pair of duals, for every mesh and scheme of the study.
+    """The crease angle per iteration (at the extraordinary vertices and elsewhere) and
+    the uniformity per pair of duals, for every mesh and scheme of the study.
 
     Parameters
     ----------
@@ -174,7 +182,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None, data: dict | None = None) -
     """
     data = cv.study() if data is None else data
     out = []
-    for (mesh_name, scheme), res in data["levels"].items():
+    for (mesh_name, scheme), res in data["iterations"].items():
         at, other = res.crease_at, res.crease_elsewhere
         ok = _falls(at) and _falls(other)
         out.append(
@@ -192,7 +200,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None, data: dict | None = None) -
                 RECORDED_CREASE.get((mesh_name, scheme), HOLDS),  # unknown: as the paper says
             )
         )
-    for (mesh_name, scheme), res in data["pairs"].items():
+    for (mesh_name, scheme), res in data["duals"].items():
         series = {
             "edge-length spread": res.edge_spread,
             "face-angle spread": res.angle_spread,

@@ -1,7 +1,7 @@
 """Figure 5: two iterations of hexagon preservation (dual of Loop) on Figure 4's meshes.
 
 (A) the hexagonal torus and (B) the hexagonal genus-2 surface, each refined
-twice by :func:`pentanb.preserve_hexagons` with two duals after each round.
+twice by :func:`pentanb.preserve_hexagons` with two duals after each iteration.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ def _sources() -> tuple[Mesh, Mesh]:
 
 
 def panels() -> dict[str, Mesh]:
-    """The meshes of Figure 5: Figure 4's (A) and (B) after two rounds of hexagon
+    """The meshes of Figure 5: Figure 4's (A) and (B) after two iterations of hexagon
     preservation with two duals each."""
     a, b = _sources()
     return {
@@ -41,12 +41,17 @@ def panels() -> dict[str, Mesh]:
 
 
 def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
-    """Figure 5: two rounds of hexagon preservation (two duals each) on Figure 4's meshes.
+    """Figure 5: two iterations of hexagon preservation (two duals each) on Figure 4's meshes.
 
     Parameters
     ----------
     meshes : dict, optional
         :func:`panels`, if already built.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure, its panels labelled ``(A)``, ``(B)``, ... as in the paper.
     """
     from ._draw import GENUS2_VIEW, TORUS_VIEW, mesh_figure
 

@@ -51,6 +51,11 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
     ----------
     meshes : dict, optional
         :func:`panels`, if already built.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure, its panels labelled ``(A)``, ``(B)``, ... as in the paper.
     """
     from ..viz import mpl as vz
     from ..viz.colors import EDGE_COLOR

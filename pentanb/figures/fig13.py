@@ -58,6 +58,11 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
     ----------
     meshes : dict, optional
         :func:`panels`, if already built.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure, its panels labelled ``(A)``, ``(B)``, ... as in the paper.
     """
     from ._draw import mesh_figure
 

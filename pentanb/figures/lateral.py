@@ -7,12 +7,13 @@ surface include a smooth wave pattern (see [15, 5]). As shown in Figure
 repeats it for "Figures 1 and 8".
 
 The figure ``lateral`` draws :func:`pentanb.analysis.lateral.study`: (A)
-the profile along an edge of the 10-cell box at level 4, (B) the wave's
-peak-to-peak height level by level on that box, (C) at level 4 against the
-number of cells per edge.  Its panels are charts: :func:`panels` is empty.
+the profile along an edge of the 10-cell box after 4 iterations, (B) the
+wave's peak-to-peak height iteration by iteration on that box, (C) after 4
+iterations against the number of cells per edge.  Its panels are charts:
+:func:`panels` is empty.
 The finding: pentagonalization and pentagon preservation (with two duals)
 leave a wave with the grid's period along a straight edge, about 1.8 % and
-2.3 % of a grid cell high, which does not shrink with the levels;
+2.3 % of a grid cell high, which does not shrink with the iterations;
 honeycomb's is larger and shrinks; vertex insertion leaves none.
 """
 
@@ -39,7 +40,7 @@ CAPTION = (
 )
 LABELS = ("A", "B", "C")
 
-#: The box whose profiles and levels panels (A) and (B) draw.
+#: The box whose profiles and iterations panels (A) and (B) draw.
 BOX = "10 cells"
 #: Schemes drawn in panel (A).
 PROFILED = ("pentagonalize", "preserve_pentagons", "honeycomb", "vertex_insertion")
@@ -70,6 +71,11 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
     ----------
     meshes : dict, optional
         Ignored (the figure has no mesh panels); accepted like every figure's.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure, its panels labelled ``(A)``, ``(B)``, ...
     """
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
@@ -77,7 +83,7 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
     from ..viz import mpl as vz
 
     data = lt.study()
-    levels = np.arange(1, lt.LEVELS + 1)
+    iterations = np.arange(1, lt.ITERATIONS + 1)
     with vz.style():
         fig = Figure(figsize=(11.0, 4.8), dpi=vz.DPI)
         axes = list(fig.subplots(1, 3))
@@ -101,16 +107,16 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
         ax.set_xlabel("position along the edge (grey: grid lines)")
         ax.set_ylabel("distance from the edge's axis, mean removed")
         ax.set_yticks([])
-        vz.label_panel(ax, f"(A) profiles, {BOX} per edge, level {lt.LEVELS}")
+        vz.label_panel(ax, f"(A) profiles, {BOX} per edge, level {lt.ITERATIONS}")
         # (B) level by level on the 10-cell box
         ax = axes[1]
         for s in lt.LATERAL_SCHEMES:
             color, ls = STYLE[s]
             y = np.maximum(data.worst(BOX, s), ZERO)
-            ax.semilogy(levels, y, ls, color=color, marker="o", ms=3)
+            ax.semilogy(iterations, y, ls, color=color, marker="o", ms=3)
         ax.axhline(ZERO, color="#777777", lw=0.6)
         ax.text(1.02, ZERO * 1.4, "no wave (< 1e-6)", fontsize=7, color="#555555")
-        ax.set_xticks(levels)
+        ax.set_xticks(iterations)
         ax.set_xlabel("subdivision level (remesh + 2 duals)")
         ax.set_ylabel("wave height, peak to peak (12 edges' largest)")
         vz.label_panel(ax, f"(B) level by level, {BOX} per edge")
@@ -127,8 +133,8 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
         ax.set_xticklabels([str(c) for c in cells])
         ax.minorticks_off()
         ax.set_xlabel("cells per edge")
-        ax.set_ylabel(f"wave height at level {lt.LEVELS}")
-        vz.label_panel(ax, f"(C) level {lt.LEVELS}, box by box")
+        ax.set_ylabel(f"wave height at level {lt.ITERATIONS}")
+        vz.label_panel(ax, f"(C) level {lt.ITERATIONS}, box by box")
         for ax in axes:
             ax.grid(alpha=0.25)
             ax.title.set_y(-0.3)
@@ -198,7 +204,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None, data: lt.Lateral | None = N
                 "Section 1, Figure 1.C; Section 6",
                 NO_ARTIFACT,
                 f"{SCHEMES[s].label} + two duals, peak-to-peak height of the wave along the 12 "
-                f"straight edges (largest), levels 1-{lt.LEVELS}, box size 2: "
+                f"straight edges (largest), levels 1-{lt.ITERATIONS}, box size 2: "
                 f"{_table(data, s)}; {_period(data, s)}",
                 f"holds if every height is below {ZERO:g} (no wave) on every box at every level",
                 HOLDS if peak <= ZERO else FAILS,
@@ -213,7 +219,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None, data: lt.Lateral | None = N
             "Section 1",
             WAVE,
             f"{SCHEMES[s].label} ([5]) + two duals, peak-to-peak height along the 12 edges "
-            f"(largest), levels 1-{lt.LEVELS}: {_table(data, s)}; smallest {fmt(low)}",
+            f"(largest), levels 1-{lt.ITERATIONS}: {_table(data, s)}; smallest {fmt(low)}",
             f"holds if there is a wave (height above {ZERO:g}) on every box at every level",
             HOLDS if low > ZERO else FAILS,
         )

@@ -139,6 +139,16 @@ def get(name: int | str) -> FigureSpec:
     """The :class:`FigureSpec` of a figure: ``get(7)``, ``get("7")``, ``get("fig07")``,
     ``get("equation1")``.
 
+    Parameters
+    ----------
+    name : int or str
+        A figure's number (``7``, ``"7"``) or name (``"fig07"``, ``"equation1"``,
+        ``"lateral"``, ...; the keys of :data:`FIGURES`).
+
+    Returns
+    -------
+    FigureSpec
+
     Raises
     ------
     ValueError
@@ -269,7 +279,19 @@ def render_all(
 
 def check_all(names: Iterable[int | str] | None = None) -> dict[str, list[Claim]]:
     """``{figure name: claims}`` for every figure (or ``names``), then ``"schemes"``
-    (:func:`~pentanb.figures.scheme_claims`)."""
+    (:func:`~pentanb.figures.scheme_claims`).
+
+    Parameters
+    ----------
+    names : iterable of int or str, optional
+        The figures, as :func:`get` names them (default: all of :data:`FIGURES`).
+
+    Returns
+    -------
+    dict
+        ``{figure name: list of Claim}``, in the order asked, then
+        ``"schemes"``: :func:`~pentanb.figures.scheme_claims`.
+    """
     keys = list(FIGURES) if names is None else [get(n).name for n in names]
     out = {k: FIGURES[k].claims() for k in keys}
     out["schemes"] = formulas.scheme_claims()
@@ -284,6 +306,11 @@ def report(results: Mapping[str, list[Claim]]) -> str:
     ----------
     results : dict
         As :func:`check_all` returns.
+
+    Returns
+    -------
+    str
+        The report, lines joined by newlines.
     """
     titles = {name: spec.title for name, spec in FIGURES.items()}
     titles["schemes"] = formulas.TITLE

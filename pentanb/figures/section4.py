@@ -73,6 +73,11 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
     ----------
     meshes : dict, optional
         Ignored (the figure has no mesh panels); accepted like every figure's.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Equation (1) and the paper's ``(n, m)`` chart.
     """
     from matplotlib.figure import Figure
 

@@ -78,6 +78,11 @@ def draw(
     rows : sequence of ContinuityRow, optional
         The table (default: the shared one,
         :func:`pentanb.figures._continuity.table`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure, its panels labelled ``(A)``, ``(B)``, ...
     """
     from ..viz import mpl as vz
     from ..viz import spectra as vs

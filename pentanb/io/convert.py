@@ -45,6 +45,15 @@ def from_trimesh(tmesh: Any) -> Mesh:
     oriented manifold; ``trimesh.Trimesh(..., process=True)`` (trimesh's
     default) merges coincident vertices first.
 
+    Parameters
+    ----------
+    tmesh : trimesh.Trimesh
+
+    Returns
+    -------
+    Mesh
+        The trimesh's vertices, ``(n, 3)`` float, and triangles, in order.
+
     Raises
     ------
     TypeError
@@ -66,6 +75,15 @@ def to_trimesh(mesh: Mesh) -> Any:
 
     Every polygon is fanned from its first corner (:meth:`Mesh.fan_triangles`);
     ``face_attributes["polygon"]`` holds the polygon each triangle comes from.
+
+    Parameters
+    ----------
+    mesh : Mesh
+
+    Returns
+    -------
+    trimesh.Trimesh
+        Its ``vertices`` are ``(n, 3)`` float, its ``faces`` ``(t, 3)`` int.
     """
     check_mesh(mesh, "to_trimesh")
     trimesh = _need("trimesh", "to_trimesh")
@@ -85,6 +103,15 @@ def from_meshio(mmesh: Any) -> Mesh:
     the order of the blocks; ``vertex`` and ``line`` blocks are skipped with
     a warning.  Volume cells (tetrahedra, hexahedra, ...) and higher-order
     faces are refused: a pentanb mesh is a polygon surface.
+
+    Parameters
+    ----------
+    mmesh : meshio.Mesh
+
+    Returns
+    -------
+    Mesh
+        The points, ``(n, 3)`` float, and the faces of the polygon blocks, in order.
 
     Raises
     ------
@@ -141,6 +168,15 @@ def to_meshio(mesh: Mesh) -> Any:
     Triangles become ``triangle`` blocks, quads ``quad`` blocks, other
     polygons ``polygon`` blocks (one block per run of faces of one size, so
     the faces keep their order).
+
+    Parameters
+    ----------
+    mesh : Mesh
+
+    Returns
+    -------
+    meshio.Mesh
+        Its ``points`` are ``(n, 3)`` float.
     """
     check_mesh(mesh, "to_meshio")
     meshio = _need("meshio", "to_meshio")

@@ -61,6 +61,11 @@ def triangulate(mesh: Mesh) -> Mesh:
     the paper leaves this remeshing out because "after the first iteration it
     does not change the mesh (i.e., it becomes null algorithm)".
 
+    Parameters
+    ----------
+    mesh : Mesh
+        A closed manifold polygon mesh.
+
     Returns
     -------
     Mesh
@@ -93,6 +98,11 @@ def loop_remesh(mesh: Mesh) -> Mesh:
     "We first subdivide every edge at its midpoint and connect these
     midpoints to create a central face in the middle of each original face
     and triangles in each corner."
+
+    Parameters
+    ----------
+    mesh : Mesh
+        A closed manifold polygon mesh.
 
     Returns
     -------
@@ -161,6 +171,11 @@ def sqrt3_remesh(mesh: Mesh) -> Mesh:
 
     A triangulization (conversion) scheme: the result is all triangles.
 
+    Parameters
+    ----------
+    mesh : Mesh
+        A closed manifold polygon mesh.
+
     Returns
     -------
     Mesh
@@ -212,6 +227,11 @@ def vertex_insertion(mesh: Mesh) -> Mesh:
 
     A point on every edge midpoint and at every face centroid; every n-gon
     becomes n quads ``(m_h, w, m_next, c_f)``.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        A closed manifold polygon mesh.
 
     Returns
     -------
@@ -400,6 +420,13 @@ def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     old edge ``(a, b)`` becomes a hexagon between the copies of its two
     faces; each old vertex is joined to its copies.
 
+    Parameters
+    ----------
+    mesh : Mesh
+        A closed manifold polygon mesh.
+    scale : float in (0, 1)
+        Size of every face's copy, relative to the face, about its centroid.
+
     Returns
     -------
     Mesh
@@ -486,6 +513,11 @@ def honeycomb(mesh: Mesh) -> Mesh:
 
     One new vertex per half-edge ``h = (u, w)`` of face f, at the centroid of
     the triangle ``(u, w, c_f)`` (the dual of the centroid fan).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        A closed manifold polygon mesh.
 
     Returns
     -------

@@ -99,6 +99,11 @@ def smooth(mesh: Mesh, duals: int = 2) -> Mesh:
     ----------
     mesh : Mesh
     duals : int, >= 0
+
+    Returns
+    -------
+    Mesh
+        ``mesh`` after ``duals`` duals (``mesh`` itself for 0).
     """
     check_mesh(mesh, "smooth")
     duals = check_count(duals, "duals")

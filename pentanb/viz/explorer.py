@@ -1,4 +1,4 @@
-"""The explorer: shape, scheme, iterations, dual passes and scale beside one 3D view.
+"""The explorer: shape, scheme, iterations, duals and scale beside one 3D view.
 
 :func:`explore` (also ``pentanb.explore``) builds an :class:`Explorer`.
 Moving a control rebuilds the mesh with :func:`pentanb.subdivide` (or takes
@@ -20,15 +20,15 @@ import ipywidgets as W
 
 from .. import shapes
 from ..mesh import Mesh, MeshError
-from ..schemes.registry import SCHEMES, Scheme, get_scheme
-from ..subdivision import predict_counts, subdivide
+from ..schemes.registry import SCHEMES, Scheme
+from ..subdivision import get_scheme, predict_counts, subdivide
 from .drawing import counts_text, error_html
 from .three import MeshView, close_tree, slider_stack
 from .widgets import integer_argument, number_argument
 
 __all__ = ["Explorer", "explore", "MAX_DUALS", "SCALE_RANGE"]
 
-#: Largest value of the dual passes slider.
+#: Largest value of the duals slider.
 MAX_DUALS = 4
 #: Range of the scale slider (the scheme's ``scale`` option).
 SCALE_RANGE = (0.05, 0.95)
@@ -52,8 +52,8 @@ class Explorer(W.HBox):
     """Controls (shape, scheme, iterations, duals, scale, edges) beside one view.
 
     Build it with :func:`explore`.  Every result is cached, so a slider that
-    goes back shows its mesh at once, and a deeper level is built from the
-    deepest cached one.
+    goes back shows its mesh at once, and more iterations are built from the
+    deepest cached result.
 
     Attributes
     ----------
@@ -152,7 +152,7 @@ class Explorer(W.HBox):
             value=duals,
             min=0,
             max=MAX_DUALS,
-            description="dual passes",
+            description="duals",
             continuous_update=False,
             style=style,
             layout=wide,
@@ -234,6 +234,9 @@ class Explorer(W.HBox):
     PROGRESS_FACES = 1_000_000
     #: Seconds after which a smaller request shows it.
     PROGRESS_AFTER = 0.2
+    #: The clock :attr:`PROGRESS_AFTER` is measured on, in seconds (the
+    #: tests put a fake clock here, so that no test depends on the machine's load).
+    clock = staticmethod(time.perf_counter)
 
     # -- work ---------------------------------------------------------------
     def _largest_steps(self, base: Mesh, iterations: int):
@@ -330,7 +333,7 @@ class Explorer(W.HBox):
         A request refused for its size (:class:`pentanb.MeshError`) is
         written in :attr:`status`; the picture keeps the previous mesh.
         """
-        start, shown = time.perf_counter(), False
+        start, shown = self.clock(), False
 
         def show() -> None:
             nonlocal shown
@@ -341,7 +344,7 @@ class Explorer(W.HBox):
 
         def report(done, total, message):
             if not shown:
-                if time.perf_counter() - start < self.PROGRESS_AFTER:
+                if self.clock() - start < self.PROGRESS_AFTER:
                     return
                 show()
             self.progress.max = max(total, 1)
@@ -380,7 +383,7 @@ class Explorer(W.HBox):
         close_tree(self)
 
     # -- export -------------------------------------------------------------
-    def static_copy(self, levels: int | None = None) -> W.Widget:
+    def static_copy(self, iterations: int | None = None) -> W.Widget:
         """A kernel-free copy: one view per iteration count, chosen by a slider.
 
         The slider is linked to a :class:`ipywidgets.Stack` in the browser
@@ -388,19 +391,24 @@ class Explorer(W.HBox):
 
         Parameters
         ----------
-        levels : int in [0, iterations.max], optional
-            Levels 0 to ``levels`` (default: the current iterations),
-            stopping before one over the size limits.
+        iterations : int in [0, iterations.max], optional
+            Iterations 0 to ``iterations`` (default: the iterations slider's
+            value), stopping before one over the size limits.
+
+        Returns
+        -------
+        ipywidgets.Widget
+            The views and their slider.
 
         Raises
         ------
         TypeError, ValueError
-            ``levels`` is not an integer the iterations slider can show.
+            ``iterations`` is not an integer the iterations slider can show.
         """
         top = (
             self.iterations.value
-            if levels is None
-            else integer_argument(levels, "levels", 0, self.iterations.max)
+            if iterations is None
+            else integer_argument(iterations, "iterations", 0, self.iterations.max)
         )
         meshes = []
         for k in range(top + 1):
@@ -413,7 +421,7 @@ class Explorer(W.HBox):
         title = (
             f"<b>{html.escape(str(self.shape.value))}</b>: {html.escape(label)}"
             + (f" (scale {opts['scale']:.2f})" if opts else "")
-            + f", {self.duals.value} dual passes per iteration"
+            + f", {self.duals.value} duals per iteration"
         )
         return slider_stack(
             meshes,
@@ -457,7 +465,7 @@ def explore(
     iterations : int in [0, max_iterations]
         First value of the iterations slider.
     duals : int in [0, :data:`MAX_DUALS`]
-        First value of the dual passes slider.
+        First value of the duals slider.
     scale : float in :data:`SCALE_RANGE`, optional
         First value of the scale slider (default: the scheme's scale, or
         0.75); used by the schemes that take one.

@@ -3,8 +3,8 @@
 The page holds the widgets' state (``ipywidgets.embed.dependency_state``)
 and is drawn by ``@jupyter-widgets/html-manager`` (its ``embed-amd.js``
 bundle, loaded with ``requirejs``).  Explorers and step-throughs are
-exported as :func:`pentanb.viz.three.slider_stack` copies: every level is
-precomputed and the slider is linked to a ``Stack`` in the browser
+exported as :func:`pentanb.viz.three.slider_stack` copies: every iteration
+(or stage) is precomputed and the slider is linked to a ``Stack`` in the browser
 (``jslink``), so the page works without a kernel.
 
 Offline pages (``offline=True``, the default) load nothing from the

@@ -24,8 +24,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..mesh import Mesh
-from ..schemes.registry import Scheme, get_scheme
+from ..schemes.registry import Scheme
 from ..schemes.smoothing import dual
+from ..subdivision import get_scheme
 from .colors import face_rgb, hex_to_rgb
 from .drawing import Drawing, drawing, size_histogram
 
@@ -43,7 +44,7 @@ NEW_EDGE_COLOR = "#c00000"
 #: Colours of new points: points on edges, then points inside faces.
 EDGE_POINT_COLOR = "#000000"
 FACE_POINT_COLOR = "#c00000"
-#: Most dual passes a step-through shows (each is one more stage).
+#: Most duals a step-through shows (each is one more stage).
 MAX_DUALS = 12
 
 Stage = tuple[str, Drawing | Mesh]
@@ -109,7 +110,7 @@ def stages(
     scheme : str or Scheme
         A scheme of :data:`pentanb.SCHEMES`.
     duals : int in [0, :data:`MAX_DUALS`]
-        Dual passes shown after the result.
+        Duals shown after the result.
     scale : float, optional
         The ``scale`` option, for schemes that take one (default: the
         scheme's); refused for schemes without it.
@@ -143,7 +144,7 @@ def stages(
         m = dual(m)
         what = "the dual" if k == 0 else "the dual of the dual" if k == 1 else f"dual {k + 1}"
         out.append(
-            (f"Dual pass {k + 1}: {what} (Section 5: apply the dual an even number of times).", m)
+            (f"Dual {k + 1}: {what} (Section 5: apply the dual an even number of times).", m)
         )
     return out
 

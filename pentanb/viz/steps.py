@@ -113,7 +113,7 @@ def step_through(
     scheme : str or Scheme
         A scheme of :data:`pentanb.SCHEMES`.
     duals : int in [0, :data:`pentanb.viz.stages.MAX_DUALS`]
-        Dual passes shown after the result.
+        Duals shown after the result.
     scale : float, optional
         The ``scale`` of ``preserve_pentagons`` (and of the other schemes
         with one); refused for a scheme that takes no scale.

@@ -6,12 +6,12 @@ control moves, shows what it prints and plots, and draws the mesh it returns
 in a 3D view (:class:`pentanb.viz.three.MeshView`) that keeps the reader's
 viewpoint.  A notebook's interactive cell is then the function and one call::
 
-    def draw(scheme="pentagonalize", dual_passes=2):
-        mesh = pentanb.subdivide(pentanb.shapes.cube(), scheme, 1, dual_passes)
+    def draw(scheme="pentagonalize", duals=2):
+        mesh = pentanb.subdivide(pentanb.shapes.cube(), scheme, 1, duals)
         print(mesh)
         return mesh
 
-    panel(draw, scheme=list(pentanb.SCHEMES), dual_passes=(0, 4))
+    panel(draw, scheme=list(pentanb.SCHEMES), duals=(0, 4))
 
 :func:`integer_argument` and :func:`number_argument` are the checks of the
 widgets' own arguments (:func:`pentanb.explore`, :func:`pentanb.step_through`):
@@ -334,9 +334,9 @@ def panel(
     --------
     >>> import pentanb
     >>> from pentanb.viz.widgets import panel
-    >>> def draw(dual_passes=2):
-    ...     return pentanb.subdivide(pentanb.shapes.tetrahedron(), "pentagonalize", 1, dual_passes)
-    >>> p = panel(draw, dual_passes=(0, 12))
+    >>> def draw(duals=2):
+    ...     return pentanb.subdivide(pentanb.shapes.tetrahedron(), "pentagonalize", 1, duals)
+    >>> p = panel(draw, duals=(0, 12))
     >>> p.mesh.n_faces
     12
     """
