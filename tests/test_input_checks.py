@@ -328,8 +328,8 @@ def test_shapes_too_large_for_memory_are_refused_before_building(build, what):
         build()
 
 
-def test_the_shape_size_guard_is_subdivides(monkeypatch):
-    monkeypatch.setattr(pentanb.subdivision, "default_max_bytes", lambda: 100_000)
+def test_the_shape_size_guard_uses_the_default_limit(monkeypatch):
+    monkeypatch.setattr(pentanb.shapes, "default_max_bytes", lambda: 100_000)
     assert shapes.torus(10, 10).n_faces == 100  # 100 quads: about 8 kB
     with pytest.raises(MeshError, match=r"torus\(40, 40\) would build .* limit of 100,000 bytes"):
         shapes.torus(40, 40)

@@ -27,7 +27,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import pentanb
-from pentanb import Mesh, MeshError, shapes
+import pentanb.memory
+from pentanb import Mesh, MeshError, memory, shapes
 from pentanb.mesh.coerce import compact as _compact
 from pentanb.mesh.coerce import index_dtype as _index_dtype
 from pentanb.mesh.geometry import face_means as _face_means
@@ -517,8 +518,8 @@ def test_the_guard_refuses_a_huge_request_before_allocating(monkeypatch):
 
 def test_int64_indices_are_accounted_for():
     # beyond 2**31 corners every index takes 8 bytes: positions stay 24 per vertex
-    below = pentanb.subdivision.mesh_bytes(2**29, 2**30 - 1, 2**29)
-    above = pentanb.subdivision.mesh_bytes(2**29, 2**30, 2**29)
+    below = pentanb.memory.mesh_bytes(2**29, 2**30 - 1, 2**29)
+    above = pentanb.memory.mesh_bytes(2**29, 2**30, 2**29)
     index_part = below - 24 * 2**29
     assert above - 24 * 2**29 >= 2 * index_part
     need = pentanb.subdivision.estimate_bytes((2**28, 2**29, 2**28), "loop_remesh", 0)
@@ -543,7 +544,7 @@ def _cgroup(root, files: dict[str, str]):
 def test_default_limit_from_meminfo_alone(tmp_path):
     meminfo = tmp_path / "meminfo"
     meminfo.write_text(MEMINFO)
-    limit = pentanb.subdivision.default_max_bytes(meminfo, tmp_path / "no cgroup")
+    limit = pentanb.memory.default_max_bytes(meminfo, tmp_path / "no cgroup")
     assert limit == 8000000 * 1024
 
 
@@ -551,17 +552,17 @@ def test_default_limit_is_the_smaller_of_meminfo_and_the_cgroup_v2_room(tmp_path
     meminfo = tmp_path / "meminfo"
     meminfo.write_text(MEMINFO)
     cg = _cgroup(tmp_path / "cg", {"memory.max": "2147483648\n", "memory.current": "536870912\n"})
-    assert pentanb.subdivision.default_max_bytes(meminfo, cg) == 2**31 - 2**29
+    assert pentanb.memory.default_max_bytes(meminfo, cg) == 2**31 - 2**29
     cg = _cgroup(tmp_path / "big", {"memory.max": str(2**40), "memory.current": "0"})
-    assert pentanb.subdivision.default_max_bytes(meminfo, cg) == 8000000 * 1024
+    assert pentanb.memory.default_max_bytes(meminfo, cg) == 8000000 * 1024
 
 
 def test_cgroup_max_means_no_limit(tmp_path):
     meminfo = tmp_path / "meminfo"
     meminfo.write_text(MEMINFO)
     cg = _cgroup(tmp_path / "cg", {"memory.max": "max\n", "memory.current": "123"})
-    assert pentanb.subdivision.default_max_bytes(meminfo, cg) == 8000000 * 1024
-    assert pentanb.subdivision._cgroup_room(cg) is None
+    assert pentanb.memory.default_max_bytes(meminfo, cg) == 8000000 * 1024
+    assert pentanb.memory._cgroup_room(cg) is None
 
 
 def test_cgroup_v1_limit_and_its_no_limit_value(tmp_path):
@@ -570,16 +571,16 @@ def test_cgroup_v1_limit_and_its_no_limit_value(tmp_path):
         tmp_path / "v1",
         {"memory/memory.limit_in_bytes": "1073741824\n", "memory/memory.usage_in_bytes": "1024\n"},
     )
-    assert pentanb.subdivision.default_max_bytes(meminfo, cg) == 2**30 - 1024
+    assert pentanb.memory.default_max_bytes(meminfo, cg) == 2**30 - 1024
     unlimited = _cgroup(
         tmp_path / "v1 free", {"memory/memory.limit_in_bytes": "9223372036854771712"}
     )
-    assert pentanb.subdivision._cgroup_room(unlimited) is None
+    assert pentanb.memory._cgroup_room(unlimited) is None
 
 
 def test_a_cgroup_over_its_limit_leaves_no_room(tmp_path):
     cg = _cgroup(tmp_path / "cg", {"memory.max": "1000", "memory.current": "5000"})
-    assert pentanb.subdivision.default_max_bytes(tmp_path / "none", cg) == 0
+    assert pentanb.memory.default_max_bytes(tmp_path / "none", cg) == 0
 
 
 @pytest.mark.parametrize(
@@ -588,18 +589,17 @@ def test_a_cgroup_over_its_limit_leaves_no_room(tmp_path):
 def test_meminfo_without_a_readable_available_line_is_not_used(tmp_path, text):
     meminfo = tmp_path / "meminfo"
     meminfo.write_text(text)
-    assert pentanb.subdivision._meminfo_available(meminfo) is None
+    assert pentanb.memory._meminfo_available(meminfo) is None
 
 
 def test_default_limit_falls_back_where_nothing_can_be_read(tmp_path, monkeypatch):
-    from pentanb import subdivision
 
     sizes = {"SC_PAGE_SIZE": 4096, "SC_PHYS_PAGES": 1_000_000}
-    monkeypatch.setattr(subdivision.os, "sysconf", lambda key: sizes[key])
-    assert subdivision.default_max_bytes(tmp_path / "a", tmp_path / "b") == 4096 * 1_000_000 // 2
+    monkeypatch.setattr(memory.os, "sysconf", lambda key: sizes[key])
+    assert memory.default_max_bytes(tmp_path / "a", tmp_path / "b") == 4096 * 1_000_000 // 2
 
     def unreadable(key):
         raise ValueError(key)
 
-    monkeypatch.setattr(subdivision.os, "sysconf", unreadable)
-    assert subdivision.default_max_bytes(tmp_path / "a", tmp_path / "b") == 4 << 30
+    monkeypatch.setattr(memory.os, "sysconf", unreadable)
+    assert memory.default_max_bytes(tmp_path / "a", tmp_path / "b") == 4 << 30

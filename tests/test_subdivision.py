@@ -25,7 +25,17 @@ from helpers import (
 )
 
 import pentanb
-from pentanb import SCHEMES, MeshError, Scheme, dual, predict_counts, shapes, smooth, subdivide
+from pentanb import (
+    SCHEMES,
+    MeshError,
+    Scheme,
+    dual,
+    memory,
+    predict_counts,
+    shapes,
+    smooth,
+    subdivide,
+)
 
 OPERATOR_NAMES = [
     "pentagonalize",
@@ -510,7 +520,7 @@ def test_a_registered_schemes_estimate_is_below_an_unknown_schemes(name):
     for E in (10**3, 10**6, 10**9):
         for V, F in ((E // 3, 2 * E // 3), (E // 2, E // 2), (2 * E // 3, 2 * E // 5)):
             E2 = s.counts(V, E, F)[1]
-            unknown = subdivision.FIXED + subdivision.UNKNOWN * subdivision.mesh_bytes(
+            unknown = subdivision.FIXED + subdivision.UNKNOWN * memory.mesh_bytes(
                 2 * E2 / 3, E2, 2 * E2 / 3
             )
             for duals in (0, 1, 2):
@@ -539,5 +549,5 @@ def test_a_scheme_in_conway_notation_is_guarded_too():
     with pytest.raises(MeshError, match=r"^dg iteration \d+ of 1,000,000,000 would build"):
         subdivide(shapes.cube(), dg, iterations=10**9)
     need = subdivision.estimate_bytes((8, 12, 6), dg, duals=0)
-    assert need >= subdivision.UNKNOWN * subdivision.mesh_bytes(24, 60, 38)  # sC
+    assert need >= subdivision.UNKNOWN * memory.mesh_bytes(24, 60, 38)  # sC
     assert pentanb.max_iterations(shapes.cube(), dg, duals=0, max_bytes=need) == 1
