@@ -9,9 +9,10 @@ import textwrap
 
 import pytest
 
-#: Each case's own process gets this address space (bytes) and these seconds.
+#: Each case's own process gets this address space (bytes), and this many seconds: a
+#: guard against a hang, far above what a case takes on a busy machine.
 MEMORY = 4 << 30
-SECONDS = 120
+SECONDS = 900
 
 PRELUDE = """
 import pickle, resource, numpy as np, pentanb as pb
