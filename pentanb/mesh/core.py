@@ -436,10 +436,24 @@ class Mesh:
         return self
 
     def with_vertices(self, vertices: ArrayLike) -> Mesh:
-        """The same connectivity with other vertex positions (``(n, 3)`` float).
+        """The same connectivity with other vertex positions.
 
         The faces and everything derived from them alone are shared with
         this mesh (nothing is derived twice); ``vertices`` is copied.
+
+        Parameters
+        ----------
+        vertices : (n, 3) float array_like
+            New positions, one per vertex of this mesh.
+
+        Returns
+        -------
+        Mesh
+
+        Raises
+        ------
+        MeshError
+            A shape other than this mesh's ``(n, 3)``, or a non-finite coordinate.
         """
         v = as_vertices(vertices)
         if v.shape != self._vertices.shape:
@@ -538,7 +552,13 @@ class Mesh:
         return (2 * self.n_components - self.euler_characteristic) // 2
 
     def face_size_histogram(self) -> dict[int, int]:
-        """``{n: number of n-gons}``, sorted by n."""
+        """The number of faces of every size.
+
+        Returns
+        -------
+        dict of int to int
+            ``{n: number of n-gons}``, sorted by n.
+        """
         return dict(self._size_counts)
 
     @_connectivity
@@ -553,12 +573,25 @@ class Mesh:
         return tuple((low + int(s), int(counts[s])) for s in np.flatnonzero(counts))
 
     def valence_histogram(self) -> dict[int, int]:
-        """``{k: number of k-valent vertices}``, sorted by k."""
+        """The number of vertices of every valence.
+
+        Returns
+        -------
+        dict of int to int
+            ``{k: number of k-valent vertices}``, sorted by k.
+        """
         vals, counts = np.unique(self.valences, return_counts=True)
         return {int(s): int(c) for s, c in zip(vals, counts)}
 
     def counts(self) -> dict:
-        """V, E, F, the face-size and valence histograms, chi and genus."""
+        """V, E, F, the face-size and valence histograms, chi and genus.
+
+        Returns
+        -------
+        dict
+            ``"V"``, ``"E"``, ``"F"`` (ints), ``"faces"`` and ``"valences"``
+            (the histograms), ``"chi"`` and ``"genus"`` (ints).
+        """
         return {
             "V": self.n_vertices,
             "E": self.n_edges,
@@ -825,7 +858,13 @@ class Mesh:
         return readonly(self._corners[tri_corners]), tri_face
 
     def component_labels_of_faces(self) -> IntArray:
-        """(m,) int: the component label of every face (read-only)."""
+        """The connected component of every face.
+
+        Returns
+        -------
+        (m,) int
+            The label (see :attr:`component_labels`) of every face, read-only.
+        """
         return readonly(self.component_labels[self._corners[self._offsets[:-1]]])
 
     @_connectivity
