@@ -58,19 +58,19 @@ def test_from_trimesh_refusals():
     with pytest.raises(TypeError, match=r"from_trimesh expects a trimesh\.Trimesh, got str"):
         from_trimesh("cube.obj")
     box = trimesh.creation.box()
-    open_box = trimesh.Trimesh(box.vertices, box.faces[1:], process=False)
-    with pytest.raises(
-        MeshError,
-        match=r"^the trimesh is not a closed, oriented manifold: edge .* it has 1 boundary "
-        r"loop \(3 edges\)$",
-    ):
-        from_trimesh(open_box)
-    # a triangle soup (corners not shared): trimesh's process=True merges them
+    flipped = box.faces.copy()
+    flipped[0] = flipped[0][::-1]
+    with pytest.raises(MeshError, match=r"^the trimesh is not .*inconsistent orientation"):
+        from_trimesh(trimesh.Trimesh(box.vertices, flipped, process=False))
+    # an open surface is a mesh with boundary
+    open_box = from_trimesh(trimesh.Trimesh(box.vertices, box.faces[1:], process=False))
+    assert [len(loop) for loop in open_box.boundary_loops] == [3]
+    # a triangle soup (corners not shared) is 12 separate triangles; trimesh's
+    # process=True merges them
     soup = trimesh.Trimesh(
         box.triangles.reshape(-1, 3), np.arange(36).reshape(-1, 3), process=False
     )
-    with pytest.raises(MeshError, match=r"boundary"):
-        from_trimesh(soup)
+    assert (from_trimesh(soup).n_components, from_trimesh(soup).n_boundary_loops) == (12, 12)
     merged = trimesh.Trimesh(box.triangles.reshape(-1, 3), np.arange(36).reshape(-1, 3))
     assert from_trimesh(merged).n_vertices == 8
 
@@ -130,8 +130,11 @@ def test_from_meshio_refusals():
         with pytest.raises(MeshError, match=r"^the meshio mesh has no triangle, quad or polygon"):
             from_meshio(lines)
     open_cube = meshio.Mesh(c.vertices, [("quad", c.corners.reshape(-1, 4)[1:])])
-    with pytest.raises(MeshError, match=r"not a closed, oriented manifold: .*1 boundary loop"):
-        from_meshio(open_cube)
+    assert [len(loop) for loop in from_meshio(open_cube).boundary_loops] == [4]
+    quads = c.corners.reshape(-1, 4).copy()
+    quads[0] = quads[0][::-1]
+    with pytest.raises(MeshError, match=r"^the meshio mesh is not .*inconsistent orientation"):
+        from_meshio(meshio.Mesh(c.vertices, [("quad", quads)]))
 
 
 def test_from_meshio_skips_lines_and_points_with_a_warning():

@@ -169,19 +169,17 @@ def test_error_two_tetrahedra_sharing_an_edge():
         Mesh(v, faces)
 
 
-def test_error_boundary_names_the_edge_and_face():
+def test_a_cube_without_a_face_is_an_open_box_with_one_loop():
     faces = [list(f) for f in CUBE_FACES]
     removed = faces.pop(5)  # [1, 5, 7, 3]
-    with pytest.raises(
-        MeshError,
-        match=r"edge \((\d+), (\d+)\) of face (\d+) has only one "
-        r"side \(a boundary\)",
-    ) as info:
-        Mesh(cube_vertices(), faces)
-    u, w, f = map(int, re.search(r"\((\d+), (\d+)\) of face (\d+)", str(info.value)).groups())
-    # the edge runs opposite to one of the removed face's edges, inside face f
-    assert any(removed[i] == w and removed[(i + 1) % 4] == u for i in range(4))
-    assert any(faces[f][i] == u and faces[f][(i + 1) % 4] == w for i in range(4))
+    m = Mesh(cube_vertices(), faces)
+    assert not m.is_closed and m.n_boundary_loops == 1 and m.n_edges == 12
+    (loop,) = m.boundary_loops
+    # the loop runs opposite to the removed face's edges, each inside a kept face
+    tail, head = m.corners[loop], m.head[loop]
+    for u, w in zip(tail.tolist(), head.tolist()):
+        assert any(removed[i] == w and removed[(i + 1) % 4] == u for i in range(4))
+    assert sorted(tail.tolist()) == sorted(removed)
 
 
 def test_error_vertex_with_two_fans():
@@ -251,9 +249,11 @@ def test_valid_meshes_raise_nothing():
 
 # ====================================================================== from_csr, with_vertices
 def test_from_csr_validates_by_default():
-    c = np.array(functools.reduce(operator.iadd, CUBE_FACES[:5], []))
-    o = np.arange(0, 21, 4)
-    with pytest.raises(MeshError, match="boundary"):
+    faces = [list(f) for f in CUBE_FACES]
+    faces[2] = faces[2][::-1]
+    c = np.array(functools.reduce(operator.iadd, faces, []))
+    o = np.arange(0, 25, 4)
+    with pytest.raises(MeshError, match="inconsistent orientation"):
         Mesh.from_csr(cube_vertices(), c, o)
 
 

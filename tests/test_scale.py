@@ -63,6 +63,18 @@ def cube_faces():
     return face_lists(shapes.cube())
 
 
+def moebius_band(n: int = 5) -> tuple[np.ndarray, list[list[int]]]:
+    """A band of n quads closed with a half twist: non-orientable."""
+    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    half = t / 2
+    centre = np.stack([np.cos(t), np.sin(t), np.zeros(n)], 1)
+    across = np.stack([np.cos(half) * np.cos(t), np.cos(half) * np.sin(t), np.sin(half)], 1)
+    v = np.concatenate([centre - 0.3 * across, centre + 0.3 * across])  # b_i, then t_i
+    quads = [[i, i + 1, n + i + 1, n + i] for i in range(n - 1)]
+    quads.append([n - 1, n, 0, 2 * n - 1])  # b_{n-1}, t_0, b_0, t_{n-1}: the twist
+    return v, quads
+
+
 def broken_meshes() -> dict[str, tuple[np.ndarray, list[list[int]]]]:
     """One mesh for every check of the constructor (each fails that check only, or first)."""
     cube_v = shapes.cube().vertices
@@ -87,7 +99,15 @@ def broken_meshes() -> dict[str, tuple[np.ndarray, list[list[int]]]]:
     out["three faces on an edge"] = (v5, [[0, 1, 2], [1, 0, 3], [0, 1, 4]])
     v6 = np.concatenate([TETRA, [[0, -1, 0], [0, 0, -1]]])
     out["two tetrahedra on an edge"] = (v6, tetra_faces(0, 1, 2, 3) + tetra_faces(0, 1, 4, 5))
-    out["boundary"] = (cube_v, cube_faces()[:5])
+    out["two fans at a vertex"] = (
+        np.concatenate([TETRA, [[-1.0, 0, 0], [0, -1, 0]]]),
+        [[0, 1, 2], [0, 4, 5]],
+    )
+    out["a fan and a cycle at a vertex"] = (
+        np.concatenate([TETRA, [[1.0, 1, 1], [0, 1, 1]]]),
+        tetra_faces(0, 1, 2, 3) + [[3, 4, 5]],
+    )
+    out["Moebius band"] = moebius_band()
     v7 = np.concatenate([TETRA, TETRA[1:] + [0, 0, 1]])
     out["vertex with two fans"] = (v7, tetra_faces(0, 1, 2, 3) + tetra_faces(3, 4, 5, 6))
     out["unused vertex"] = (np.concatenate([cube_v, [[5.0, 5, 5]]]), cube_faces())
@@ -96,7 +116,12 @@ def broken_meshes() -> dict[str, tuple[np.ndarray, list[list[int]]]]:
     # the same failures among faces of one size and of more than 16 sides
     big = shapes.torus(20, 3)
     faces = face_lists(big)
-    out["boundary, quads"] = (big.vertices, faces[1:])
+    faces[0] = faces[0][::-1]
+    out["flipped face, quads"] = (big.vertices, faces)
+    out["an interior vertex of 2 edges, open"] = (
+        [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0.4, 0.4, 0]],
+        [[0, 1, 4, 2], [1, 3, 2, 4]],
+    )
     prism = [list(range(20))[::-1], list(range(20, 40))]
     prism += [[i, (i + 1) % 20, 20 + (i + 1) % 20, 20 + i] for i in range(20)]
     ring = np.linspace(0, 2 * np.pi, 20, endpoint=False)

@@ -1,9 +1,21 @@
-"""The boundary of an open mesh, for error messages: how many loops, how long.
+"""The boundary of an open mesh: its loops, found once, and the words for messages.
 
-A pentanb mesh must be closed; when faces leave edges with one side only,
-:meth:`pentanb.Mesh` names the first such edge and, through
-:func:`describe_boundary`, says how many boundary loops (holes, open rims)
-there are, so a user can tell one missing face from an open scan.
+A :class:`~pentanb.Mesh` may have a boundary: edges with a face on one side
+only.  Every such edge is traversed by one face half-edge (its *boundary
+half-edge*, face on the left); following them head to tail gives the
+*boundary loops*, one closed chain round every hole or open rim.
+
+The representation (see :attr:`pentanb.Mesh.twin`) follows geometry-central:
+every boundary loop is an implicit *hole face*, and the boundary half-edge
+``boundary_halfedges[j]`` has as its twin the hole half-edge ``H + j``
+(``H`` the number of face half-edges), running the other way.  Every
+half-edge then has a twin; a closed mesh is the case of no loops, and all
+its arrays are what they were before open meshes existed.
+
+:func:`pair_open` pairs the half-edges of an oriented manifold with
+boundary; :func:`loop_order` chains its boundary half-edges into loops.
+:func:`boundary_loops` and :func:`describe_boundary` count loops for
+messages, from plain ``tail`` and ``head`` arrays.
 """
 
 from __future__ import annotations
@@ -11,7 +23,28 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
-__all__ = ["boundary_edges", "boundary_loops", "describe_boundary"]
+__all__ = [
+    "boundary_edges",
+    "boundary_loops",
+    "describe_boundary",
+    "pair_open",
+    "loop_order",
+    "orientation_classes",
+    "open_twins",
+    "CLOSED",
+]
+
+
+def _closed_boundary() -> tuple[np.ndarray, np.ndarray]:
+    empty, one = np.zeros(0, dtype=np.int64), np.zeros(1, dtype=np.int64)
+    empty.setflags(write=False)
+    one.setflags(write=False)
+    return empty, one
+
+
+#: The boundary record of a closed mesh: no boundary half-edge, no loop
+#: (shared, read-only; see :attr:`pentanb.Mesh.boundary_halfedges`).
+CLOSED = _closed_boundary()
 
 
 def boundary_edges(tail: ArrayLike, head: ArrayLike) -> np.ndarray:
@@ -80,3 +113,229 @@ def describe_boundary(tail: ArrayLike, head: ArrayLike) -> str:
     edges = ", ".join(shown[:-1]) + " and " + shown[-1] if len(loops) <= 5 else ", ".join(shown)
     more = "" if len(loops) <= 5 else f", ... {sum(loops):,} in all"
     return f"{len(loops)} boundary loops ({edges}{more} edges)"
+
+
+def pair_open(tail: np.ndarray, head: np.ndarray, n: int) -> np.ndarray | None:
+    """The opposite of every half-edge of an oriented manifold with boundary.
+
+    The numpy path for meshes that do not pair up completely
+    (:func:`pentanb.mesh.halfedge.pair_twins` is the fast path for closed
+    meshes): one sort of the directed edges, one search for every
+    half-edge's opposite.
+
+    Parameters
+    ----------
+    tail, head : (H,) int
+        The half-edges ``tail[h] -> head[h]``, vertices in ``[0, n)``.
+    n : int
+        Number of vertices.
+
+    Returns
+    -------
+    (H,) int or None
+        ``twin[h]``, the half-edge ``head[h] -> tail[h]``, or -1 where there
+        is none (a boundary half-edge); None when a directed edge is used
+        twice (inconsistent orientation or a non-manifold edge) or a
+        half-edge starts and ends at one vertex.
+    """
+    H = tail.size
+    if H == 0:
+        return np.empty(0, dtype=tail.dtype)
+    t = tail.astype(np.int64)
+    w = head.astype(np.int64)
+    if (t == w).any():
+        return None
+    key = t * np.int64(n) + w
+    order = np.argsort(key, kind="stable")
+    skey = key[order]
+    if (skey[1:] == skey[:-1]).any():
+        return None
+    want = w * np.int64(n) + t
+    pos = np.minimum(np.searchsorted(skey, want), H - 1)
+    twin = np.where(skey[pos] == want, order[pos], -1)
+    return twin.astype(tail.dtype)
+
+
+def loop_order(
+    tail: np.ndarray, head: np.ndarray, bh: np.ndarray, n: int
+) -> tuple[np.ndarray, np.ndarray, int]:
+    """Chain boundary half-edges into loops.
+
+    Parameters
+    ----------
+    tail, head : (H,) int
+        The half-edges of the mesh.
+    bh : (B,) int
+        Its boundary half-edges (those without an opposite), in increasing order.
+    n : int
+        Number of vertices.
+
+    Returns
+    -------
+    loops : (B,) int
+        ``bh`` reordered loop after loop; in every loop the head of a
+        half-edge is the tail of the next (and the last's head the first's
+        tail).  Every loop starts at its smallest half-edge; loops come in
+        the order of those.
+    offsets : (L + 1,) int
+        Loop ``i`` is ``loops[offsets[i]:offsets[i + 1]]``.
+    bad : int
+        -1; or the first vertex that more than one boundary half-edge
+        leaves (two fans of faces meet there: a non-manifold vertex), and
+        then ``loops`` and ``offsets`` are empty.
+
+    Notes
+    -----
+    Whole-array passes: the smallest half-edge of every loop and every
+    half-edge's distance from it are found by pointer doubling
+    (``O(B log B)``), so one loop of a million edges costs no Python loop
+    of a million steps.
+    """
+    B = bh.size
+    empty = np.zeros(0, dtype=np.int64)
+    if B == 0:
+        return empty, np.zeros(1, dtype=np.int64), -1
+    t = tail[bh].astype(np.int64)
+    w = head[bh].astype(np.int64)
+    leaving = np.bincount(t, minlength=n)
+    twice = np.flatnonzero(leaving > 1)
+    if twice.size:
+        return empty, np.zeros(1, dtype=np.int64), int(twice[0])
+    out = np.full(n, -1, dtype=np.int64)
+    out[t] = np.arange(B)
+    nxt = out[w]
+    if (nxt < 0).any():  # pragma: no cover - in and out balance at every vertex
+        return empty, np.zeros(1, dtype=np.int64), int(w[np.flatnonzero(nxt < 0)[0]])
+    # the smallest position of every loop: after s doublings lab[i] is the
+    # least of the 2**s positions from i on
+    ids = np.arange(B, dtype=np.int64)
+    lab, p = ids.copy(), nxt.copy()
+    span = 1
+    while span < B:
+        np.minimum(lab, lab[p], out=lab)
+        p = p[p]
+        span *= 2
+    # the distance of every position from its loop's first (list ranking)
+    leader = lab == ids
+    prv = np.empty(B, dtype=np.int64)
+    prv[nxt] = ids
+    q = np.where(leader, ids, prv)
+    d = np.where(leader, 0, 1).astype(np.int64)
+    while True:
+        qq = q[q]
+        if np.array_equal(qq, q):
+            break
+        d += d[q]
+        q = qq
+    order = np.lexsort((d, lab))
+    offsets = np.append(np.flatnonzero(d[order] == 0), B).astype(np.int64)
+    return bh[order].astype(np.int64), offsets, -1
+
+
+def orientation_classes(
+    f1: np.ndarray, f2: np.ndarray, same: np.ndarray, m: int
+) -> tuple[np.ndarray, np.ndarray]:
+    """Which faces to reverse so that every edge's two faces run along it oppositely.
+
+    Parameters
+    ----------
+    f1, f2 : (k,) int
+        The two faces of every edge with two faces.
+    same : (k,) bool
+        Whether the two faces run along the edge in the same direction.
+    m : int
+        Number of faces.
+
+    Returns
+    -------
+    flip : (m,) int8
+        1 for the faces to reverse, 0 for the others: in every connected
+        piece, the fewer of the two classes of faces that agree with each
+        other (the class without the piece's smallest face when tied).
+    conflicts : (c,) int
+        The edges (indices into ``f1``) that no choice of ``flip`` mends:
+        empty exactly when every piece is orientable.  A piece with such
+        an edge is non-orientable (a Moebius band, say).
+
+    Notes
+    -----
+    Breadth first from every piece's smallest face at once, one level at
+    a time, with whole-array steps.
+    """
+    f1 = np.asarray(f1, dtype=np.int64)
+    f2 = np.asarray(f2, dtype=np.int64)
+    same = np.asarray(same, dtype=np.int8)
+    src = np.concatenate([f1, f2])
+    dst = np.concatenate([f2, f1])
+    par = np.concatenate([same, same])
+    order = np.argsort(src, kind="stable")
+    src, dst, par = src[order], dst[order], par[order]
+    start = np.searchsorted(src, np.arange(m + 1))
+    # the pieces: the smallest face of every piece (hook and jump)
+    lab = np.arange(m, dtype=np.int64)
+    while True:
+        lu, lw = lab[f1], lab[f2]
+        differ = lu != lw
+        if not differ.any():
+            break
+        np.minimum.at(lab, np.maximum(lu[differ], lw[differ]), np.minimum(lu[differ], lw[differ]))
+        while True:
+            jumped = lab[lab]
+            if np.array_equal(jumped, lab):
+                break
+            lab = jumped
+    flip = np.full(m, -1, dtype=np.int8)
+    frontier = np.flatnonzero(lab == np.arange(m))
+    flip[frontier] = 0
+    while frontier.size:
+        a, b = start[frontier], start[frontier + 1]
+        sizes = b - a
+        idx = np.repeat(a - np.cumsum(sizes) + sizes, sizes) + np.arange(int(sizes.sum()))
+        nb = dst[idx]
+        val = flip[src[idx]] ^ par[idx]
+        new = flip[nb] < 0
+        flip[nb[new]] = val[new]
+        frontier = np.unique(nb[new])
+    conflicts = np.flatnonzero((flip[f1] ^ flip[f2]) != same)
+    # in every piece, reverse the fewer faces (the smallest face's side when tied)
+    size = np.bincount(lab, minlength=m)
+    flipped = np.bincount(lab, weights=flip, minlength=m)
+    flip ^= (2 * flipped > size)[lab].astype(np.int8)
+    return flip, conflicts
+
+
+def open_twins(
+    tail: np.ndarray, head: np.ndarray, n: int
+) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]] | None:
+    """The twins and boundary loops of an oriented manifold with boundary, or None.
+
+    Parameters
+    ----------
+    tail, head : (H,) int
+    n : int
+
+    Returns
+    -------
+    twin : (H,) int
+        The opposite half-edge; ``H + j`` for the j-th boundary half-edge
+        (its hole half-edge, see :attr:`pentanb.Mesh.twin`).
+    boundary : ((B,) int, (L + 1,) int)
+        The boundary half-edges loop after loop (read-only) and the loops'
+        offsets (see :func:`loop_order`).
+
+    None when a directed edge is used twice, a half-edge is a loop, or a
+    vertex has more than one boundary fan.
+    """
+    twin = pair_open(tail, head, n)
+    if twin is None:
+        return None
+    bh, off, bad = loop_order(tail, head, np.flatnonzero(twin < 0), n)
+    if bad >= 0:
+        return None
+    H = tail.size
+    if H + bh.size > np.iinfo(twin.dtype).max:  # pragma: no cover - beyond 2**31 half-edges
+        twin = twin.astype(np.int64)
+    twin[bh] = np.arange(H, H + bh.size, dtype=twin.dtype)
+    bh.setflags(write=False)
+    off.setflags(write=False)
+    return twin, (bh, off)

@@ -31,6 +31,7 @@ __all__ = [
     "dual_source_offsets",
     "dual_again",
     "rescaled",
+    "loop_offsets",
 ]
 
 
@@ -43,6 +44,7 @@ def trusted(
     rings: Rings | Callable[[], Rings | Several] | None = None,
     size_counts: tuple[tuple[int, int], ...] | None = None,
     dual_of: Mesh | None = None,
+    closed: bool = False,
 ) -> Mesh:
     """The internal constructor: a mesh from arrays the package itself made.
 
@@ -67,7 +69,11 @@ def trusted(
         The face-size histogram by ascending size, when the caller knows it.
     dual_of : Mesh, optional
         The mesh this one is the dual of: the dual of this mesh then reuses
-        that mesh's connectivity (:func:`dual_again`).
+        that mesh's connectivity (:func:`dual_again`).  Closed meshes only.
+    closed : bool
+        True when the faces are known to close up (an output of a closed
+        input): :attr:`Mesh.is_closed` and :attr:`Mesh.n_edges` then need
+        no pass over the twins.  Never True for an open mesh.
 
     Returns
     -------
@@ -81,6 +87,7 @@ def trusted(
         rings=rings,
         size_counts=size_counts,
         dual_of=dual_of,
+        closed=closed,
     )
 
 
@@ -177,3 +184,9 @@ def rescaled(mesh: Mesh, shift: int) -> Mesh:
         When a scaled position is not finite.
     """
     return mesh._rescaled(shift)
+
+
+def loop_offsets(mesh: Any) -> IntArray:
+    """(L + 1,) int: loop ``i`` of ``mesh`` (a Mesh or its :func:`faces_only`) is
+    ``mesh.boundary_halfedges[offsets[i]:offsets[i + 1]]`` (``[0]`` when closed)."""
+    return mesh._boundary[1]

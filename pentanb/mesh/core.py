@@ -15,6 +15,14 @@ dual of a dual), so it is derived once for all of them.
 Operators build their outputs, valid by construction, through one internal
 constructor, :func:`pentanb.mesh.build.trusted`; :mod:`pentanb.mesh.build`
 is the only way code outside this package reaches a mesh's caches.
+
+A mesh may be open (a surface with boundary).  Each boundary loop is an
+implicit *hole face* (geometry-central's representation): the twin of a
+boundary half-edge is a hole half-edge numbered from ``H`` on (see
+:attr:`Mesh.twin`), so that every half-edge has a twin and every vertex's
+edges one cycle round it (:attr:`Mesh.vertex_ring`).  A closed mesh is the
+case of no loops, and its arrays are those of a mesh without this
+extension, bit for bit.
 """
 
 from __future__ import annotations
@@ -26,6 +34,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import _jit
+from .boundary import CLOSED as _CLOSED
+from .boundary import describe_boundary, open_twins
 from .coerce import (
     FloatArray,
     IntArray,
@@ -45,6 +55,7 @@ from .halfedge import (
     halfedge_face,
     head_of,
     next_of,
+    open_vertex_rings,
     pair_twins,
     prev_of,
     rotation_of,
@@ -54,7 +65,7 @@ from .halfedge import (
 from .validate import validate as validate_mesh
 from .validate import validate_rings
 
-__all__ = ["Mesh", "Rings", "Several", "check_mesh"]
+__all__ = ["Mesh", "Rings", "Several", "check_mesh", "check_closed"]
 
 Rings = tuple[IntArray, IntArray]
 _T = TypeVar("_T")
@@ -153,30 +164,41 @@ def _geometry(func: Callable[[Mesh], _T]) -> _Derived[_T]:
 
 
 class Mesh:
-    """A closed, oriented 2-manifold polygon mesh (immutable).
+    """An oriented 2-manifold polygon mesh, closed or with boundary (immutable).
 
     Parameters
     ----------
     vertices : (n, 3) float array_like
         Vertex positions.
     faces : (m,) sequence of int sequences, or (m, k) int array_like
-        Vertex indices of each face, counter-clockwise seen from outside.
-        Faces may have any number (>= 3) of sides.
+        Vertex indices of each face, counter-clockwise seen from outside
+        (from the side of the normal).  Faces may have any number (>= 3)
+        of sides.
 
     Raises
     ------
     MeshError
-        When the input is not a closed, consistently oriented 2-manifold
-        polygon mesh: an index out of range, a face with repeated or fewer
-        than 3 vertices, a directed edge used twice, a boundary edge, a
-        vertex whose faces form more than one fan, an unused vertex or a
-        non-finite coordinate.  Also refused, because the dual (the paper's
-        smoothing) cannot be built from them: a vertex with fewer than 3
-        edges, and two faces that share more than one edge.  The message
-        names the culprit.
+        When the input is not a consistently oriented 2-manifold polygon
+        mesh: an index out of range, a face with repeated or fewer than 3
+        vertices, an edge with more than two faces (a non-manifold edge),
+        two faces running along an edge in the same direction
+        (inconsistent orientation; "non-orientable" when no choice of
+        orientations mends it, as on a Moebius band), a vertex whose faces
+        form more than one fan (or a fan and a cycle), an unused vertex or
+        a non-finite coordinate.  Also refused, because the dual (the
+        paper's smoothing) cannot be built from them: an interior vertex
+        with fewer than 3 edges, and two faces that share more than one
+        edge.  The message names the culprit.
 
     Notes
     -----
+    Every edge has one or two faces: an edge with one is a boundary edge,
+    and the boundary edges form :attr:`boundary_loops` (holes, open rims).
+    Every vertex's faces form one cycle round it (an interior vertex) or
+    one fan (a boundary vertex, which then has one more edge than faces).
+    A closed mesh is the case without boundary (:attr:`is_closed`); its
+    every array is what it was before open meshes were accepted.
+
     A mesh is sealed: setting, replacing or deleting any attribute raises
     AttributeError, and every array it hands out is read-only.  The
     constructor and :meth:`from_csr` copy their inputs, so changing the
@@ -196,6 +218,9 @@ class Mesh:
     ...                  [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]])
     >>> m.n_vertices, m.n_edges, m.n_faces, m.genus
     (4, 6, 4, 0)
+    >>> disk = pentanb.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])
+    >>> disk.is_closed, disk.n_edges, disk.n_boundary_loops, disk.euler_characteristic
+    (False, 4, 1, 1)
     >>> m.vertices[0, 0] = 5.0
     Traceback (most recent call last):
     ...
@@ -248,6 +273,7 @@ class Mesh:
         size_counts: tuple[tuple[int, int], ...] | None = None,
         dual_of: Mesh | None = None,
         shared: _Connectivity | None = None,
+        closed: bool = False,
     ) -> None:
         """Initialise a new mesh: every mesh with vertices is set up here, once.
 
@@ -276,6 +302,11 @@ class Mesh:
             The connectivity record of another mesh with these very faces
             (``corners`` and ``offsets`` must be its arrays): what it has
             derived is shared.
+        closed : bool
+            True when the caller knows the faces close up (an operator's
+            output from a closed input): recorded, so that no pass over the
+            twins is needed to tell (:attr:`is_closed`, :attr:`n_edges`).
+            False: found out when first needed.
         """
         if hasattr(self, "_vertices"):
             raise AttributeError("a Mesh is initialised once: meshes are immutable")
@@ -293,9 +324,11 @@ class Mesh:
                     shared.values["vertex_ring"] = frozen(tuple(rings))
             if size_counts is not None:
                 shared.values["_size_counts"] = tuple(size_counts)
+            if closed:
+                shared.values["_boundary"] = _CLOSED
         elif corners is not shared.corners or offsets is not shared.offsets:
             raise ValueError("shared connectivity needs the very corners and offsets it holds")
-        elif twin is not None or rings is not None or size_counts is not None:
+        elif twin is not None or rings is not None or size_counts is not None or closed:
             raise ValueError("twin, rings and size counts come with the shared connectivity")
         init = object.__setattr__
         init(self, "_vertices", readonly(vertices))
@@ -317,6 +350,7 @@ class Mesh:
         size_counts: tuple[tuple[int, int], ...] | None = None,
         dual_of: Mesh | None = None,
         shared: _Connectivity | None = None,
+        closed: bool = False,
     ) -> Mesh:
         """The internal constructor: a mesh from arrays the package itself made.
 
@@ -334,6 +368,7 @@ class Mesh:
             size_counts=size_counts,
             dual_of=dual_of,
             shared=shared,
+            closed=closed,
         )
         return self
 
@@ -390,9 +425,11 @@ class Mesh:
         offsets : (m + 1,) int
             Face ``f`` is ``corners[offsets[f]:offsets[f + 1]]``; ``offsets[0] == 0``.
         twin : (H,) int, optional
-            The opposite half-edge of each half-edge, when the caller knows
-            it: checked (an involution pairing every half-edge with its
-            reverse) instead of derived by sorting.
+            The opposite half-edge of each half-edge of a closed mesh, when
+            the caller knows it: checked (an involution pairing every
+            half-edge with its reverse) instead of derived by sorting.  An
+            open mesh's twins (which name hole half-edges, ``>= H``) are
+            always derived: a twin outside ``[0, H)`` is refused.
         validate : bool
             True: every check of the constructor.  False: only what the
             arrays' consistency rests on (indices in range, finite
@@ -473,6 +510,8 @@ class Mesh:
             for name in ("twin", "vertex_ring")
             if name in shared.values or name in shared.producers
         }
+        if known and not self.is_closed:  # an open mesh's twins and rings are derived again
+            known = {}
         return (_rebuild, (self._vertices, self._corners, self._offsets, known))
 
     # ------------------------------------------------------------------ raw arrays
@@ -514,8 +553,78 @@ class Mesh:
 
     @property
     def n_edges(self) -> int:
-        """Number of edges E (= H / 2 on a closed mesh)."""
-        return int(self._corners.size // 2)
+        """Number of edges E: ``(H + B) / 2``, B boundary edges (``H / 2`` when closed)."""
+        return int((self._corners.size + self._boundary[0].size) // 2)
+
+    # ------------------------------------------------------------------ boundary
+    @_connectivity
+    def _boundary(self) -> tuple[IntArray, IntArray]:
+        """The boundary half-edges loop after loop (B,) and the loops' offsets (L + 1,).
+
+        Recorded when the twins are paired (or by an operator whose output
+        is closed); otherwise read from the twins: the boundary half-edge
+        ``h`` with ``twin[h] = H + j`` is the j-th, and a loop ends where
+        the next half-edge does not start at the previous one's head.
+        """
+        values = self._shared.values
+        twin = self.twin  # pairing the twins records the boundary
+        got = values.get("_boundary")
+        if got is not None:
+            return got
+        H = twin.size
+        if H == 0 or int(twin.max()) < H:
+            return _CLOSED
+        at = np.flatnonzero(twin >= H)
+        bh = np.empty(at.size, dtype=np.int64)
+        bh[twin[at].astype(np.int64) - H] = at
+        head = self.head
+        starts = np.flatnonzero(self._corners[bh[1:]] != head[bh[:-1]]) + 1
+        offsets = np.concatenate([[0], starts, [bh.size]]).astype(np.int64)
+        return readonly(bh), readonly(offsets)
+
+    @property
+    def is_closed(self) -> bool:
+        """True when every edge has two faces (no boundary)."""
+        return self._boundary[0].size == 0
+
+    @property
+    def n_boundary_edges(self) -> int:
+        """Number of boundary edges B (edges with one face); 0 when closed."""
+        return int(self._boundary[0].size)
+
+    @property
+    def n_boundary_loops(self) -> int:
+        """Number of boundary loops b (holes and open rims); 0 when closed."""
+        return int(self._boundary[1].size - 1)
+
+    @property
+    def boundary_halfedges(self) -> IntArray:
+        """(B,) int: the half-edges without an opposite, loop after loop (read-only).
+
+        In every loop the head of a half-edge is the tail of the next (the
+        last's head the first's tail); the face of each is on its left, the
+        hole on its right.  A loop starts at its smallest half-edge, and
+        loops come in the order of those.  The twin of
+        ``boundary_halfedges[j]`` is the hole half-edge ``H + j``.
+        """
+        return self._boundary[0]
+
+    @property
+    def boundary_loops(self) -> tuple[IntArray, ...]:
+        """The boundary half-edges of every loop, in order: a tuple of (B_i,) int arrays.
+
+        Empty for a closed mesh.  Loop ``i``'s vertices, in order, are
+        ``mesh.corners[mesh.boundary_loops[i]]``.
+        """
+        bh, off = self._boundary
+        return tuple(bh[a:b] for a, b in zip(off[:-1].tolist(), off[1:].tolist()))
+
+    @_connectivity
+    def is_boundary_vertex(self) -> NDArray[np.bool_]:
+        """(n,) bool: the vertices on the boundary (all False when closed)."""
+        out = np.zeros(self.n_vertices, dtype=bool)
+        out[self._corners[self._boundary[0]]] = True
+        return readonly(out)
 
     @_connectivity
     def face_sizes(self) -> IntArray:
@@ -529,13 +638,28 @@ class Mesh:
 
     @_connectivity
     def valences(self) -> IntArray:
-        """(n,) int: number of edges at every vertex."""
+        """(n,) int: number of edges at every vertex.
+
+        On the boundary a vertex has one more edge than it has faces (a
+        vertex of one face, a corner, has 2 edges).
+        """
+        counts = np.bincount(self._corners, minlength=self.n_vertices)
+        bh = self._boundary[0]
+        if bh.size:
+            counts += np.bincount(self._corners[bh], minlength=self.n_vertices)
+        return readonly(counts.astype(self._corners.dtype, copy=False))
+
+    @_connectivity
+    def _face_counts(self) -> IntArray:
+        """(n,) int: number of faces at every vertex (= valences when closed)."""
+        if self.is_closed:
+            return self.valences
         counts = np.bincount(self._corners, minlength=self.n_vertices)
         return readonly(counts.astype(self._corners.dtype, copy=False))
 
     @property
     def euler_characteristic(self) -> int:
-        """V - E + F."""
+        """V - E + F (``2 - 2g - b`` for a connected mesh of genus g with b boundary loops)."""
         return self.n_vertices - self.n_edges + self.n_faces
 
     @_connectivity
@@ -545,11 +669,13 @@ class Mesh:
 
     @property
     def genus(self) -> int:
-        """Total genus: ``(2 * components - (V - E + F)) / 2``.
+        """Total genus: ``(2 * components - loops - (V - E + F)) / 2``.
 
-        For a connected mesh this is the usual g of ``V - E + F = 2 - 2g``.
+        For a connected mesh this is the g of ``V - E + F = 2 - 2g - b``,
+        b its boundary loops (``2 - 2g`` when closed); for several
+        components, the sum of theirs.
         """
-        return (2 * self.n_components - self.euler_characteristic) // 2
+        return (2 * self.n_components - self.n_boundary_loops - self.euler_characteristic) // 2
 
     def face_size_histogram(self) -> dict[int, int]:
         """The number of faces of every size.
@@ -591,8 +717,11 @@ class Mesh:
         dict
             ``"V"``, ``"E"``, ``"F"`` (ints), ``"faces"`` and ``"valences"``
             (the histograms), ``"chi"`` and ``"genus"`` (ints).
+
+        An open mesh adds ``"B"``, its boundary edges, and ``"loops"``, its
+        boundary loops (``chi = 2 - 2 genus - loops`` when connected).
         """
-        return {
+        out = {
             "V": self.n_vertices,
             "E": self.n_edges,
             "F": self.n_faces,
@@ -601,10 +730,17 @@ class Mesh:
             "chi": self.euler_characteristic,
             "genus": self.genus,
         }
+        if not self.is_closed:
+            out["B"] = self.n_boundary_edges
+            out["loops"] = self.n_boundary_loops
+        return out
 
     def __repr__(self) -> str:
         hist = ", ".join(f"{n}:{c}" for n, c in self.face_size_histogram().items())
-        return f"Mesh(V={self.n_vertices}, E={self.n_edges}, F={self.n_faces}, faces={{{hist}}})"
+        rim = "" if self.is_closed else f", boundary loops={self.n_boundary_loops}"
+        return (
+            f"Mesh(V={self.n_vertices}, E={self.n_edges}, F={self.n_faces}, faces={{{hist}}}{rim})"
+        )
 
     # ------------------------------------------------------------------ half-edges
     @_connectivity
@@ -646,12 +782,26 @@ class Mesh:
 
     @_connectivity
     def twin(self) -> IntArray:
-        """(H,) int: the opposite half-edge (same edge, other face)."""
+        """(H,) int: the opposite half-edge (same edge, other face).
+
+        On an open mesh the twin of a boundary half-edge is a *hole*
+        half-edge, numbered ``H + j`` (``j`` its place in
+        :attr:`boundary_halfedges`): ``twin[h] >= H`` exactly on the
+        boundary.  Each boundary loop is an implicit hole face whose
+        half-edges run opposite to the boundary's (geometry-central's
+        representation), so every half-edge has a twin; the hole
+        half-edges have no corner and no entry in the arrays of length H.
+        """
         k = self._uniform_size
         twin = pair_twins(self._corners, None if k else self.head, self.n_vertices, k)
-        if twin is None:
-            raise MeshError("the faces do not pair up into a closed, oriented manifold")
-        return readonly(twin)
+        if twin is not None:
+            self._shared.values.setdefault("_boundary", _CLOSED)
+            return readonly(twin)
+        got = open_twins(self._corners, self.head, self.n_vertices)
+        if got is None:  # (only faces nothing validated: validation names the culprit)
+            raise MeshError("the faces do not pair up into an oriented manifold")
+        self._shared.values["_boundary"] = got[1]
+        return readonly(got[0])
 
     @_connectivity
     def _forward(self) -> NDArray[np.bool_]:
@@ -659,13 +809,28 @@ class Mesh:
         return readonly(self._corners < self.head)
 
     @_connectivity
+    def _primary(self) -> NDArray[np.bool_]:
+        """(H,) bool: the half-edge that numbers its edge.
+
+        ``tail < head`` (:attr:`_forward`), and on the boundary the edge's
+        one half-edge whichever its direction.
+        """
+        bh = self._boundary[0]
+        if not bh.size:
+            return self._forward
+        primary = self._forward.copy()
+        primary[bh] = True
+        return readonly(primary)
+
+    @_connectivity
     def halfedge_edge(self) -> IntArray:
         """(H,) int: the edge id of every half-edge.
 
         Edge ``e`` is numbered by the order of its half-edge with
-        ``tail < head``; see :attr:`edges`.
+        ``tail < head`` (on the boundary: of its one half-edge); see
+        :attr:`edges`.
         """
-        primary = self._forward
+        primary = self._primary
         ids = np.cumsum(primary, dtype=self._corners.dtype)
         ids -= 1
         back = np.flatnonzero(~primary)
@@ -674,20 +839,27 @@ class Mesh:
 
     @_connectivity
     def edge_halfedge(self) -> IntArray:
-        """(E,) int: for every edge, its half-edge with ``tail < head`` (each edge once)."""
-        return readonly(np.flatnonzero(self._forward).astype(self._corners.dtype, copy=False))
+        """(E,) int: for every edge, its half-edge with ``tail < head`` (each edge once).
+
+        A boundary edge's is its one half-edge, whichever its direction.
+        """
+        return readonly(np.flatnonzero(self._primary).astype(self._corners.dtype, copy=False))
 
     @_connectivity
     def edges(self) -> IntArray:
         """(E, 2) int: the edges as (smaller, larger) vertex pairs."""
         h = self.edge_halfedge
-        return readonly(np.stack([self._corners[h], self.head[h]], axis=1))
+        if self.is_closed:
+            return readonly(np.stack([self._corners[h], self.head[h]], axis=1))
+        a, b = self._corners[h], self.head[h]
+        return readonly(np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1))
 
     @_connectivity
     def rotation(self) -> IntArray:
         """(H,) int: the next outgoing half-edge counter-clockwise around its tail.
 
-        ``rotation[h] = twin[prev[h]]``.
+        ``rotation[h] = twin[prev[h]]``: on an open mesh a hole half-edge
+        (``>= H``) where ``prev[h]`` is on the boundary, the end of the fan.
         """
         return readonly(rotation_of(self.twin, self._offsets, self._uniform_size, self))
 
@@ -697,13 +869,24 @@ class Mesh:
 
         Returns
         -------
-        ring : (H,) int
-            Half-edges, vertex after vertex, each vertex's in rotation order.
+        ring : (H + B,) int
+            Half-edges, vertex after vertex, each vertex's in rotation order,
+            starting at its largest.  A boundary vertex's ring starts with
+            its hole half-edge (``>= H``, running along the boundary to the
+            vertex before it), then its face half-edges from the boundary
+            edge it leaves by, counter-clockwise; on a closed mesh B = 0.
         ring_offsets : (n + 1,) int
-            Vertex ``v``'s half-edges are ``ring[ring_offsets[v]:ring_offsets[v+1]]``.
+            Vertex ``v``'s half-edges are ``ring[ring_offsets[v]:ring_offsets[v+1]]``:
+            as many as its edges (:attr:`valences`).
         """
-        ring, off = vertex_rings(self.rotation, self._corners, self.valences)
-        return readonly(ring), readonly(off)
+        bh, off = self._boundary
+        if not bh.size:
+            ring, off = vertex_rings(self.rotation, self._corners, self.valences)
+            return readonly(ring), readonly(off)
+        ring, ring_off = open_vertex_rings(
+            self.rotation, self._corners, self.head, bh, off, self.valences
+        )
+        return readonly(ring), readonly(ring_off)
 
     def _ring_faces(self) -> IntArray:
         """(H,) int: the face of every entry of :attr:`vertex_ring`, in its order.
@@ -717,6 +900,8 @@ class Mesh:
         made = self._shared.values.pop("_ring_faces", None)
         if made is not None:
             return made
+        if not self.is_closed:
+            raise MeshError("an open mesh's vertex rings hold hole half-edges, which have no face")
         ring, _ = self.vertex_ring
         k = self._uniform_size
         if k:
@@ -818,7 +1003,16 @@ class Mesh:
         are summed.  Coordinates beyond 2**300 (or below 2**-300) are
         scaled by a power of two first, so the result is ``inf`` (or 0)
         only when the volume itself is beyond float64's range.
+
+        Closed meshes only: an open surface encloses nothing (the sum would
+        depend on where the origin is).
+
+        Raises
+        ------
+        MeshError
+            For an open mesh, naming its boundary loops.
         """
+        check_closed(self, "volume")
         extent = self._extent
         if extent == 0 or 2.0**-300 < extent < 2.0**300:
             c = self.face_centroids[self.halfedge_face]
@@ -925,6 +1119,14 @@ for _name in (
     "face_sizes",
     "_uniform_size",
     "valences",
+    "_face_counts",
+    "_boundary",
+    "is_closed",
+    "n_boundary_edges",
+    "n_boundary_loops",
+    "boundary_halfedges",
+    "boundary_loops",
+    "is_boundary_vertex",
     "halfedge_face",
     "halfedge_slot",
     "next",
@@ -932,6 +1134,7 @@ for _name in (
     "head",
     "twin",
     "_forward",
+    "_primary",
     "halfedge_edge",
     "edge_halfedge",
     "edges",
@@ -968,4 +1171,29 @@ def check_mesh(mesh: object, op: str) -> Mesh:
     """
     if not isinstance(mesh, Mesh):
         raise TypeError(f"{op} expects a pentanb.Mesh, got {type(mesh).__name__}")
+    return mesh
+
+
+def check_closed(mesh: object, op: str) -> Mesh:
+    """``mesh`` itself when it is a closed Mesh; else an error naming ``op``.
+
+    For what only makes sense on a closed surface (an enclosed volume, a
+    polyhedron's canonical form, measures of a closed surface).
+
+    Raises
+    ------
+    TypeError
+        ``mesh`` is not a Mesh.
+    MeshError
+        ``mesh`` is open: the message names ``op`` and the boundary loops,
+        e.g. ``"volume needs a closed mesh; this one is open: 1 boundary
+        loop (12 edges)"``.
+    """
+    check_mesh(mesh, op)
+    assert isinstance(mesh, Mesh)
+    if not mesh.is_closed:
+        raise MeshError(
+            f"{op} needs a closed mesh; this one is open: "
+            f"{describe_boundary(mesh.corners, mesh.head)}"
+        )
     return mesh

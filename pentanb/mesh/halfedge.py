@@ -31,6 +31,8 @@ __all__ = [
     "prev_of",
     "pair_twins",
     "vertex_rings",
+    "open_extension",
+    "open_vertex_rings",
     "multi_fan_vertex",
     "fan_triangle_corners",
 ]
@@ -220,23 +222,25 @@ def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0) -> bool:
     return True
 
 
-def vertex_rings(rotation, tail, valences):
+def vertex_rings(rotation, tail, valences, start=None):
     """Outgoing half-edges of every vertex in rotation order, as CSR.
 
     One vectorized step per position around the vertex (a loop over the
     largest valence, not over vertices).  On a non-manifold vertex the orbit
     closes early; the ring then repeats half-edges, which ``_validate``
-    detects.
+    detects.  ``start`` (n,), when given, is every vertex's first
+    half-edge; by default its last (largest) outgoing half-edge.
     """
     n = valences.size
     dtype = tail.dtype
     ring_off = np.zeros(n + 1, dtype=dtype)
     np.cumsum(valences, out=ring_off[1:])
-    start = np.empty(n, dtype=dtype)
-    # any outgoing half-edge per vertex: the last one written wins (in blocks:
-    # numpy widens a scatter's index array, the whole of it at once otherwise)
-    for a in range(0, tail.size, BLOCK):
-        start[tail[a : a + BLOCK]] = np.arange(a, min(a + BLOCK, tail.size), dtype=dtype)
+    if start is None:
+        start = np.empty(n, dtype=dtype)
+        # any outgoing half-edge per vertex: the last one written wins (in blocks:
+        # numpy widens a scatter's index array, the whole of it at once otherwise)
+        for a in range(0, tail.size, BLOCK):
+            start[tail[a : a + BLOCK]] = np.arange(a, min(a + BLOCK, tail.size), dtype=dtype)
     ring = np.empty(tail.size, dtype=dtype)
     if n == 0:
         return ring, ring_off
@@ -266,6 +270,60 @@ def vertex_rings(rotation, tail, valences):
         cur[lo:] = c
         ring[base[lo:] + k] = c
     return ring, ring_off
+
+
+def open_extension(rotation, tail, head, bh, loop_offsets):
+    """The rotation and tails of all half-edges of an open mesh, hole half-edges included.
+
+    Parameters
+    ----------
+    rotation : (H,) int
+        ``twin[prev[h]]`` of the face half-edges (hole half-edges ``>= H``).
+    tail, head : (H,) int
+    bh : (B,) int
+        The boundary half-edges, loop after loop.
+    loop_offsets : (L + 1,) int
+
+    Returns
+    -------
+    rotation_all : (H + B,) int
+        The hole half-edge ``H + j`` runs from ``head[bh[j]]`` to
+        ``tail[bh[j]]``; the next outgoing half-edge counter-clockwise round
+        its tail is the boundary half-edge after ``bh[j]`` in its loop.
+    tail_all : (H + B,) int
+    """
+    B = bh.size
+    j = np.arange(B, dtype=np.int64)
+    loop_of = np.repeat(np.arange(loop_offsets.size - 1), np.diff(loop_offsets))
+    after = j + 1
+    last = after == loop_offsets[1:][loop_of]
+    after[last] = loop_offsets[:-1][loop_of[last]]
+    dtype = np.result_type(rotation.dtype, np.int32 if tail.size + B < 2**31 else np.int64)
+    rotation_all = np.concatenate([rotation, bh[after]]).astype(dtype, copy=False)
+    tail_all = np.concatenate([tail, head[bh]]).astype(dtype, copy=False)
+    return rotation_all, tail_all
+
+
+def open_vertex_rings(rotation, tail, head, bh, loop_offsets, valences):
+    """The vertex rings of an open mesh (:attr:`pentanb.Mesh.vertex_ring`).
+
+    Every vertex's outgoing half-edges, hole half-edges included, in
+    rotation order; a boundary vertex's ring starts at its hole half-edge
+    (its largest), an interior vertex's at its largest half-edge, as on a
+    closed mesh.
+
+    Returns
+    -------
+    ring : (H + B,) int
+    ring_offsets : (n + 1,) int
+    """
+    rotation_all, tail_all = open_extension(rotation, tail, head, bh, loop_offsets)
+    H, dtype = tail.size, tail_all.dtype
+    start = np.empty(valences.size, dtype=dtype)
+    for a in range(0, H, BLOCK):
+        start[tail[a : a + BLOCK]] = np.arange(a, min(a + BLOCK, H), dtype=dtype)
+    start[tail_all[H:]] = np.arange(H, tail_all.size, dtype=dtype)
+    return vertex_rings(rotation_all, tail_all, valences, start)
 
 
 def multi_fan_vertex(rotation, tail, valences) -> int:

@@ -1,4 +1,5 @@
-"""Validation: is a mesh a closed, consistently oriented 2-manifold the operators can take?
+"""Validation: is a mesh a consistently oriented 2-manifold (closed or with boundary)
+the operators can take?
 
 :func:`validate` is the one check every mesh built from outside data goes
 through (the constructor, :meth:`Mesh.from_csr`, the readers).  It runs
@@ -6,6 +7,12 @@ every check first as whole-array passes that only say yes or no
 (:func:`_valid`, fast on meshes of millions of faces); a mesh that fails is
 checked again, in order, by :func:`_diagnose`, which finds the first culprit
 and raises a :class:`MeshError` naming it (a face, an edge, a vertex).
+
+A closed mesh takes the fast path it always took (one sort of packed keys
+pairs the twins); a mesh whose half-edges do not all pair up is checked
+again as a surface with boundary (:func:`_valid_open`, a slower numpy
+path): every edge with one or two faces, every vertex's faces one fan or
+one cycle.
 """
 
 from __future__ import annotations
@@ -14,9 +21,18 @@ from typing import Any
 
 import numpy as np
 
-from .boundary import describe_boundary
+from .boundary import CLOSED, open_twins, orientation_classes, pair_open
 from .coerce import MeshError, readonly
-from .halfedge import BLOCK, RotateUniform, multi_fan_vertex, pair_twins, rotation_of, vertex_rings
+from .halfedge import (
+    BLOCK,
+    RotateUniform,
+    multi_fan_vertex,
+    open_extension,
+    open_vertex_rings,
+    pair_twins,
+    rotation_of,
+    vertex_rings,
+)
 
 __all__ = ["validate", "validate_rings"]
 
@@ -27,7 +43,8 @@ def validate(
     twin: np.ndarray | None = None,
     strict: bool = True,
 ) -> None:
-    """Check that the mesh is a closed, oriented 2-manifold; raise MeshError if not.
+    """Check that the mesh is an oriented 2-manifold, closed or with boundary; raise
+    MeshError if not.
 
     Every check runs first as a whole-array pass that only says whether
     the mesh is valid (:func:`_valid`); only a mesh that fails one is
@@ -45,11 +62,11 @@ def validate(
         partner) instead of derived by sorting.
     strict : bool
         False accepts what the operators refuse one by one with their own
-        message (vertices of fewer than 3 edges, unused vertices, two faces
-        sharing two edges) but keeps every check that the arrays'
+        message (interior vertices of fewer than 3 edges, unused vertices,
+        two faces sharing two edges) but keeps every check that the arrays'
         consistency rests on: indices in range, faces of at least 3
-        distinct vertices, every directed edge once and with its opposite,
-        one fan round every vertex.
+        distinct vertices, every directed edge once (with its opposite, or
+        on the boundary), one fan or cycle round every vertex.
 
     Raises
     ------
@@ -136,8 +153,9 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
     # peak stays a few bytes per corner above the faces themselves
     if twin is None:
         twin = pair_twins(c, None if k else mesh.head, n, k)
-        if twin is None:
-            return False
+        if twin is None:  # not closed: a surface with boundary, or no manifold
+            return _valid_open(mesh, strict)
+    mesh._shared.values.setdefault("_boundary", CLOSED)
     if strict:
         if int(mesh.valences.min()) < 3:
             return False
@@ -156,6 +174,43 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
     seen = np.zeros(c.size, dtype=bool)
     for a in range(0, ring.size, BLOCK):
         seen[ring[a : a + BLOCK]] = True
+    if not seen.all():
+        return False
+    mesh._shared.values["vertex_ring"] = (readonly(ring), readonly(ring_off))
+    return True
+
+
+def _valid_open(mesh: Any, strict: bool) -> bool:
+    """Every check of :func:`_diagnose` on a mesh whose half-edges do not all pair up.
+
+    Twins found by one sort of the directed edges (none used twice), the
+    boundary half-edges chained into loops (one leaving every boundary
+    vertex), then as on a closed mesh: no interior vertex of fewer than 3
+    edges, no two faces sharing two edges, and the vertex rings (hole
+    half-edges included) using every half-edge once.
+    """
+    got = open_twins(mesh._corners, mesh.head, mesh.n_vertices)
+    if got is None:
+        return False
+    twin, boundary = got
+    bh, loop_off = boundary
+    H, F = twin.size, mesh.n_faces
+    mesh._shared.values["_boundary"] = boundary
+    if strict:
+        val = mesh.valences
+        inner = ~mesh.is_boundary_vertex
+        if val.size and (int(val.min()) < 1 or (inner.any() and int(val[inner].min()) < 3)):
+            return False
+        fid = mesh.halfedge_face
+        neighbour = np.where(twin < H, fid[np.minimum(twin, H - 1)], F + (twin - H))
+        if _repeats_in_a_face(mesh, neighbour, F + bh.size):
+            return False
+    mesh._shared.values["twin"] = readonly(twin)
+    ring, ring_off = open_vertex_rings(
+        mesh.rotation, mesh._corners, mesh.head, bh, loop_off, mesh.valences
+    )
+    seen = np.zeros(ring.size, dtype=bool)
+    seen[ring] = True
     if not seen.all():
         return False
     mesh._shared.values["vertex_ring"] = (readonly(ring), readonly(ring_off))
@@ -234,46 +289,103 @@ def _diagnose(mesh: Any, strict: bool = True) -> None:
         raise MeshError("the mesh has no vertices")
     head = mesh.head
     twin = pair_twins(c, head, n)
-    if twin is None:
-        kind, h = _unpaired(c, head, n)
-        u, w = int(c[h]), int(head[h])
-        if kind == "duplicate":
-            faces = np.flatnonzero((c == u) & (head == w))
-            raise MeshError(
-                f"directed edge ({u}, {w}) is used by faces "
-                f"{fid[faces].tolist()}: inconsistent orientation or "
-                "a non-manifold edge"
-            )
-        raise MeshError(
-            f"edge ({u}, {w}) of face {int(fid[h])} has only one side "
-            f"(a boundary): the mesh must be closed; it has {describe_boundary(c, head)}"
-        )
+    if twin is not None:
+        mesh._shared.values.setdefault("_boundary", CLOSED)
+    else:  # a surface with boundary, or faces that are no manifold
+        _diagnose_pairing(mesh, head)
+        got = open_twins(c, head, n)
+        assert got is not None  # (every way for it to fail was named above)
+        twin, boundary = got
+        mesh._shared.values["_boundary"] = boundary
     mesh._shared.values["twin"] = readonly(twin)
     if strict:
         _diagnose_strict(mesh, twin)
     ring, _ = mesh.vertex_ring
-    if not np.array_equal(np.sort(ring), np.arange(c.size)):
+    if not np.array_equal(np.sort(ring), np.arange(ring.size)):
         # a vertex whose rotation orbit is shorter than its valence
-        bad_v = multi_fan_vertex(mesh.rotation, c, mesh.valences)
-        raise MeshError(f"vertex {bad_v} is non-manifold: its faces form more than one fan")
+        if mesh.is_closed:
+            rotation, tail = mesh.rotation, c
+        else:
+            bh, off = mesh._boundary
+            rotation, tail = open_extension(mesh.rotation, c, head, bh, off)
+        bad_v = multi_fan_vertex(rotation, tail, mesh.valences)
+        raise MeshError(
+            f"vertex {bad_v} is non-manifold: its faces form more than one fan"
+            + ("" if mesh.is_closed else " (or a fan and a cycle)")
+        )
 
 
-def _unpaired(tail: np.ndarray, head: np.ndarray, n: int) -> tuple[str, int]:
-    """Why the half-edges do not pair: ``("duplicate", h)``, a directed edge
-    used twice (``h`` one of them), or ``("boundary", h)``, a half-edge
-    without an opposite."""
-    n64 = np.int64(n)
-    lo = np.minimum(tail, head).astype(np.int64)
-    hi = np.maximum(tail, head).astype(np.int64)
-    key = (lo * n64 + hi) * 2 + (tail > head)
+def _diagnose_pairing(mesh: Any, head: np.ndarray) -> None:
+    """Name why the half-edges do not pair up as an oriented manifold with boundary.
+
+    In order: an edge with more than two faces (a non-manifold edge); two
+    faces running along an edge in the same direction (non-orientable
+    when no choice of the faces' orientations mends it, inconsistent
+    orientation otherwise); a vertex the boundary passes through more
+    than once (two fans meeting at one vertex).  Returns when none of
+    these holds: the faces are an oriented manifold with boundary.
+    """
+    c, n, fid = mesh._corners, mesh.n_vertices, mesh.halfedge_face
+    t = c.astype(np.int64)
+    w = head.astype(np.int64)
+    lo, hi = np.minimum(t, w), np.maximum(t, w)
+    key = (lo * np.int64(n) + hi) * 2 + (t > w)
     order = np.argsort(key, kind="stable")
-    skey = key[order]
-    dup = np.flatnonzero(skey[1:] == skey[:-1])
-    if dup.size:
-        return "duplicate", int(order[dup[0]])
-    want = (lo * n64 + hi) * 2 + (tail < head)
-    pos = np.minimum(np.searchsorted(skey, want), skey.size - 1)
-    return "boundary", int(np.flatnonzero(skey[pos] != want)[0])
+    skey = key[order] >> 1  # the undirected edge
+    first = np.flatnonzero(np.r_[True, skey[1:] != skey[:-1]])
+    sizes = np.diff(np.r_[first, skey.size])
+
+    def used_by(u: int, v: int) -> list[int]:
+        return fid[np.flatnonzero((c == u) & (head == v))].tolist()
+
+    many = np.flatnonzero(sizes > 2)
+    if many.size:
+        hs = order[first[many[0]] : first[many[0]] + sizes[many[0]]]
+        a, b = int(lo[hs[0]]), int(hi[hs[0]])
+        u, v = (a, b) if len(used_by(a, b)) > 1 else (b, a)
+        raise MeshError(
+            f"directed edge ({u}, {v}) is used by faces {used_by(u, v)}: edge ({a}, {b}) "
+            f"has {int(sizes[many[0]])} faces {sorted(fid[hs].tolist())}, a non-manifold "
+            "edge (an edge has two faces, or one on the boundary)"
+        )
+    dkey = t * np.int64(n) + w
+    sd = np.sort(dkey)
+    twice = np.flatnonzero(sd[1:] == sd[:-1])
+    if twice.size:
+        u, v = divmod(int(sd[twice[0]]), n)
+        pairs = first[sizes == 2]
+        h1, h2 = order[pairs], order[pairs + 1]
+        same = c[h1] == c[h2]
+        flip, conflicts = orientation_classes(fid[h1], fid[h2], same, mesh.n_faces)
+        if conflicts.size:
+            e = int(conflicts[0])
+            raise MeshError(
+                f"directed edge ({u}, {v}) is used by faces {used_by(u, v)}: the surface is "
+                "non-orientable (a Moebius band, say): no choice of its faces' orientations "
+                "makes the two faces of every edge run along it in opposite directions "
+                f"(faces {int(fid[h1[e]])} and {int(fid[h2[e]])} cannot both agree with "
+                "their neighbours)"
+            )
+        wrong = np.flatnonzero(flip).tolist()
+        shown = ", ".join(str(f) for f in wrong[:8]) + (", ..." if len(wrong) > 8 else "")
+        raise MeshError(
+            f"directed edge ({u}, {v}) is used by faces {used_by(u, v)}: inconsistent "
+            f"orientation (both run along it from {u} to {v}, none from {v} to {u}); "
+            f"reversing face{'s' if len(wrong) > 1 else ''} {shown} would orient the mesh "
+            "consistently"
+        )
+    twin = pair_open(c, head, n)
+    assert twin is not None
+    bh = np.flatnonzero(twin < 0)
+    leaving = np.bincount(c[bh], minlength=n)
+    more = np.flatnonzero(leaving > 1)
+    if more.size:
+        v = int(more[0])
+        raise MeshError(
+            f"vertex {v} is non-manifold: its faces form more than one fan "
+            f"({int(leaving[v])} fans meet there: the boundary passes through it "
+            f"{int(leaving[v])} times)"
+        )
 
 
 def _diagnose_strict(mesh: Any, twin: np.ndarray) -> None:
@@ -284,16 +396,18 @@ def _diagnose_strict(mesh: Any, twin: np.ndarray) -> None:
         raise MeshError(
             f"vertex {int(unused[0])} is not used by any face ({unused.size} unused vertices)"
         )
-    few = np.flatnonzero(mesh.valences < 3)
+    few = np.flatnonzero((mesh.valences < 3) & ~mesh.is_boundary_vertex)
     if few.size:
         v = int(few[0])
+        inner = "" if mesh.is_closed else "interior "
         raise MeshError(
-            f"vertex {v} has only {int(mesh.valences[v])} edges; every vertex "
+            f"{inner}vertex {v} has only {int(mesh.valences[v])} edges; every {inner}vertex "
             "needs at least 3 (Section 4 rules out 1- and 2-valent vertices, "
             "and the dual of such a vertex would be a face of fewer than "
             "3 sides)"
         )
     eh = mesh.edge_halfedge
+    eh = eh[twin[eh] < twin.size]  # the edges with two faces
     f1, f2 = fid[eh], fid[twin[eh]]
     # (a face on both sides of an edge would repeat a vertex: refused above)
     m = np.int64(mesh.n_faces)
