@@ -78,13 +78,48 @@ def test_bad_counts_are_refused():
         cv.subdivision_convergence(shapes.cube(), iterations=0)
 
 
+@pytest.mark.slow
 def test_study_covers_both_schemes_on_every_mesh():
     data = cv.study()
     keys = {(m, s) for m in cv.STUDY_MESHES for s in cv.STUDY_SCHEMES}
     assert set(data["duals"]) == keys and set(data["iterations"]) == keys
     assert cv.STUDY_MESHES["rabbit"] is shapes.rabbit
     for (m, _), res in data["iterations"].items():
-        assert len(res.steps) == (3 if m == "rabbit" else 4)
+        assert len(res.steps) == (5 if m == "rabbit" else 4)  # the rabbit: one level more
+        assert np.isnan(res.radius_spread).all()  # iterations carry the creases only
+        assert not np.isnan(res.max_normal_angle).any()
+
+
+def test_study_is_shared_however_its_arguments_are_passed():
+    small = cv.study(2, 1)
+    assert cv.study(duals=2, iterations=1) is small
+    assert len(small["iterations"]["rabbit", "pentagonalize"].steps) == 2
+    assert len(small["iterations"]["cube", "pentagonalize"].steps) == 1
+
+
+def test_spreads_can_be_left_out():
+    full = cv.subdivision_convergence(shapes.cube(), "pentagonalize", 2)
+    light = cv.subdivision_convergence(shapes.cube(), "pentagonalize", 2, spreads=False)
+    assert np.isnan(light.edge_spread).all() and not np.isnan(full.edge_spread).any()
+    assert np.array_equal(full.max_normal_angle, light.max_normal_angle)
+    assert np.array_equal(full.crease_at, light.crease_at)
+
+
+def test_unit_normals_agree_with_the_mesh():
+    from pentanb.analysis.measures import _unit_normals
+
+    m = pentanb.subdivide(shapes.rabbit(), "preserve_pentagons", 1, 2)
+    assert np.abs(_unit_normals(m, block=1000) - m.face_normals).max() < 1e-12
+    tiny = m.with_vertices(m.vertices * 1e-200)  # the mesh's own safe path takes over
+    assert np.abs(_unit_normals(tiny) - m.face_normals).max() < 1e-12
+
+
+@pytest.mark.slow
+def test_predicted_crease_rate_of_a_triangle():
+    pytest.importorskip("scipy")
+    lam1, lam3, source = cv.predicted_crease_rate()
+    assert source == "local_spectrum"
+    assert lam1 == pytest.approx(0.125, rel=1e-9) and lam3 == pytest.approx(29 / 240, rel=1e-9)
 
 
 # ---------------------------------------------------------------------- lateral artifact

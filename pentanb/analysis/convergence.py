@@ -51,6 +51,7 @@ __all__ = [
     "STUDY_SCHEMES",
     "ROUND_MESHES",
     "extraordinary",
+    "predicted_crease_rate",
 ]
 
 
@@ -122,23 +123,32 @@ def extraordinary(mesh: Mesh, source: Mesh) -> NDArray[np.bool_]:
     return marked
 
 
-def _measure(meshes, scheme_name, steps, source=None):
-    angles = [normal_angles(m) for m in meshes]
+def _row(mesh: Mesh, source: Mesh | None, spreads: bool = True) -> dict[str, float]:
+    """Every measure of :class:`Convergence` for one mesh (the spreads NaN if not asked)."""
+    a = normal_angles(mesh)
     if source is None:
-        creases = [{"at": np.nan, "elsewhere": float(a.max())} for a in angles]
+        crease = {"at": np.nan, "elsewhere": float(a.max())}
     else:
-        creases = [crease_angles(m, extraordinary(m, source)) for m in meshes]
+        crease = crease_angles(mesh, extraordinary(mesh, source), a)
+    nan = float("nan")
+    return {
+        "faces": mesh.n_faces,
+        "radius_spread": radius_spread(mesh) if spreads else nan,
+        "edge_spread": edge_length_spread(mesh) if spreads else nan,
+        "angle_spread": angle_spread(mesh) if spreads else nan,
+        "max_normal_angle": float(a.max()),
+        "mean_normal_angle": float(a.mean()),
+        "crease_at": crease["at"],
+        "crease_elsewhere": crease["elsewhere"],
+    }
+
+
+def _collect(rows: list[dict[str, float]], scheme_name: str, steps) -> Convergence:
     return Convergence(
         scheme=scheme_name,
         steps=np.asarray(steps, dtype=np.int64),
-        faces=np.array([m.n_faces for m in meshes], dtype=np.int64),
-        radius_spread=np.array([radius_spread(m) for m in meshes]),
-        edge_spread=np.array([edge_length_spread(m) for m in meshes]),
-        angle_spread=np.array([angle_spread(m) for m in meshes]),
-        max_normal_angle=np.array([a.max() for a in angles]),
-        mean_normal_angle=np.array([a.mean() for a in angles]),
-        crease_at=np.array([c["at"] for c in creases]),
-        crease_elsewhere=np.array([c["elsewhere"] for c in creases]),
+        faces=np.array([r["faces"] for r in rows], dtype=np.int64),
+        **{k: np.array([r[k] for r in rows], dtype=np.float64) for k in rows[0] if k != "faces"},
     )
 
 
@@ -182,21 +192,28 @@ def dual_convergence(mesh: Mesh, scheme="pentagonalize", duals: int = 12, **opti
         raise ValueError(f"duals must be an even integer >= 2 (pairs of duals), got {duals}")
     pairs = int(duals) // 2
     m = subdivide(mesh, scheme, 1, 0, **options)
-    out = [m]
+    rows = [_row(m, None)]
     for _ in range(pairs):
         m = dual(dual(m))
-        out.append(m)
-    return _measure(out, _name(scheme), np.arange(pairs + 1))
+        rows.append(_row(m, None))
+    return _collect(rows, _name(scheme), np.arange(pairs + 1))
 
 
 def subdivision_convergence(
-    mesh: Mesh, scheme="pentagonalize", iterations: int = 4, duals: int = 2, **options
+    mesh: Mesh,
+    scheme="pentagonalize",
+    iterations: int = 4,
+    duals: int = 2,
+    *,
+    spreads: bool = True,
+    **options,
 ) -> Convergence:
     """Subdivide ``iterations`` times (remesh + ``duals`` duals), measuring after each
     iteration.
 
     The crease angle is measured at the extraordinary vertices
     (:func:`extraordinary`; meaningful for the paper's two schemes) and elsewhere.
+    Each mesh is measured as soon as it is made and then let go.
 
     Parameters
     ----------
@@ -207,6 +224,9 @@ def subdivision_convergence(
         Repetitions of the scheme, each followed by ``duals`` duals.
     duals : int, >= 0
         Dual operations after every remeshing.
+    spreads : bool
+        Measure the radius, edge and angle spreads too (on meshes of a
+        million faces they take most of the time); NaN when False.
     **options
         Options of the scheme (e.g. ``scale``).
 
@@ -222,14 +242,14 @@ def subdivision_convergence(
     """
     if iterations < 1:
         raise ValueError(f"iterations must be >= 1, got {iterations}")
-    out = []
+    name = _name(scheme)
+    source = mesh if name in ("pentagonalize", "preserve_pentagons") and duals % 2 == 0 else None
+    rows = []
     m = mesh
     for _ in range(iterations):
         m = subdivide(m, scheme, 1, duals, **options)
-        out.append(m)
-    name = _name(scheme)
-    source = mesh if name in ("pentagonalize", "preserve_pentagons") and duals % 2 == 0 else None
-    return _measure(out, name, np.arange(1, iterations + 1), source)
+        rows.append(_row(m, source, spreads))
+    return _collect(rows, name, np.arange(1, iterations + 1))
 
 
 #: Meshes of the convergence study (name -> builder).
@@ -245,7 +265,6 @@ ROUND_MESHES = ("cube", "tetrahedron")
 STUDY_SCHEMES = ("pentagonalize", "preserve_pentagons")
 
 
-@functools.lru_cache(maxsize=4)
 def study(duals: int = 12, iterations: int = 4) -> dict:
     """Both schemes on :data:`STUDY_MESHES`.
 
@@ -261,21 +280,80 @@ def study(duals: int = 12, iterations: int = 4) -> dict:
     dict
         ``"meshes"``: the mesh names; ``"duals"`` and ``"iterations"``: dicts
         ``{(mesh name, scheme): Convergence}`` from :func:`dual_convergence`
-        and :func:`subdivision_convergence`.  (Meshes of more than 50 faces,
-        here the rabbit, are refined at most three iterations, to keep the
-        study to a few seconds.)  The torus is 8 x 6 quads.
+        and :func:`subdivision_convergence`.  The rabbit (the one mesh of more
+        than 50 faces) is refined one iteration more than the others, five by
+        default: under pentagon preservation its creases fall slowly and need
+        the levels (its last mesh has 1.2 million faces).  The iterations
+        carry the crease angles, not the spreads (``spreads=False``: NaN).
+        The torus is 8 x 6 quads.
 
     Notes
     -----
     The results of the last four ``(duals, iterations)`` asked for are kept
-    (``functools.lru_cache(maxsize=4)``): the convergence figure and its
-    claims share one study.  Treat the returned dict as read-only.
+    (however the arguments are passed): the convergence figure and its claims
+    share one study.  Treat the returned dict as read-only.
     """
+    return _study(int(duals), int(iterations))
+
+
+@functools.lru_cache(maxsize=4)
+def _study(duals: int, iterations: int) -> dict:
     res_duals, res_iterations = {}, {}
     for name, build in STUDY_MESHES.items():
         mesh = build()
         for scheme in STUDY_SCHEMES:
             res_duals[name, scheme] = dual_convergence(mesh, scheme, duals)
-            it = min(iterations, 3) if mesh.n_faces > 50 else iterations
-            res_iterations[name, scheme] = subdivision_convergence(mesh, scheme, it)
+            it = iterations + 1 if mesh.n_faces > 50 else iterations
+            res_iterations[name, scheme] = subdivision_convergence(mesh, scheme, it, spreads=False)
     return {"meshes": tuple(STUDY_MESHES), "duals": res_duals, "iterations": res_iterations}
+
+
+#: |lambda1| and |lambda3| per step at a triangle under pentagon preservation (scale
+#: 0.75) + 2 duals, as the spectra table gives them: what
+#: :func:`predicted_crease_rate` falls back on without scipy.
+TRIANGLE_075 = (0.125, 0.12083333333333333)
+
+
+@functools.lru_cache(maxsize=8)
+def predicted_crease_rate(
+    scheme: str = "preserve_pentagons", kind: str = "face", size: int = 3, scale: float = 0.75
+) -> tuple[float, float, str]:
+    """The factor by which the crease angle near an extraordinary element falls per level,
+    as the element's spectrum predicts: ``|lambda3| / |lambda1|``.
+
+    Near the element, the positions after k steps are ``a0 + lambda1^k a1 v1 +
+    lambda2^k a2 v2 + lambda3^k a3 v3 + ...``: the subdominant pair spans the
+    tangent plane and the next eigenvalue bends the mesh away from it, so the
+    angles between neighbouring faces there shrink like ``(|lambda3| /
+    |lambda1|)^k`` once k is large (:func:`pentanb.analysis.local_spectrum`,
+    one step = remesh + 2 duals).
+
+    Parameters
+    ----------
+    scheme : str
+    kind : {"vertex", "face"}
+    size : int
+    scale : float
+        Pentagon preservation's scale (ignored by other schemes).
+
+    Returns
+    -------
+    (float, float, str)
+        ``|lambda1|``, ``|lambda3|`` per step, and where they come from
+        (``"local_spectrum"``, or, without scipy and for a triangle under
+        pentagon preservation at 0.75, the table's values,
+        :data:`TRIANGLE_075`).
+    """
+    from .spectral import local_spectrum
+
+    try:
+        if scheme == "preserve_pentagons":
+            sp = local_spectrum(scheme, kind, size, 2, scale=scale)
+        else:
+            sp = local_spectrum(scheme, kind, size, 2)
+    except ImportError:
+        if (scheme, kind, size, scale) == ("preserve_pentagons", "face", 3, 0.75):
+            return (*TRIANGLE_075, "the spectra table (scipy is not installed)")
+        raise
+    m = sp.moduli
+    return float(m[1]), float(m[3]), "local_spectrum"

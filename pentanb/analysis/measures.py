@@ -15,9 +15,12 @@ Geometry (what the paper judges by eye):
   :func:`angle_spread`, :func:`uniformity`: how uniform a mesh is (Section
   5.1: "the resulting shape becomes more and more uniform with each
   application of dual operation");
-* :func:`face_planarity`, :func:`region_geometry`: how far a set of faces is
-  from a flat tiling (Section 5.1's "classical (or geometrical)
-  semi-regular regions");
+* :func:`face_planarity`, :func:`region_geometry`, :func:`flat_region`: how
+  far a set of faces is from a flat tiling (Section 5.1's "classical (or
+  geometrical) semi-regular regions");
+* :func:`nearest_distance`, :func:`surface_distance`: where a remeshing put
+  its points, found by position (Section 3: "newly created vertices do not
+  change the shape of the initial mesh");
 * :func:`normal_angles`, :func:`crease_angles`: the crease angle at every
   edge, and its largest value at the input's extraordinary vertices and
   elsewhere (Section 7's G1 convergence);
@@ -56,6 +59,9 @@ __all__ = [
     "planarity",
     "best_fit_planes",
     "region_geometry",
+    "flat_region",
+    "nearest_distance",
+    "surface_distance",
     "crease_angles",
     "BOX_EDGES",
     "edge_profile",
@@ -212,6 +218,36 @@ def radius_spread(mesh: Mesh) -> float:
     return float(r.std() / r.mean())
 
 
+def _unit_normals(mesh: Mesh, block: int = 1 << 20) -> NDArray[np.float64]:
+    """Unit face normals by Newell's method, in blocks of about ``block`` half-edges.
+
+    The same normals as :attr:`Mesh.face_normals` (to rounding), with the
+    cross products written out and the temporaries kept to a block; a mesh
+    with a face whose normal could overflow, underflow or vanish gets
+    :attr:`Mesh.face_normals` itself, which handles those.
+    """
+    v, corners, offsets = mesh.vertices, mesh.corners, mesh.offsets
+    head = mesh.head
+    n = np.empty((mesh.n_faces, 3))
+    f0 = 0
+    while f0 < mesh.n_faces:
+        f1 = int(np.searchsorted(offsets, offsets[f0] + block, side="right")) - 1
+        f1 = min(max(f1, f0 + 1), mesh.n_faces)
+        h0, h1 = int(offsets[f0]), int(offsets[f1])
+        p, q = v[corners[h0:h1]], v[head[h0:h1]]
+        c = np.empty_like(p)
+        c[:, 0] = p[:, 1] * q[:, 2] - p[:, 2] * q[:, 1]
+        c[:, 1] = p[:, 2] * q[:, 0] - p[:, 0] * q[:, 2]
+        c[:, 2] = p[:, 0] * q[:, 1] - p[:, 1] * q[:, 0]
+        n[f0:f1] = np.add.reduceat(c, offsets[f0:f1] - h0, axis=0)
+        f0 = f1
+    length = np.sqrt(np.einsum("ij,ij->i", n, n))
+    if not np.all((length >= 2.0**-500) & (length <= 2.0**500)):
+        return mesh.face_normals
+    n /= length[:, None]
+    return n
+
+
 def normal_angles(mesh: Mesh) -> NDArray[np.float64]:
     """The crease angle of every edge: the angle between the normals of its two faces.
 
@@ -229,7 +265,7 @@ def normal_angles(mesh: Mesh) -> NDArray[np.float64]:
     """
     h = mesh.edge_halfedge
     f, g = mesh.halfedge_face[h], mesh.halfedge_face[mesh.twin[h]]
-    n = mesh.face_normals
+    n = _unit_normals(mesh)
     cos = np.einsum("ij,ij->i", n[f], n[g])
     return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
 
@@ -386,10 +422,12 @@ def corner_angles(mesh: Mesh) -> NDArray[np.float64]:
         corner.  A planar n-gon's angles add up to ``(n - 2) 180``.
     """
     v = mesh.vertices
-    p = v[mesh.corners]
-    a = v[mesh.head] - p
-    b = v[mesh.corners[mesh.prev]] - p
-    cos = np.einsum("ij,ij->i", a, b) / (np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1))
+    e = v[mesh.head] - v[mesh.corners]  # half-edge h, from its corner to the next
+    length = np.sqrt(np.einsum("ij,ij->i", e, e))
+    prev = mesh.prev
+    # the angle at corners[h] between e[h] and the reversed previous half-edge
+    cos = -np.einsum("ij,ij->i", e, e[prev])
+    cos /= length * length[prev]
     return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
 
 
@@ -424,9 +462,9 @@ def angle_spread(mesh: Mesh, faces: ArrayLike | None = None, by: str = "size") -
     key = (
         mesh.face_sizes[mesh.halfedge_face[hs]] if by == "size" else mesh.valences[mesh.corners[hs]]
     )
-    _, inv = np.unique(key, return_inverse=True)
-    means = np.bincount(inv, weights=ang) / np.bincount(inv)
-    dev = ang - means[inv]
+    count = np.bincount(key)  # sizes and valences are small non-negative integers
+    means = np.bincount(key, weights=ang) / np.maximum(count, 1)
+    dev = ang - means[key]
     return float(np.sqrt(np.mean(dev**2)) / ang.mean())
 
 
@@ -482,7 +520,9 @@ def planarity(mesh: Mesh) -> float:
     return float(face_planarity(mesh).max(initial=0.0))
 
 
-def region_geometry(mesh: Mesh, faces: ArrayLike) -> dict[str, object]:
+def region_geometry(
+    mesh: Mesh, faces: ArrayLike, ideal: dict[int, float] | None = None
+) -> dict[str, object]:
     """The geometry of a set of faces, e.g. Section 5.1's 4.3.3.4.3 regions.
 
     Parameters
@@ -490,6 +530,9 @@ def region_geometry(mesh: Mesh, faces: ArrayLike) -> dict[str, object]:
     mesh : Mesh
     faces : (k,) int
         The faces of the region.
+    ideal : dict, optional
+        ``{valence: degrees}``: the angle a corner of that valence has on the
+        tile compared with (e.g. ``{3: 120, 4: 90}``).
 
     Returns
     -------
@@ -499,9 +542,12 @@ def region_geometry(mesh: Mesh, faces: ArrayLike) -> dict[str, object]:
         corners grouped by the corners' valence; ``"planarity"``: the
         largest distance of a corner from its face's least-squares plane,
         over the mean length of the region's edges; ``"angles"``: ``{valence:
-        mean corner angle in degrees}``.  (A flat classical tiling of
-        congruent faces has angle spread and planarity 0; its edge spread
-        is that of its tile, see :data:`pentanb.figures.claim.CLASSICAL`.)
+        mean corner angle in degrees}``; with ``ideal``, ``"angle_error"``:
+        the largest difference in degrees between a corner's angle and the
+        ideal angle of its valence (infinite for a valence it does not
+        name).  (A flat classical tiling of congruent faces has angle spread
+        and planarity 0; its edge spread is that of its tile, see
+        :func:`pentanb.figures.claim.classical_tile`.)
     """
     f = np.asarray(faces, dtype=np.int64).reshape(-1)
     if f.size == 0:
@@ -515,17 +561,155 @@ def region_geometry(mesh: Mesh, faces: ArrayLike) -> dict[str, object]:
     flat = face_planarity(mesh)[f] * mesh_len / mean_len
     ang = corner_angles(mesh)[hs]
     val = mesh.valences[mesh.corners[hs]]
-    return {
+    out: dict[str, object] = {
         "faces": int(f.size),
         "edge_spread": edge_length_spread(mesh, f),
         "angle_spread": angle_spread(mesh, f, by="valence"),
         "planarity": float(flat.max()),
         "angles": {int(k): float(ang[val == k].mean()) for k in np.unique(val)},
     }
+    if ideal is not None:
+        target = np.array([ideal.get(int(k), np.inf) for k in val], dtype=float)
+        out["angle_error"] = float(np.abs(ang - target).max())
+    return out
+
+
+def flat_region(
+    mesh: Mesh, centre: ArrayLike, normal: ArrayLike, radius: float, tol: float = 1e-9
+) -> NDArray[np.int64]:
+    """The faces of a flat, round region: every corner in a plane and near a point.
+
+    Parameters
+    ----------
+    mesh : Mesh
+    centre : (3,) float
+        A point of the plane, the region's centre.
+    normal : (3,) float
+        The plane's normal (any length).
+    radius : float
+        Largest distance of a corner from ``centre``.
+    tol : float
+        Largest distance of a corner from the plane.
+
+    Returns
+    -------
+    (k,) int
+        The faces all of whose corners lie within ``tol`` of the plane and
+        within ``radius`` of ``centre``, increasing.
+    """
+    c = np.asarray(centre, dtype=float)
+    n = np.asarray(normal, dtype=float)
+    n = n / np.linalg.norm(n)
+    d = mesh.vertices - c
+    ok = (np.abs(d @ n) <= tol) & (np.linalg.norm(d, axis=1) <= radius)
+    if mesh.n_faces == 0:
+        return np.zeros(0, dtype=np.int64)
+    good = np.minimum.reduceat(ok[mesh.corners].astype(np.int8), mesh.offsets[:-1])
+    return np.flatnonzero(good).astype(np.int64)
+
+
+def nearest_distance(
+    points: ArrayLike, targets: ArrayLike, block: int = 2048
+) -> NDArray[np.float64]:
+    """The distance from every point to the nearest of the targets (brute force, in blocks).
+
+    Parameters
+    ----------
+    points : (n, 3) float
+    targets : (m, 3) float, m >= 1
+    block : int
+        Points per block (the memory is ``block * m`` distances).
+
+    Returns
+    -------
+    (n,) float
+    """
+    p = np.asarray(points, dtype=float).reshape(-1, 3)
+    t = np.asarray(targets, dtype=float).reshape(-1, 3)
+    if t.shape[0] == 0:
+        raise ValueError("nearest_distance needs at least one target")
+    out = np.empty(p.shape[0])
+    for i in range(0, p.shape[0], block):
+        d = np.linalg.norm(p[i : i + block, None, :] - t[None, :, :], axis=2)
+        out[i : i + block] = d.min(axis=1)
+    return out
+
+
+def _closest_on_triangles(p: np.ndarray, a: np.ndarray, b: np.ndarray, c: np.ndarray):
+    """Closest points on triangles ``(a, b, c)`` to ``p`` (broadcast), by Voronoi regions
+    (Ericson, *Real-Time Collision Detection*, 5.1.5)."""
+    ab, ac, ap = b - a, c - a, p - a
+    d1, d2 = (ab * ap).sum(-1), (ac * ap).sum(-1)
+    bp = p - b
+    d3, d4 = (ab * bp).sum(-1), (ac * bp).sum(-1)
+    cp = p - c
+    d5, d6 = (ab * cp).sum(-1), (ac * cp).sum(-1)
+    va = d3 * d6 - d5 * d4
+    vb = d5 * d2 - d1 * d6
+    vc = d1 * d4 - d3 * d2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        denom = va + vb + vc
+        v = vb / denom
+        w = vc / denom
+        out = a + ab * v[..., None] + ac * w[..., None]  # inside the face
+        # the edges
+        t_ab = d1 / (d1 - d3)
+        t_ac = d2 / (d2 - d6)
+        t_bc = (d4 - d3) / ((d4 - d3) + (d5 - d6))
+    on_bc = (va <= 0) & (d4 - d3 >= 0) & (d5 - d6 >= 0)
+    out = np.where(on_bc[..., None], b + (c - b) * t_bc[..., None], out)
+    on_ac = (vb <= 0) & (d2 >= 0) & (d6 <= 0)
+    out = np.where(on_ac[..., None], a + ac * t_ac[..., None], out)
+    on_ab = (vc <= 0) & (d1 >= 0) & (d3 <= 0)
+    out = np.where(on_ab[..., None], a + ab * t_ab[..., None], out)
+    # the corners
+    out = np.where(((d6 >= 0) & (d5 <= d6))[..., None], c, out)
+    out = np.where(((d3 >= 0) & (d4 <= d3))[..., None], b, out)
+    out = np.where(((d1 <= 0) & (d2 <= 0))[..., None], a, out)
+    return out
+
+
+def surface_distance(points: ArrayLike, mesh: Mesh, block: int = 256) -> NDArray[np.float64]:
+    """The distance from every point to the surface of a mesh.
+
+    Every face is fanned from its first corner into triangles (exact for
+    planar convex faces, such as a cube's or a box's); the distance is the
+    smallest to any of them.  Brute force in blocks of points: meant for
+    checks on small meshes (a few hundred faces).
+
+    Parameters
+    ----------
+    points : (n, 3) float
+    mesh : Mesh
+    block : int
+        Points per block (the memory is ``block`` times the number of
+        triangles).
+
+    Returns
+    -------
+    (n,) float
+        0 for a point on a face or an edge.
+    """
+    p = np.asarray(points, dtype=float).reshape(-1, 3)
+    v = mesh.vertices
+    tri = []
+    for f in range(mesh.n_faces):
+        ring = mesh.corners[mesh.offsets[f] : mesh.offsets[f + 1]]
+        tri += [(ring[0], ring[i], ring[i + 1]) for i in range(1, ring.size - 1)]
+    t = np.asarray(tri, dtype=np.int64).reshape(-1, 3)
+    a, b, c = v[t[:, 0]], v[t[:, 1]], v[t[:, 2]]
+    out = np.empty(p.shape[0])
+    for i in range(0, p.shape[0], block):
+        q = p[i : i + block, None, :]
+        near = _closest_on_triangles(q, a[None], b[None], c[None])
+        out[i : i + block] = np.linalg.norm(near - q, axis=2).min(axis=1)
+    return out
 
 
 # ====================================================================== creases
-def crease_angles(mesh: Mesh, marked: ArrayLike) -> dict[str, float]:
+def crease_angles(
+    mesh: Mesh, marked: ArrayLike, angles: ArrayLike | None = None
+) -> dict[str, float]:
     """The largest crease angle at some vertices, and elsewhere.
 
     Parameters
@@ -536,6 +720,8 @@ def crease_angles(mesh: Mesh, marked: ArrayLike) -> dict[str, float]:
         extraordinary vertices): an edge is "at" them when one of its ends
         is marked, so its crease angle is one between two faces around a
         marked vertex.
+    angles : (E,) float, optional
+        :func:`normal_angles` of the mesh, if already computed.
 
     Returns
     -------
@@ -556,7 +742,7 @@ def crease_angles(mesh: Mesh, marked: ArrayLike) -> dict[str, float]:
         m[idx] = True
     ends = mesh.edges
     at = m[ends[:, 0]] | m[ends[:, 1]]
-    a = normal_angles(mesh)
+    a = normal_angles(mesh) if angles is None else np.asarray(angles, dtype=float)
     return {
         "at": float(a[at].max()) if at.any() else float("nan"),
         "elsewhere": float(a[~at].max()) if (~at).any() else float("nan"),

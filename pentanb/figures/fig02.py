@@ -90,6 +90,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
                 {3: n_tri + fanned},
             ),
             (vef(b), b.face_size_histogram()),
+            reading="every face that is not a triangle gets a vertex inside, joined to its "
+            "corners; triangles stay",
+            cause="the simplest triangulation",
         ),
         exact(
             "fig02.C.null",
@@ -99,5 +102,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "(C) = the triangulation of (B) is (B) itself (same positions and faces)",
             True,
             bool(same),
+            reading="applied again to its own output, the triangulation changes nothing",
+            cause="the simplest triangulation",
         ),
     ]

@@ -104,7 +104,16 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
     new = b.vertices[a.n_vertices :]
     err = float(np.abs(new - mids).max()) if new.shape == mids.shape else float("inf")
     return [
-        counts_claim("fig03.B.counts", "Section 3, Figure 3", LOOP, "(B)", a, b, "loop_remesh"),
+        counts_claim(
+            "fig03.B.counts",
+            "Section 3, Figure 3",
+            LOOP,
+            "(B)",
+            a,
+            b,
+            "loop_remesh",
+            cause="Loop's remeshing",
+        ),
         exact(
             "fig03.B.faces",
             "Section 3, Figure 3",
@@ -113,6 +122,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "at each of its 2E corners",
             add_counts(a.face_size_histogram(), {3: 2 * a.n_edges}),
             b.face_size_histogram(),
+            reading="every face keeps a central copy of its size, and every corner of every face "
+            "becomes a triangle",
+            cause="Loop's remeshing",
         ),
         bounded(
             "fig03.B.midpoints",
@@ -120,6 +132,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "we first subdivide every edge at its midpoint",
             "largest distance of a new vertex of (B) from the midpoint of its edge of (A)",
             err,
+            reading="every new vertex sits at the midpoint of an edge",
+            cause="Loop's remeshing",
         ),
         exact(
             "fig03.non_triangles",
@@ -129,5 +143,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "non-triangles by size in (B) and in (B) remeshed again, against those of (A)",
             (non_tri(a), non_tri(a)),
             (non_tri(b), non_tri(c)),
+            reading="the non-triangles of the input stay, as central copies, at every level",
+            cause="Loop's remeshing",
         ),
     ]

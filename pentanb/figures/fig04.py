@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from .. import shapes
 from ..mesh import Mesh
-from .claim import Claim, exact
+from .claim import CHECK, Claim, exact
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -73,6 +73,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             f"({k}) face sizes and genus",
             ([6], BUILT_GENUS[k]),
             (sorted(m.face_size_histogram()), m.genus),
+            reading="closed meshes of hexagons exist on surfaces of genus 1 and 2",
+            cause="hexagonal meshes of genus 1 and 2",
         )
         for k, m in (("A", a), ("B", b))
     ]
@@ -86,6 +88,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "(A) (n = 6, built with g = 1) valences, against m = 3 for every v: all 3-valent",
             {3: a.n_vertices},
             a.valence_histogram(),
+            kind=CHECK,
+            cause="equation (1) is Euler's formula with 2E = nF and 2E = mV",
         )
     )
     out.append(
@@ -98,6 +102,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "2E - 3V = 6 (g - 1) = 6 from equation (1); smallest valence",
             (6, 3),
             (int((b.valences - 3).sum()), int(b.valences.min())),
+            kind=CHECK,
+            cause="equation (1) is Euler's formula with 2E = nF and 2E = mV",
         )
     )
     return out

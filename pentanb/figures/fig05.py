@@ -92,6 +92,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
                 m,
                 "preserve_hexagons",
                 2,
+                cause="hexagon preservation",
             )
         )
         out.append(
@@ -103,6 +104,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
                 f"{panel} face sizes and genus, against Figure 4's",
                 ([6], src.genus),
                 (sorted(m.face_size_histogram()), m.genus),
+                reading="hexagon preservation of a hexagonal mesh of genus 1 or 2 makes only "
+                "hexagons, on the same surface",
+                cause="hexagon preservation",
             )
         )
         out.append(
@@ -116,6 +120,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
                 f"{panel} (non-hexagons, non-3-valent vertices), against Figure 4's",
                 irregular(src),
                 irregular(m),
+                reading="the non-hexagons and the vertices of valence other than 3 stay as many "
+                "as in the input",
+                cause="hexagon preservation",
             )
         )
     return out

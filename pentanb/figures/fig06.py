@@ -130,6 +130,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             f"faces by size that fill the {n}-gon of (A)",
             {5: n},
             {int(k): int(v) for k, v in zip(*np.unique(sizes, return_counts=True))},
+            reading=f"the {n}-gon becomes {n} pentagons",
+            cause="pentagonalization's combinatorics",
         ),
         bounded(
             "fig06.thirds",
@@ -137,6 +139,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "Subdivide all edges in the mesh into 3 equal parts.",
             "largest distance of a new edge point from 1/3 or 2/3 of its edge",
             err,
+            reading="the new points on every edge are at a third and two thirds of it",
+            cause="pentagonalization's positions",
         ),
         exact(
             "fig06.corners",
@@ -146,6 +150,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "per pentagon: old vertices (most), edge points (fewest), distinct point spheres",
             (1, 3, 1),
             corners,
+            reading="each pentagon has one old vertex, three edge points and the point sphere: "
+            "the point sphere is joined to every other edge point around the face",
+            cause="pentagonalization's combinatorics",
         ),
         bounded(
             "fig06.centroid",
@@ -153,5 +160,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "Create a point sphere [4, 14] at the centroid of the face.",
             "distance of the point sphere from the face's centroid",
             centre_err,
+            reading="the new vertex inside the face is the mean of its corners",
+            cause="pentagonalization's positions",
         ),
     ]

@@ -18,7 +18,7 @@ import numpy as np
 from ..mesh import Mesh
 from ..schemes.pentagonal import preserve_pentagons
 from ._flat import pillow
-from .claim import Claim, bounded, exact
+from .claim import FAILS, HOLDS, Claim, bounded, exact, fmt, judged
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -111,52 +111,124 @@ def draw(meshes: Mapping[str, Mesh] | None = None) -> Figure:
     return fig
 
 
+def _by_position(points: np.ndarray, out: Mesh) -> tuple[np.ndarray, np.ndarray]:
+    """The vertex of ``out`` nearest to every point, and the distance to it."""
+    d = np.linalg.norm(points[:, None, :] - out.vertices[None, :, :], axis=2)
+    j = d.argmin(axis=1)
+    return j, d[np.arange(len(points)), j]
+
+
+def _face_at(points: np.ndarray, out: Mesh, normal: np.ndarray) -> int | None:
+    """The face of ``out`` whose corners are at ``points`` (to rounding, any order) and
+    whose normal turns the way ``normal`` does; None if there is none.  (The pillow's
+    front and back faces have their central copies at the same points: the normal tells
+    them apart.)"""
+    for f in np.flatnonzero(out.face_sizes == len(points)):
+        q = out.vertices[out.faces[f]]
+        d = np.linalg.norm(q[:, None, :] - points[None, :, :], axis=2)
+        if d.min(axis=0).max() <= 1e-9 and d.min(axis=1).max() <= 1e-9:
+            if float(out.face_normals[f] @ normal) > 0:
+                return int(f)
+    return None
+
+
 def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
-    """What the paper says of Figure 10, measured on :func:`panels`."""
+    """What the paper says of Figure 10, measured on :func:`panels`.
+
+    The points of the construction are computed from (A)'s positions alone
+    (the midpoints of its edges, their polygon scaled by :data:`SCALE`) and
+    looked for among (B)'s vertices and faces by position: nothing is read
+    from the operator's numbering of its output.
+    """
     p = panels() if meshes is None else meshes
     src, out = p["A"], p["B"]
-    front = _front(src)
     n = int(src.face_sizes[0])
-    pts = out.vertices
-    mids = pts[n : n + src.n_edges][:n]  # the front face's edges are edges 0 .. n - 1
-    c = mids.mean(axis=0)
-    inner = pts[out.faces[0]]
-    err = (
-        float(np.abs(inner - (c + SCALE * (mids - c))).max())
-        if inner.shape == mids.shape
-        else float("inf")
+    v = src.vertices
+    edges = {frozenset(map(int, e)) for e in out.edges}
+
+    # step 1: every edge of (A) cut at its midpoint, both halves edges of (B)
+    ends = src.edges
+    old, old_d = _by_position(v, out)
+    mid, mid_d = _by_position((v[ends[:, 0]] + v[ends[:, 1]]) / 2, out)
+    halves = sum(
+        {int(old[a]), int(m)} in edges and {int(old[b]), int(m)} in edges
+        for (a, b), m in zip(ends, mid)
     )
-    sizes = out.face_sizes[front[front < out.n_faces]]
+    step1 = float(max(mid_d.max(), old_d.max()))
+
+    # step 2: the front face's midpoints, in order, scaled about their centroid
+    ring = src.corners[src.offsets[0] : src.offsets[1]]
+    mids = (v[ring] + v[np.roll(ring, -1)]) / 2
+    c = mids.mean(axis=0)
+    target = c + SCALE * (mids - c)
+    face = _face_at(target, out, src.face_normals[0])
+    _, near = _by_position(target, out)
+    scaled = float(near.max()) if face is not None else float("inf")
+    where = "a face of (B), turned as (A)" if face is not None else "no face of (B) there"
+    # step 3: every corner of that face joined to the midpoint it was scaled from
+    mids_at, _ = _by_position(mids, out)
+    joined, by_size = 0, {}
+    if face is not None:
+        ring_out = out.faces[face]
+        d = np.linalg.norm(target[:, None, :] - out.vertices[ring_out][None, :, :], axis=2)
+        corners = ring_out[d.argmin(axis=1)]  # the central face's corner at every target
+        joined = sum({int(q), int(m)} in edges for q, m in zip(corners, mids_at))
+        # the faces that fill the front face: the central one and those sharing its edges
+        hs = np.arange(out.offsets[face], out.offsets[face + 1])
+        around = out.halfedge_face[out.twin[hs]]
+        sizes = out.face_sizes[np.concatenate([[face], around])]
+        by_size = {int(k): int(x) for k, x in zip(*np.unique(sizes, return_counts=True))}
     return [
+        judged(
+            "fig10.midpoints",
+            "Section 5.2, step 1",
+            "Subdivide all edges in the mesh into 2 equal parts. Let the set of newly created "
+            "points be Vs.",
+            f"largest distance of the midpoint of an edge of (A) (from (A)'s positions) or of "
+            f"a vertex of (A) from the nearest vertex of (B) = {fmt(step1)}; edges of (A) whose "
+            f"two halves are edges of (B) (vertices found by position): {halves} of "
+            f"{src.n_edges}",
+            "holds if the distance is <= 1e-09 (rounding) and every edge is cut in two there",
+            HOLDS if step1 <= 1e-9 and halves == src.n_edges else FAILS,
+            reading="every edge of the input gets a new vertex at its midpoint and becomes two "
+            "edges of the output; the old vertices stay where they are",
+            cause="pentagon preservation's positions",
+        ),
         exact(
             "fig10.pentagons",
             "Section 5.2, Figure 10",
             "Each face in the original mesh would now have been split into as many pentagons "
             "as the number of edges (or vertices) in the original face plus one central face "
             "with the same number of sides as the original face.",
-            f"faces by size that fill the {n}-gon of (A)",
-            {5: n + 1},
-            {int(k): int(v) for k, v in zip(*np.unique(sizes, return_counts=True))},
+            f"the central face of (B) in the {n}-gon of (A) and the faces on its edges, by size",
+            {n: 1, 5: n} if n != 5 else {5: n + 1},
+            by_size,
+            reading=f"the {n}-gon of (A) becomes a central {n}-gon with {n} pentagons around it",
+            cause="pentagon preservation's combinatorics",
         ),
         bounded(
             "fig10.scaled",
             "Section 5.2, Figure 10",
             "Scale the points in Pi around their centroid by a specified amount. The scale "
             "factor should be less than 1.",
-            f"largest distance of a corner of the central face from the edge midpoints "
-            f"scaled by {SCALE} (this package's default) about their centroid",
-            err,
+            f"largest distance of the midpoints of the edges of (A)'s {n}-gon (from (A)'s "
+            f"positions) scaled by {SCALE} (this package's default) about their centroid from "
+            f"the nearest vertices of (B) ({where})",
+            scaled,
+            reading="the central face's corners are the input face's edge midpoints, scaled "
+            "about their centroid by the factor (below 1)",
+            cause="pentagon preservation's positions",
         ),
         exact(
             "fig10.joined",
             "Section 5.2, Figure 10",
             "For each vertex vi,j in fi, insert an edge between vi,j and the point in Vs "
             "corresponding to vi,j.",
-            "corners of the central face by valence (each joined to its midpoint: 3)",
-            {3: n},
-            {
-                int(k): int(v)
-                for k, v in zip(*np.unique(out.valences[out.faces[0]], return_counts=True))
-            },
+            "corners of the central face joined by an edge of (B) to the midpoint they were "
+            "scaled from (both found by position)",
+            n,
+            joined,
+            reading="every corner of the central face is joined to the midpoint it comes from",
+            cause="pentagon preservation's combinatorics",
         ),
     ]

@@ -86,6 +86,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             b,
             "pentagonalize",
             2,
+            cause="pentagonalization's combinatorics",
         ),
         exact(
             "fig12.B.pentagons",
@@ -96,6 +97,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             f"and valences {min(a.valence_histogram())}-{max(a.valence_histogram())}",
             ([5], a.genus),
             (sorted(b.face_size_histogram()), b.genus),
+            reading="any closed mesh, of mixed faces and valences, becomes a mesh of pentagons "
+            "only, on the same surface",
+            cause="pentagonalization's combinatorics",
         ),
         judged(
             "fig12.B.smoothed",
@@ -107,5 +111,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             f"{crease_b.mean():.1f} degrees",
             "holds if (B)'s largest and mean crease angles are below (A)'s",
             HOLDS if smoother else FAILS,
+            reading="the subdivided model is smoother than the initial one: the angles between "
+            "neighbouring faces, largest and mean, are smaller",
+            cause="the rabbit smoothed",
         ),
     ]

@@ -100,6 +100,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "(A) faces by size, valences, (V, E, F), against the truncated icosahedron's",
             ({5: 12, 6: 20}, {3: 60}, (60, 90, 32)),
             (a.face_size_histogram(), a.valence_histogram(), vef(a)),
+            reading="honeycomb subdivision of the dodecahedron is the soccer ball as a mesh: 12 "
+            "pentagons, 20 hexagons, 60 three-valent vertices",
+            cause="soccerball subdivision of pentagonal meshes",
         )
     ]
     for label in ("B", "C", "D"):
@@ -124,6 +127,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
                 f"{panel} faces by size, against the {s_name}'s pentagons kept and {how}",
                 add_counts({5: s.n_faces}, new),
                 m.face_size_histogram(),
+                reading="the pentagons stay and every new face has six sides or more: no "
+                "triangle, no quadrilateral",
+                cause="soccerball subdivision of pentagonal meshes",
             )
         )
     hb = p["B"]
@@ -135,6 +141,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "(B) valences",
             {3: hb.n_vertices},
             hb.valence_histogram(),
+            reading="every vertex of a honeycomb subdivision is 3-valent",
+            cause="soccerball subdivision of pentagonal meshes",
         )
     )
     return out

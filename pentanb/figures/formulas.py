@@ -102,6 +102,15 @@ PAPER: dict[str, tuple[str, str, str, Callable[[Mesh], object], object]] = {
 }
 
 
+#: The causes the schemes' claims share with the figures' (the others: their own key).
+CAUSES = {
+    "pentagonalize": "pentagonalization's combinatorics",
+    "preserve_pentagons": "pentagon preservation's combinatorics",
+    "loop_remesh": "Loop's remeshing",
+    "preserve_hexagons": "hexagon preservation",
+}
+
+
 def scheme_claims(
     mesh: Mesh | None = None, outputs: Mapping[str, Mesh] | None = None
 ) -> list[Claim]:
@@ -141,6 +150,9 @@ def scheme_claims(
                 f"{s.label}: (V, E, F), against {s.formula} from {vef(mesh)}; {what}",
                 (s.counts(*vef(mesh)), expected),
                 (vef(after), measure(after)),
+                reading=f"the construction, counted ({s.formula} from (V, E, F)), and the kind "
+                f"of mesh it makes ({what}) from a mesh of triangles, quads and a pentagon",
+                cause=CAUSES.get(name, ""),
             )
         )
     return out

@@ -5,9 +5,13 @@ against its number of vertices v for genus 0, 1, 2 (panels A-C, with dots
 for meshes of this package) and the chart of the limits ``(n, 2n/(n-2))``
 (panel D).  Its panels are charts, not meshes: :func:`panels` is empty.
 
-The claims measure equation (1) on meshes, with the genus each mesh was
-built with (never the genus computed from V - E + F, which would make the
-equation an identity): ``claims({name: mesh})`` replaces a sample by name
+Equation (1) is Euler's formula rewritten, so measuring it on meshes is
+bookkeeping: those statements are consistency checks (with the genus each
+mesh was built with, never the genus computed from V - E + F, so that a mesh
+of the wrong genus fails them), not evidence.  The claims are the ones with
+content: the simplest meshes, and "necessarily rational" read as the limit
+10/3 not being an integer; the stricter reading "never an integer" is an
+observation.  ``claims({name: mesh})`` replaces a sample by name
 (:data:`SAMPLES`, :func:`samples`).
 
 (The module is called ``section4`` so that ``pentanb.figures.equation1``
@@ -25,8 +29,9 @@ import numpy as np
 
 from .. import shapes, topology
 from ..mesh import Mesh
+from ..schemes.smoothing import dual
 from ..subdivision import subdivide
-from .claim import FAILS, HOLDS, Claim, exact, fmt, judged
+from .claim import CHECK, FAILS, HOLDS, Claim, exact, fmt, judged, observed
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -179,7 +184,8 @@ def _gyro(mesh: Mesh, k: int = 1) -> Mesh:
 #: The meshes the claims measure, by name: (builder, genus it is built with, role).
 #: Roles: "simplest" (Section 4's simplest n-gonal meshes), "n-gonal" (equation
 #: (1) with the built genus), "3-valent g0" (honeycombs of genus-0 shapes),
-#: "pentagonal g0", "limit" (pentagonal meshes growing), "g1" (pentagonal, genus 1).
+#: "pentagonal g0" (some growing), "g1" (genus 1, the plane's tilings folded on a
+#: torus: pentagons, and triangles as the hexagonal torus's dual; "torus" has quads).
 SAMPLES: dict[str, tuple] = {
     "tetrahedron": (shapes.tetrahedron, 0, "simplest"),
     "cube": (shapes.cube, 0, "simplest"),
@@ -197,6 +203,7 @@ SAMPLES: dict[str, tuple] = {
     "gyro(cube) x2": (lambda: _gyro(shapes.cube(), 2), 0, "pentagonal g0"),
     "gyro(cube) x3": (lambda: _gyro(shapes.cube(), 3), 0, "pentagonal g0"),
     "gyro(hexagonal torus)": (lambda: _gyro(shapes.hexagonal_torus()), 1, "g1"),
+    "dual(hexagonal torus)": (lambda: dual(shapes.hexagonal_torus()), 1, "g1"),
 }
 
 
@@ -243,6 +250,10 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
     def role(r: str) -> list[str]:
         return [name for name, (_, _, rr) in SAMPLES.items() if rr == r]
 
+    def vals(k: str) -> str:
+        return fmt(m[k].valence_histogram())
+
+    euler = "equation (1) is Euler's formula with 2E = nF and 2E = mV"
     out = []
     simplest = role("simplest")
     out.append(
@@ -256,6 +267,9 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "(n, v, average valence m = 2E/V) of the " + ", ".join(simplest),
             [(3, 4, Fraction(3)), (4, 8, Fraction(3)), (5, 20, Fraction(3))],
             [(_n(m[k]), m[k].n_vertices, _m(m[k])) for k in simplest],
+            reading="the smallest closed n-gonal meshes of genus 0 with no vertex below "
+            "valence 3 (m = 3 in equation (1)) are the tetrahedron, the cube and the "
+            "dodecahedron, with v = 4, 8 and 20",
         )
     )
     ngonal = role("n-gonal")
@@ -269,6 +283,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             + ", against equation (1) with that g",
             {k: _eq1(m[k], genus[k]) for k in ngonal},
             {k: _m(m[k]) for k in ngonal},
+            kind=CHECK,
+            cause=euler,
         )
     )
     honey = role("3-valent g0")
@@ -292,6 +308,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
                 )
                 for k in honey
             },
+            kind=CHECK,
+            cause=euler,
         )
     )
     pent = role("pentagonal g0") + ["dodecahedron"]
@@ -306,6 +324,8 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "(n, v, smallest valence) of the pentagonal genus-0 meshes: " + fmt(rows),
             "holds if every one is pentagonal with v >= 20 and no vertex below valence 3",
             HOLDS if ok else FAILS,
+            kind=CHECK,
+            cause=euler,
         )
     )
     grow = ["gyro(cube)", "gyro(cube) x2", "gyro(cube) x3"]
@@ -322,25 +342,61 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             f"of the gyro(hexagonal torus) (g = 1): {fmt(torus_m)}",
             "holds if the distance to 10/3 falls as v grows and the genus-1 mesh has exactly 10/3",
             HOLDS if falls and torus_m == Fraction(10, 3) else FAILS,
+            kind=CHECK,
+            cause=euler,
+        )
+    )
+    # "necessarily rational": the limit 10/3 (the plane's tilings, g = 1) is no integer, so
+    # no pentagonal tiling has every vertex of one valence; triangles and quads reach 6, 4
+    plane = {
+        "pentagons": "gyro(hexagonal torus)",
+        "quads": "torus",
+        "triangles": "dual(hexagonal torus)",
+    }
+    limit = {kind: (_n(m[k]), _m(m[k]), len(m[k].valence_histogram())) for kind, k in plane.items()}
+    five, four, three = limit["pentagons"], limit["quads"], limit["triangles"]
+    rational = five[0] == 5 and five[1] == Fraction(10, 3) and five[2] > 1
+    integers = four == (4, Fraction(4), 1) and three == (3, Fraction(6), 1)
+    out.append(
+        judged(
+            "eq1.non_integer",
+            "Section 2 (main results); Section 4",
+            "The average valence of vertices (vertex degree) in a pentagonal meshes is "
+            "necessarily rational, while triangular and quadrilateral meshes can have integer "
+            "vertex degree.",
+            "2E/V of growing pentagonal meshes: "
+            + fmt({k: _m(m[k]) for k in grow})
+            + "; of genus-1 meshes (the plane's tilings folded on a torus): "
+            + "; ".join(
+                f"{kind}, {plane[kind]}: {fmt(_m(m[plane[kind]]))}, valences {vals(plane[kind])}"
+                for kind in plane
+            ),
+            "holds if the genus-1 pentagonal mesh's 2E/V is 10/3, not an integer, and its "
+            "vertices have more than one valence, while the genus-1 quad and triangle meshes "
+            "have 4 and 6 with one valence each",
+            HOLDS if rational and integers else FAILS,
+            reading="as v grows, the average valence of a pentagonal mesh tends to 2n/(n-2) = "
+            "10/3 (equation (1); the value of the plane's tilings, g = 1), which is not an "
+            "integer: no tiling of pentagons has all its vertices of one valence, while the "
+            "limits of triangles (6) and quadrilaterals (4) are integers, reached by regular "
+            "tilings",
         )
     )
     pent_all = role("pentagonal g0") + ["dodecahedron", "gyro(hard cube)", "gyro(rabbit) x2"]
     integer = [k for k in pent_all if _m(m[k]).denominator == 1]
     out.append(
-        judged(
-            "eq1.non_integer",
-            "Section 2 (main results)",
+        observed(
+            "eq1.integer_at_20",
+            "Section 2 (main results), read strictly as 'never an integer'",
             "The average valence of vertices (vertex degree) in a pentagonal meshes is "
-            "necessarily rational, while triangular and quadrilateral meshes can have integer "
-            "vertex degree.",
+            "necessarily rational",
             "2E/V of the pentagonal meshes: "
             + fmt({k: _m(m[k]) for k in pent_all})
-            + (f"; an integer for {', '.join(integer)}" if integer else "; none an integer"),
-            "read as 'never an integer' (every 2E/V is rational): holds if no pentagonal "
-            "mesh has an integer average valence (equation (1): 10/3 (1 - 2/v) is the "
-            "integer 3 exactly when v = 20)",
-            FAILS if integer else HOLDS,
-            FAILS,
+            + (f"; an integer for {', '.join(integer)}" if integer else "; none an integer")
+            + " (equation (1): 10/3 (1 - 2/v) is the integer 3 exactly when v = 20)",
+            "some pentagonal mesh has an integer average valence",
+            bool(integer),
+            cause="the pentagonal meshes of 20 vertices",
         )
     )
     return out
