@@ -7,7 +7,10 @@ more uniform with each application of dual operation".  The figure
 remeshing and each pair of duals, (A) the radius spread, (B) the spread of
 the edge lengths and (C) the largest crease angle; after every iteration
 (remesh + two duals), the largest crease angle (D) at the extraordinary
-vertices and (E) elsewhere.  Its panels are charts: :func:`panels` is empty.
+vertices and (E) elsewhere; dotted in (D), the fall per level a triangle's
+spectrum predicts for pentagon preservation
+(:func:`pentanb.analysis.convergence.predicted_crease_rate`), drawn through
+the rabbit's last level.  Its panels are charts: :func:`panels` is empty.
 
 A falling crease angle is necessary for a G1 limit, not sufficient: the
 claims here test that necessary condition only, on every mesh of the study
@@ -94,6 +97,13 @@ def draw(
             c, ls = COLORS[names.index(mesh_name)], STYLES[scheme]
             axes[3].semilogy(res.steps, res.crease_at, ls, color=c, marker="o", ms=3)
             axes[4].semilogy(res.steps, res.crease_elsewhere, ls, color=c, marker="o", ms=3)
+        # the rate a triangle's spectrum predicts, through the rabbit's last level
+        rabbit = data["iterations"].get(("rabbit", "preserve_pentagons"))
+        lam1, lam3, _ = cv.predicted_crease_rate()
+        if rabbit is not None:
+            k = rabbit.steps.astype(float)
+            last = float(rabbit.crease_at[-1])
+            axes[3].semilogy(k, last * (lam3 / lam1) ** (k - k[-1]), ":", color="#777777", lw=1.2)
         for ax in axes[:3]:
             ax.set_xlabel("pairs of duals after one remeshing")
         axes[0].set_ylabel("std / mean of vertex radii")
@@ -123,6 +133,16 @@ def draw(
             Line2D([], [], color="#444444", ls=ls, label=SCHEMES[s].label)
             for s, ls in STYLES.items()
         ]
+        handles.append(
+            Line2D(
+                [],
+                [],
+                color="#777777",
+                ls=":",
+                label=f"x{lam3 / lam1:.3f} per level: a triangle's\n"
+                "spectrum (pentagon preservation)",
+            )
+        )
         grid[1, 2].legend(
             handles=handles,
             loc="center",
