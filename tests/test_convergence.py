@@ -155,3 +155,15 @@ def test_lateral_study_refuses_unknown_names():
         lt.study(1, ("3 cells",), ("gyro",))
     with pytest.raises(ValueError, match="iterations"):
         lt.study(0)
+
+
+def test_study_stops_before_max_faces():
+    # the notebooks' cap: every mesh stops before one of more than 100,000 faces
+    capped = cv.study(2, 4, max_faces=100_000)
+    levels = {k: len(res.steps) for k, res in capped["iterations"].items()}
+    assert levels[("rabbit", "pentagonalize")] == 3  # 20,050 faces; 100,250 at the 4th
+    assert levels[("rabbit", "preserve_pentagons")] == 3  # 34,717; 207,949 at the 4th
+    assert levels[("cube", "pentagonalize")] == 4
+    assert max(int(res.faces.max()) for res in capped["iterations"].values()) <= 100_000
+    assert cv.study(2, 4, max_faces=10) is not capped  # at least one iteration each
+    assert all(len(r.steps) == 1 for r in cv.study(2, 4, max_faces=10)["iterations"].values())

@@ -36,6 +36,7 @@ from numpy.typing import NDArray
 
 from .. import shapes
 from ..mesh import Mesh
+from ..schemes import SCHEMES
 from ..schemes.smoothing import dual
 from ..subdivision import get_scheme, subdivide
 from .measures import angle_spread, crease_angles, edge_length_spread, normal_angles, radius_spread
@@ -265,7 +266,7 @@ ROUND_MESHES = ("cube", "tetrahedron")
 STUDY_SCHEMES = ("pentagonalize", "preserve_pentagons")
 
 
-def study(duals: int = 12, iterations: int = 4) -> dict:
+def study(duals: int = 12, iterations: int = 4, max_faces: int | None = None) -> dict:
     """Both schemes on :data:`STUDY_MESHES`.
 
     Parameters
@@ -274,6 +275,9 @@ def study(duals: int = 12, iterations: int = 4) -> dict:
         Duals after one remeshing, for :func:`dual_convergence`.
     iterations : int, >= 1
         Iterations (remesh + two duals), for :func:`subdivision_convergence`.
+    max_faces : int, optional
+        Stop every mesh's iterations before the first whose mesh would have
+        more faces (the notebooks' 100,000; at least one iteration is kept).
 
     Returns
     -------
@@ -293,17 +297,31 @@ def study(duals: int = 12, iterations: int = 4) -> dict:
     (however the arguments are passed): the convergence figure and its claims
     share one study.  Treat the returned dict as read-only.
     """
-    return _study(int(duals), int(iterations))
+    return _study(int(duals), int(iterations), None if max_faces is None else int(max_faces))
+
+
+def _within(mesh: Mesh, scheme: str, iterations: int, max_faces: int | None) -> int:
+    """The iterations, at most ``iterations`` and at least 1, whose meshes keep to
+    ``max_faces`` faces (counted by the scheme's formula, nothing built)."""
+    if max_faces is None:
+        return iterations
+    counts = (mesh.n_vertices, mesh.n_edges, mesh.n_faces)
+    for k in range(iterations):
+        counts = SCHEMES[scheme].counts(*counts)
+        if counts[2] > max_faces:
+            return max(k, 1)
+    return iterations
 
 
 @functools.lru_cache(maxsize=4)
-def _study(duals: int, iterations: int) -> dict:
+def _study(duals: int, iterations: int, max_faces: int | None = None) -> dict:
     res_duals, res_iterations = {}, {}
     for name, build in STUDY_MESHES.items():
         mesh = build()
         for scheme in STUDY_SCHEMES:
             res_duals[name, scheme] = dual_convergence(mesh, scheme, duals)
             it = iterations + 1 if mesh.n_faces > 50 else iterations
+            it = _within(mesh, scheme, it, max_faces)
             res_iterations[name, scheme] = subdivision_convergence(mesh, scheme, it, spreads=False)
     return {"meshes": tuple(STUDY_MESHES), "duals": res_duals, "iterations": res_iterations}
 

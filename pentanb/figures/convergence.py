@@ -55,7 +55,11 @@ def panels() -> dict[str, Mesh]:
 
 
 def draw(
-    meshes: Mapping[str, Mesh] | None = None, *, duals: int = 12, iterations: int = 4
+    meshes: Mapping[str, Mesh] | None = None,
+    *,
+    duals: int = 12,
+    iterations: int = 4,
+    max_faces: int | None = None,
 ) -> Figure:
     """Convergence measured: roundness, uniformity and creases per dual pair and per iteration.
 
@@ -66,7 +70,10 @@ def draw(
     duals : int, even, >= 2
         Duals after one remeshing (panels A-C, measured after every pair).
     iterations : int, >= 1
-        Iterations of remesh + two duals (panels D and E).
+        Iterations of remesh + two duals (panels D and E); the rabbit one more.
+    max_faces : int, optional
+        No mesh of more faces: every mesh's iterations stop before one
+        (:func:`pentanb.analysis.convergence.study`).
 
     Returns
     -------
@@ -78,7 +85,7 @@ def draw(
 
     from ..viz import mpl as vz
 
-    data = cv.study(duals=duals, iterations=iterations)
+    data = cv.study(duals=duals, iterations=iterations, max_faces=max_faces)
     names = list(data["meshes"])
     with vz.style():
         fig = Figure(figsize=(10.5, 8.0), dpi=vz.DPI)
