@@ -22,6 +22,7 @@ from __future__ import annotations
 import dataclasses
 import inspect
 import sys
+from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
@@ -45,6 +46,7 @@ from pentanb.figures import (
     fig10,
     formulas,
     lateral,
+    scale,
     section4,
     spectra,
 )
@@ -778,7 +780,8 @@ def perturbed(row, weight=1e-3, i=1):
     a[i, k] += weight
     w = np.linalg.eigvals(a) ** sp.period
     w = w[np.argsort(-np.abs(w), kind="stable")]
-    return dataclasses.replace(row, spectrum=dataclasses.replace(sp, eigenvalues=w))
+    # the row's exact ordering was established for the right matrix: it goes with it
+    return dataclasses.replace(row, spectrum=dataclasses.replace(sp, eigenvalues=w), exact=None)
 
 
 @pytest.mark.slow
@@ -821,9 +824,9 @@ def test_claim_continuity_of_vertices_fails_on_a_3_valent_vertex_without_duals(t
 def test_claim_spectra_fails_on_a_wrong_weight_in_the_local_matrix(table):
     # one weight of the 5-valent vertex's matrix moved by 1e-3 splits |lambda1| = |lambda2|.
     # Where the one-step matrix has a complex subdominant pair (pentagonalization, which
-    # is chiral, and pentagon preservation's faces, which turn by half a sector per step)
-    # a real perturbation keeps the moduli equal: their wrong inputs are the vertex
-    # without duals and the other scale's triangle
+    # is chiral, and pentagon preservation's faces, which turn by half a sector per step:
+    # their pair is real only over two steps) a real perturbation keeps the moduli equal:
+    # their wrong inputs are the vertex without duals and the other scale's triangle
     labels = ["preserve_pentagons 0.75", "preserve_pentagons 0.5"]
     rows = [r for r in table if r.label in labels and r.element == "vertex 5"]
     assert len(rows) == 2
@@ -872,7 +875,7 @@ def test_claim_c1_fails_on_a_spline_background_granted_to_the_pentagonal_schemes
     # subdominant eigenvalues, injective maps): the proof would not be missing
     monkeypatch.setattr(pentanb.analysis.spectral, "_spline_background", lambda label: True)
     by_key = leaves(characteristic_maps.claims(rows=table), "characteristic_maps.c1")
-    assert "proven for the paper's schemes at preserve_pentagons 0.75 vertex 3" in (
+    assert "established for the paper's schemes at preserve_pentagons 0.75 vertex 3" in (
         by_key["characteristic_maps.c1"].measured
     )
 
@@ -886,13 +889,66 @@ def test_claim_c1_fails_on_bilinear_subdivision_as_the_control(table, undualled)
     by_key = leaves(
         characteristic_maps.claims(rows=replaced(table, control)), "characteristic_maps.c1"
     )
-    assert "no (necessary condition fails) at vertex 3" in by_key["characteristic_maps.c1"].measured
+    assert "no tangent plane for generic control points (3 eigenvalues" in (
+        by_key["characteristic_maps.c1"].measured
+    )
 
 
 def test_continuity_claims_without_rows_do_not_hold():
     empty = spectra.claims(rows=[]) + characteristic_maps.claims(rows=[])
     assert empty and not any(c.holds for c in empty)
     assert "3: no row" in empty[0].measured
+
+
+# ====================================================================== scale (observations)
+@pytest.fixture(scope="module")
+def scale_data():
+    """The shared scale study (computed once per process)."""
+    pytest.importorskip("scipy")
+    return _continuity.scale_study()
+
+
+def restudied(study, **changes):
+    """The study with some thresholds (``{(duals, kind, size): ScaleThreshold}``) or
+    exact orderings at the recommended scale replaced."""
+    thresholds = {**study.thresholds, **changes.pop("thresholds", {})}
+    exact_at = {**study.exact_at_recommended, **changes.pop("exact_at", {})}
+    return dataclasses.replace(
+        study, thresholds=thresholds, exact_at_recommended=exact_at, **changes
+    )
+
+
+@pytest.mark.slow
+@falsifies("scale.triangles.2_duals", "scale.elsewhere")
+def test_claim_scale_fails_on_four_duals_filed_as_two(scale_data):
+    four = scale_data.thresholds[(4, "face", 3)]
+    wrong = restudied(scale_data, thresholds={(2, "face", 3): four, (2, "vertex", 5): four})
+    leaves(scale.claims(data=wrong), "scale.triangles.2_duals", "scale.elsewhere")
+
+
+@pytest.mark.slow
+@falsifies("scale.triangles.more_duals")
+def test_claim_scale_more_duals_fails_on_two_duals_filed_as_four(scale_data):
+    two = scale_data.thresholds[(2, "face", 3)]
+    wrong = restudied(scale_data, thresholds={(4, "face", 3): two})
+    leaves(scale.claims(data=wrong), "scale.triangles.more_duals")
+
+
+@pytest.mark.slow
+@falsifies("scale.recommended")
+def test_claim_scale_recommended_fails_below_the_threshold(scale_data):
+    # the exact ordering just below 5/7 in place of the triangle's at 7/8, and 3/4
+    # recommended in place of 7/8: each makes the observation unseen
+    below = scale_data.thresholds[(2, "face", 3)].exact_at
+    below = below[min(below)]
+    leaves(
+        scale.claims(data=restudied(scale_data, exact_at={("face", 3): below})),
+        "scale.recommended",
+    )
+    leaves(
+        scale.claims(data=restudied(scale_data, recommended=Fraction(3, 4))),
+        "scale.recommended",
+    )
 
 
 # ====================================================================== schemes

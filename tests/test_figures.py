@@ -52,6 +52,7 @@ EXPECTED_FILES = [f"fig{i:02d}.png" for i in range(1, 14)] + [
     "convergence.png",
     "spectra.png",
     "characteristic_maps.png",
+    "scale.png",
 ]
 #: The panel labels of every image, as the paper (or our drawing beyond it) letters them.
 PAPER_PANELS = {
@@ -73,9 +74,10 @@ PAPER_PANELS = {
     "convergence": "ABCDE",
     "spectra": "ABCDEFGHI",
     "characteristic_maps": "ABCDEF",
+    "scale": "ABCDEF",
 }
 #: Images whose panels are charts, not meshes.
-CHARTS = ("equation1", "lateral", "convergence", "spectra", "characteristic_maps")
+CHARTS = ("equation1", "lateral", "convergence", "spectra", "characteristic_maps", "scale")
 #: The flat diagrams, whose meshes keep the pillow's 2-valent corners.
 FLAT = ("fig06", "fig10")
 

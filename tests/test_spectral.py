@@ -8,7 +8,11 @@ Validation against what can be trusted without this code:
   DeRose 1993; Stam 1998), which vertex insertion + 2 duals shares (its
   edge and face rules are Catmull-Clark's; Warren and Weimer 2001, 7.2);
 * the 1-ring contraction measured with :func:`pentanb.subdivide` alone over
-  six iterations, which must match ``|lambda1|`` to 1 %.
+  six iterations, which must match ``|lambda1|`` to 1 %, whatever the
+  Fourier mode of ``lambda1`` (mode 0 at pentagon preservation's triangles);
+* exact rational arithmetic (:mod:`pentanb.analysis._exact`) checked
+  against numpy on random polynomials and matrices, and the exact local
+  matrices against the floating-point ones.
 
 Every verdict is also shown failing: on a scheme where it does fail
 (pentagon preservation at scale 0.5 around triangles, sqrt(3) at
@@ -101,6 +105,27 @@ def test_measured_contraction_of_a_face():
     assert abs(limit / sp.moduli[1] - 1) < 0.01
 
 
+def test_measured_contraction_sees_a_mode_0_lambda1():
+    # at a triangle with scale 0.5, lambda1 = 17/120 is of Fourier mode 0 and the next
+    # pair 7/60 of modes +-1: the corners alone (which mode 0 moves alike) see only 7/60
+    ratios, limit = ring_contraction("preserve_pentagons", "face", 3, iterations=5, scale=0.5)
+    assert abs(limit - 17 / 120) < 1e-3
+    assert abs(ratios[-1] - 17 / 120) < 1e-3
+
+
+def test_measured_contraction_check_fails_on_the_corners_alone(monkeypatch):
+    # the check must fail on a measure blind to mode 0: the face's corners about their mean
+    def corners_only(mesh, element):
+        _, i = element
+        c = mesh.corners[mesh.offsets[i] : mesh.offsets[i + 1]]
+        return c, np.asarray(mesh.vertices)[c].mean(axis=0)
+
+    monkeypatch.setattr(spectral, "_ring_points", corners_only)
+    monkeypatch.setattr(spectral, "_mode_radii", lambda mesh, element: None)
+    _, limit = ring_contraction("preserve_pentagons", "face", 3, iterations=5, scale=0.5)
+    assert abs(limit - 17 / 120) > 0.01
+
+
 def test_the_matrix_does_not_depend_on_where_the_element_was_planted():
     in_pyramid = local_spectrum("pentagonalize", "vertex", 3)
     in_cube = local_spectrum("pentagonalize", "vertex", 3, mesh=shapes.cube(), element=0)
@@ -123,7 +148,7 @@ def test_pentagonalization_is_chiral():
     """Its subdominant eigenvalues are a complex pair at every valence."""
     for k in (3, 5):
         sp = local_spectrum("pentagonalize", "vertex", k)
-        assert sp.necessary
+        assert sp.standard
         assert sp.subdominant_complex
         assert abs(np.angle(sp.lam(1))) > math.radians(5)
         assert abs(sp.lam(1) - np.conj(sp.lam(2))) < 1e-12
@@ -131,30 +156,86 @@ def test_pentagonalization_is_chiral():
 
 def test_pentagon_preservation_is_achiral():
     sp = local_spectrum("preserve_pentagons", "vertex", 3)
-    assert sp.necessary and not sp.subdominant_complex
+    assert sp.standard and not sp.subdominant_complex
 
 
 def test_sqrt3_turns_by_half_a_sector_and_is_analysed_over_two_steps():
     sp = local_spectrum("sqrt3_remesh", "vertex", 5)
     assert sp.period == 2
     assert not sp.subdominant_complex
-    assert sp.necessary
+    assert sp.standard
 
 
-def test_necessary_condition_fails_for_preservation_at_triangles():
-    """Pentagon preservation at scale 0.5 around a triangle: |lambda1| > |lambda2|."""
+def test_standard_setting_fails_for_preservation_at_triangles():
+    """Pentagon preservation at scale 0.5 around a triangle: a simple lambda1 of mode 0."""
     sp = local_spectrum("preserve_pentagons", "face", 3, scale=0.5)
     assert sp.stationary
-    assert not sp.necessary
-    assert "!=" in sp.necessary_reason
-    cm = characteristic_map(sp)
-    assert not cm.regular
+    assert not sp.standard and not sp.necessary  # the old name agrees
+    assert "!=" in sp.standard_reason
+    assert sp.subdominant_count == 1 and sp.modes[1] == 0
+    assert "simple of Fourier mode 0" in sp.map_obstruction
+    # no characteristic map where lambda1 is simple (not a fold drawn from a mode-0 vector)
+    with pytest.raises(ValueError, match="no characteristic map: lambda1 is simple"):
+        characteristic_map(sp)
 
 
-def test_necessary_condition_fails_for_sqrt3_at_3_valent_vertices():
+def test_standard_setting_fails_for_sqrt3_at_3_valent_vertices():
     sp = local_spectrum("sqrt3_remesh", "vertex", 3)
-    assert not sp.necessary
-    assert "not double" in sp.necessary_reason
+    assert not sp.standard
+    assert "not double" in sp.standard_reason
+    assert sp.subdominant_count == 3
+    with pytest.raises(ValueError, match="3 eigenvalues share the subdominant modulus"):
+        characteristic_map(sp)
+
+
+@pytest.mark.parametrize("scheme, kind", [("loop_remesh", "vertex"), ("honeycomb", "face")])
+def test_a_triple_subdominant_eigenvalue_has_no_characteristic_map(scheme, kind):
+    sp = local_spectrum(scheme, kind, 3)
+    assert sp.subdominant_count == 3
+    rows = continuity_table([(scheme, scheme, {})], sizes=[3])
+    row = next(r for r in rows if r.kind == kind)
+    assert row.char_map is None and row.verdict.startswith("none: 3 eigenvalues")
+    assert row.c1 == (
+        "no tangent plane for generic control points (3 eigenvalues of the subdominant modulus)"
+    )
+
+
+# ---------------------------------------------------------------------- the period
+
+
+@pytest.mark.parametrize("k", [3, 4, 5])
+def test_faces_turn_by_half_a_sector_at_every_scale(k):
+    # the period is the neighbourhood's, not the leading eigenvalue's: two steps at
+    # every face whatever the scale (at triangles lambda1 changes mode at 5/7)
+    periods = {
+        local_spectrum("preserve_pentagons", "face", k, scale=s).period for s in (0.5, 0.75, 0.9)
+    }
+    assert periods == {2}
+    assert local_spectrum("preserve_pentagons", "vertex", k).period == 1
+
+
+def test_over_two_steps_the_triangles_pair_is_real():
+    sp = local_spectrum("preserve_pentagons", "face", 3, scale=0.5)
+    assert sp.period == 2
+    assert np.allclose(sp.eigenvalues[1:4], [(17 / 120) ** 2, (7 / 60) ** 2, (7 / 60) ** 2])
+    assert not sp.subdominant_complex
+
+
+def test_half_turn_is_structural():
+    # preserve_pentagons' face copy sits over the old edges; a chiral scheme leans unequally
+    sp = local_spectrum("preserve_pentagons", "face", 4)
+    ctx = sp._context
+    S = spectral._composite(ctx.steps, ctx.level, 1)
+    el0, el1 = ctx.steps[ctx.level].element, ctx.steps[ctx.level + 1].element
+    m0, m1 = ctx.steps[ctx.level].mesh, ctx.steps[ctx.level + 1].mesh
+    assert spectral._half_turn(S, m0, el0, m1, el1)
+    sp = local_spectrum("pentagonalize", "vertex", 4)
+    ctx = sp._context
+    S = spectral._composite(ctx.steps, ctx.level, 1)
+    el0, el1 = ctx.steps[ctx.level].element, ctx.steps[ctx.level + 1].element
+    assert not spectral._half_turn(
+        S, ctx.steps[ctx.level].mesh, el0, ctx.steps[ctx.level + 1].mesh, el1
+    )
 
 
 # ---------------------------------------------------------------------- the checks themselves
@@ -166,13 +247,16 @@ def _fake(values) -> LocalSpectrum:
     )
 
 
-def test_necessary_condition_logic():
-    assert _fake([1, 0.5, 0.5, 0.25]).necessary
-    assert _fake([1, 0.5j + 0.1, -0.5j + 0.1, 0.25]).necessary
-    assert "!=" in _fake([1, 0.5, 0.4, 0.25]).necessary_reason
-    assert "not double" in _fake([1, 0.5, 0.5, 0.5]).necessary_reason
-    assert "not simple" in _fake([1, 1, 0.5, 0.25]).necessary_reason
-    assert "not 1" in _fake([1.2, 0.5, 0.5, 0.25]).necessary_reason
+def test_standard_setting_logic():
+    assert _fake([1, 0.5, 0.5, 0.25]).standard
+    assert _fake([1, 0.5j + 0.1, -0.5j + 0.1, 0.25]).standard
+    assert "!=" in _fake([1, 0.5, 0.4, 0.25]).standard_reason
+    assert "not double" in _fake([1, 0.5, 0.5, 0.5]).standard_reason
+    assert "not simple" in _fake([1, 1, 0.5, 0.25]).standard_reason
+    assert "not 1" in _fake([1.2, 0.5, 0.5, 0.25]).standard_reason
+    assert [
+        _fake(v).subdominant_count for v in ([1, 0.5, 0.4], [1, 0.5, 0.5, 0.3], [1, 0.5, 0.5, 0.5])
+    ] == [1, 2, 3]
 
 
 def test_fold_and_winding_are_detected():
@@ -358,9 +442,9 @@ def test_whole_table_and_its_pictures():
     assert len([ax for ax in fig.axes if ax.get_visible()]) >= 9
     fig = spectra.plot_characteristic_maps(rows)
     assert len([ax for ax in fig.axes if ax.get_visible()]) >= 30
-    # the one fold drawn (scale 0.5 around a triangle) is labelled in red under its panel
+    # the one element without a map (scale 0.5 around a triangle) is labelled in red
     red = [ax.get_xlabel() for ax in fig.axes if ax.xaxis.label.get_color() == "#CC0000"]
-    assert red == ["fold (99 of 190 faces turned)"]
+    assert red == ["no characteristic map"]
     claims = spectra_figure.claims(rows=rows) + characteristic_maps.claims(rows=rows)
     failing = [c.key for c in claims if not c.holds]
     # the findings: pentagon preservation at scale 0.5 around triangles
@@ -371,3 +455,132 @@ def test_whole_table_and_its_pictures():
     tri = next(r for r in rows if r.label == "preserve_pentagons 0.5" and r.element == "face 3")
     assert tri.spectrum.moduli[1] == pytest.approx(0.141667, abs=1e-6)
     assert tri.spectrum.moduli[2] == pytest.approx(0.116667, abs=1e-6)
+
+
+# ---------------------------------------------------------------------- exact arithmetic
+from fractions import Fraction  # noqa: E402
+
+from pentanb.analysis import _exact  # noqa: E402
+from pentanb.analysis.spectral import (  # noqa: E402
+    exact_local_matrix,
+    exact_ordering,
+    scale_family,
+    scale_threshold,
+)
+
+
+def _random_poly(rng, n):
+    c = [Fraction(int(x), int(rng.integers(1, 9))) for x in rng.integers(-9, 10, n + 1)]
+    c[-1] = c[-1] or Fraction(1)
+    return _exact.trim(c)
+
+
+def test_schur_cohn_counts_agree_with_numpy():
+    rng = np.random.default_rng(7)
+    undecided = 0
+    for _ in range(150):
+        p = _random_poly(rng, int(rng.integers(1, 10)))
+        rho = Fraction(int(rng.integers(1, 30)), 10)
+        roots = np.roots([float(c) for c in reversed(p)])
+        if np.min(np.abs(np.abs(roots) - float(rho))) < 1e-6:
+            continue
+        count = _exact.count_inside(p, rho)
+        if count is None:  # a singular case (say |a_0| = |a_n|): another radius must be tried
+            undecided += 1
+            continue
+        assert count == int(np.sum(np.abs(roots) < float(rho)))
+    assert undecided < 10
+    # multiple roots, and a root on the circle (no count: another radius must be tried)
+    p = _exact.mul(_exact.mul([Fraction(-1, 2), 1], [Fraction(-1, 2), 1]), [Fraction(1, 4), 0, 1])
+    assert _exact.count_inside(p, Fraction(6, 10)) == 4
+    assert _exact.count_inside(p, Fraction(4, 10)) == 0
+    assert _exact.count_inside(p, Fraction(1, 2)) is None
+
+
+def test_exact_charpoly_sturm_and_roots():
+    rng = np.random.default_rng(3)
+    for _ in range(30):
+        n = int(rng.integers(1, 9))
+        M = [
+            [Fraction(int(rng.integers(-5, 6)), int(rng.integers(1, 5))) for _ in range(n)]
+            for _ in range(n)
+        ]
+        ref = np.poly(np.array(M, dtype=float))
+        got = [float(c) for c in reversed(_exact.charpoly(M))]
+        assert np.allclose(got, ref, atol=1e-8 * max(1.0, np.abs(ref).max()))
+    p = _exact.mul(_exact.mul([-1, 1], [1, 1]), [Fraction(-1, 3), 1])  # (x - 1)(x + 1)(x - 1/3)
+    assert _exact.real_roots(p, 0, 2) == 2 and _exact.real_roots(p, -2, 0) == 1
+    assert _exact.real_roots([1, 0, 1], -5, 5) == 0
+    assert _exact.rational_root(p, 1 / 3) == Fraction(1, 3) and _exact.rational_root(p, 0.5) is None
+    assert _exact.squarefree(_exact.mul(p, p)) == _exact.squarefree(p)
+
+
+@pytest.mark.parametrize(
+    "scheme, kind, size, options",
+    [
+        ("pentagonalize", "vertex", 5, {}),
+        ("preserve_pentagons", "face", 4, {"scale": 0.75}),
+        ("vertex_insertion", "vertex", 3, {}),
+    ],
+)
+def test_exact_local_matrix_rounds_to_the_float_one(scheme, kind, size, options):
+    sp = local_spectrum(scheme, kind, size, **options)
+    core = sp._context.core
+    A = np.array([[float(x) for x in row] for row in exact_local_matrix(sp)])
+    assert np.abs(A - sp.matrix[np.ix_(core, core)]).max() <= 1e-15
+    assert all(sum(row) == 1 for row in exact_local_matrix(sp, core=False))
+
+
+def test_exact_ordering_establishes_the_table():
+    # a real double eigenvalue, a complex pair, a simple one, a triple one
+    ex = exact_ordering(local_spectrum("preserve_pentagons", "vertex", 5))
+    assert ex.standard and ex.real is True and ex.group == 2
+    ex = exact_ordering(local_spectrum("pentagonalize", "vertex", 3))
+    assert ex.standard and ex.real is False
+    ex = exact_ordering(local_spectrum("preserve_pentagons", "face", 3, scale=0.5))
+    assert not ex.standard and ex.group == 1
+    assert ex.value == Fraction(17, 120) ** 2 and ex.step_value == Fraction(17, 120)
+    ex = exact_ordering(local_spectrum("loop_remesh", "vertex", 3))
+    assert ex.group == 3 and ex.equal is True and ex.value == Fraction(5, 18)
+    assert "exact" in ex.describe()
+
+
+def test_exact_ordering_fails_on_a_wrong_weight():
+    # one weight of the exact matrix moved (the row still sums to 1) splits the double
+    sp = local_spectrum("preserve_pentagons", "vertex", 5)
+    ctx = sp._context
+    perm = spectral._core_perm(ctx, ctx.core)
+    A = exact_local_matrix(sp)
+    assert spectral._certify(A, perm, 5, 1, None).standard
+    row = A[1]
+    j, k = sorted(range(len(row)), key=lambda c: -row[c])[:2]
+    row[j] -= Fraction(1, 1000)
+    row[k] += Fraction(1, 1000)
+    assert not spectral._certify(A, perm, 5, 1, None).standard
+
+
+def test_triangles_threshold_is_five_sevenths_exactly():
+    fam = scale_family("face", 3, 2)
+    th = scale_threshold(fam)
+    assert th.status == "above" and th.value == Fraction(5, 7) and th.text == "s > 5/7"
+    at = th.exact_at[Fraction(5, 7)]
+    assert at.group == 3 and at.equal is True and at.step_value == Fraction(13, 105)
+    # the two leading branches are 11/60 - s/12 (mode 0) and (s + 3)/30 (modes +-1)
+    for s in (Fraction(1, 3), Fraction(1, 2), Fraction(9, 10)):
+        ex = fam.exact(s)
+        lead = max(Fraction(11, 60) - s / 12, (s + 3) / 30)
+        assert ex.step_value == lead
+        assert ex.standard == (s > Fraction(5, 7))
+
+
+def test_threshold_fails_on_four_duals():
+    th = scale_threshold(scale_family("face", 3, 4))
+    assert th.status == "never" and th.value is None
+
+
+def test_scale_family_is_affine_in_the_scale():
+    fam = scale_family("vertex", 4, 2)
+    sp = local_spectrum("preserve_pentagons", "vertex", 4, scale=0.6)
+    core = sp._context.core
+    assert np.abs(fam.float_matrix(0.6) - sp.matrix[np.ix_(core, core)]).max() < 1e-13
+    assert abs(fam.moduli(0.6)[0][1] - sp.moduli[1]) < 1e-12

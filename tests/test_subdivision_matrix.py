@@ -197,3 +197,69 @@ def test_matrix_checks_can_fail():
     assert not checks.affine
     assert not checks.convex
     assert checks.reproduces > 1e-3
+
+
+# ---------------------------------------------------------------------- exact weights
+from fractions import Fraction  # noqa: E402
+
+from pentanb.analysis.subdivision_matrix import (  # noqa: E402
+    ExactMatrix,
+    exact_dual_matrix,
+    exact_remesh_matrix,
+)
+
+SCALED = {"preserve_pentagons": 0.75, "corner_cutting": 0.5, "preserve_hexagons": 0.5}
+
+
+@pytest.mark.parametrize("scheme", [s for s in SCHEMES if s in RULE_SCHEMES])
+def test_exact_weights_round_to_the_float_rules(scheme):
+    mesh = mixed_mesh()
+    opts = {"scale": SCALED[scheme]} if scheme in SCALED else {}
+    R, _ = remesh_matrix(mesh, scheme, **opts)
+    E = exact_remesh_matrix(mesh, scheme, **opts)
+    assert isinstance(E, ExactMatrix) and E.shape == R.shape
+    assert np.abs(E.toarray() - R.toarray()).max() <= 1e-15
+    # every weight is a fraction, every row sums to exactly 1 (affine invariance)
+    assert all(isinstance(x, Fraction) for x in E.data)
+    assert all(sum(E.row(i).values()) == 1 for i in range(E.shape[0]))
+
+
+def test_exact_scale_is_taken_as_given():
+    mesh = shapes.cube()
+    E = exact_remesh_matrix(mesh, "preserve_pentagons", scale=Fraction(5, 7))
+    # a copy of an edge midpoint: 5/14 on each end of the edge, 2/7 spread over the face
+    row = E.row(mesh.n_vertices + mesh.n_edges)
+    assert sorted(row.values()) == sorted(
+        [Fraction(5, 14) + Fraction(2, 28)] * 2 + [Fraction(2, 28)] * 2
+    )
+    # a float scale is its binary fraction: 0.7 is not 7/10
+    F = exact_remesh_matrix(mesh, "preserve_pentagons", scale=0.7)
+    assert F.row(mesh.n_vertices + mesh.n_edges) != exact_remesh_matrix(
+        mesh, "preserve_pentagons", scale=Fraction(7, 10)
+    ).row(mesh.n_vertices + mesh.n_edges)
+
+
+def test_exact_dual_is_one_over_the_face_size():
+    mesh = mixed_mesh()
+    E = exact_dual_matrix(mesh)
+    for f in range(mesh.n_faces):
+        n = int(mesh.face_sizes[f])
+        assert E.row(f) == {int(c): Fraction(1, n) for c in mesh.faces[f]}
+
+
+def test_exact_matrix_sums_duplicates_and_drops_zeros():
+    E = ExactMatrix.from_coo(
+        [0, 0, 1, 1],
+        [1, 1, 0, 1],
+        [Fraction(1, 3), Fraction(2, 3), Fraction(0), Fraction(1)],
+        (2, 2),
+    )
+    assert E.row(0) == {1: Fraction(1)} and E.row(1) == {1: Fraction(1)} and E.nnz == 2
+
+
+def test_a_probed_scheme_has_no_exact_matrix():
+    def shrink(m):
+        return m.with_vertices(0.5 * m.vertices)
+
+    with pytest.raises(ValueError, match="no exact matrix"):
+        exact_remesh_matrix(shapes.cube(), shrink)

@@ -12,14 +12,23 @@ valence or a face of some size that survives every level:
    weights) at every level.  Its local subdivision matrix A is then one
    fixed matrix (:func:`local_spectrum`).
 2. Sort A's eigenvalues by modulus, ``1 = lambda0 > |lambda1| >= |lambda2|
-   >= ...``.  A tangent plane needs ``|lambda1| = |lambda2| > |lambda3|``
-   (Reif 1995; Peters and Reif, *Subdivision Surfaces*, 2008, Ch. 5; Zorin
-   2000): the *necessary condition*.
+   >= ...``.  *Reif's standard setting* is ``|lambda1| = |lambda2| >
+   |lambda3|`` (Reif 1995; Peters and Reif, *Subdivision Surfaces*, 2008,
+   Ch. 5; Zorin 2000): the setting of the sufficient condition below, not
+   a necessary condition for a tangent plane.  What is necessary, for
+   generic control points, is a pair of leading eigenvectors whose planar
+   map can be regular and injective -- in the standard setting, a double
+   subdominant eigenvalue (real, or a complex pair).  A simple ``lambda1``
+   gives no pair, and where its eigenvector has Fourier mode 0 no map built
+   on it is injective and the limit normal turns around the element; three
+   or more eigenvalues of the subdominant modulus give a cone point
+   (:attr:`LocalSpectrum.map_obstruction`).
 3. The *characteristic map* is the limit of subdividing the planar control
-   net whose coordinates are the two subdominant eigenvectors; if it is
-   regular (no fold) and injective (one sheet), the scheme is C1 at the
-   element -- Reif's sufficient condition, stated for a real double
-   subdominant eigenvalue (:func:`characteristic_map`).
+   net whose coordinates are the two subdominant eigenvectors; it exists
+   only when exactly two eigenvalues lead.  If it is regular (no fold) and
+   injective (one sheet), the scheme is C1 at the element -- Reif's
+   sufficient condition, stated for a real double subdominant eigenvalue
+   (:func:`characteristic_map`).
 
 How the neighbourhood is found.  The element is planted in a small closed
 mesh (a pyramid over a ``size``-gon: its apex is a ``size``-valent vertex
@@ -38,35 +47,49 @@ two levels match and give the same matrix, is the stationary neighbourhood.
 Rotation.  The starting half-edge at level l + p can be any of the
 element's ``size`` half-edges; the choice turns the identification of the
 two levels by whole sectors, which multiplies the eigenvalues of Fourier
-mode w by ``exp(2 pi i a w / size)`` and leaves their moduli alone.  The
-choice reported ("rotation taken out") is the one that makes the
-subdominant eigenvalue's argument smallest.  A scheme that turns its
-neighbourhood by half a sector per step (sqrt(3)) is analysed over the two
-steps that bring it back (``period`` 2) when the single step cannot be
-identified without a turn; a *chiral* scheme (pentagonalization, whose
+mode w by ``exp(2 pi i a w / size)`` and leaves their moduli alone.  A
+scheme that turns its neighbourhood by half a sector per step (pentagon
+preservation at its faces, whose corners are scaled edge midpoints;
+sqrt(3) and honeycomb) cannot be identified with itself over one step
+without that half turn; it is analysed over the two steps that bring it
+back (``period`` 2).  The half turn is read from the neighbourhood (a new
+corner leans equally on two old ones), so the period does not depend on
+which eigenvalue leads.  The turn taken out is the one that leaves the
+fewest non-real eigenvalues over the whole spectrum, then the smallest
+subdominant argument.  A *chiral* scheme (pentagonalization, whose
 pentagons have no mirror symmetry) turns its neighbourhood by an angle
 that no relabelling removes: its subdominant eigenvalues are a complex
 pair, reported with their argument.
 
-What is proven and what is not.  The eigenvalues are those of an exactly
-assembled matrix (floating point, checked against the operators), so the
-necessary condition and its failures are established up to round-off.  The
-characteristic map is drawn from its control net a few iterations down; the
-verdict on it (all faces turn the same way, the boundary winds once) is
-numerical evidence, not a proof of regularity of the limit map.  Reif's
-criterion also assumes a C1 surface away from the element (true for
-spline-based schemes such as vertex insertion + 2 duals, which is bicubic
-on regular regions) and a real double subdominant eigenvalue; where either
-is missing the statement is left *undecided*.
+What is established and what is not.  The eigenvalues reported are
+computed in floating point from the assembled matrix; the weights are
+rational, and :func:`exact_ordering` establishes the ordering of the
+leading ones in exact arithmetic (the characteristic polynomial, split by
+Fourier modes; Schur-Cohn counts of roots in discs of rational radius;
+Sturm counts of real roots; exact gcds).  The characteristic map is drawn
+from its control net a few iterations down; the verdict on it (all faces
+turn the same way, the boundary winds once) is numerical evidence, not a
+proof of regularity or injectivity of the limit map.  Reif's criterion
+also assumes a C1 surface away from the element (true for spline-based
+schemes such as vertex insertion + 2 duals, which is bicubic on regular
+regions) and a real double subdominant eigenvalue; where either is missing
+the statement is left *undecided*.
+
+Pentagon preservation's scale.  One remeshing step is affine in the
+scale, so the local matrix is too (:func:`scale_family`);
+:func:`scale_study` maps the standard setting along the scale for 2, 4 and
+6 duals, each change established exactly, and recommends a scale.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from fractions import Fraction
 from typing import Any
 
 import numpy as np
@@ -77,10 +100,23 @@ from ..mesh import Mesh
 from ..notation import seeds
 from ..schemes.registry import SCHEMES, Scheme
 from ..subdivision import get_scheme
+from . import _exact
 from .subdivision_matrix import _name, dual_matrix, remesh_matrix
 
 __all__ = [
     "KINDS",
+    "ExactSpectrum",
+    "exact_local_matrix",
+    "exact_ordering",
+    "ScaleFamily",
+    "ScaleThreshold",
+    "scale_family",
+    "scale_threshold",
+    "scale_map",
+    "ScaleStudy",
+    "scale_study",
+    "SCALE_SCHEME",
+    "SCALE_GRID",
     "LocalSpectrum",
     "CharacteristicMap",
     "ContinuityRow",
@@ -445,13 +481,35 @@ class LocalSpectrum:
         return bool(abs(lam1.imag) > 1e-9 * max(abs(lam1), 1e-300))
 
     @property
-    def necessary(self) -> bool:
-        """``1 = lambda0 > |lambda1| = |lambda2| > |lambda3|`` (Reif's necessary condition)."""
-        return self.necessary_reason == ""
+    def subdominant_count(self) -> int:
+        """How many eigenvalues share the largest modulus after the eigenvalue 1
+        (to :data:`TOL` relative): 1 for a simple ``lambda1``, 2 for a double
+        one or a complex pair, 3 or more otherwise; 0 without a spectrum."""
+        if not self.stationary or self.eigenvalues.size < 2:
+            return 0
+        m = self.moduli
+        return int(np.sum(np.abs(m[1:] - m[1]) <= TOL * m[1]))
 
     @property
-    def necessary_reason(self) -> str:
-        """Empty when the necessary condition holds, else what fails."""
+    def standard(self) -> bool:
+        """``1 = lambda0 > |lambda1| = |lambda2| > |lambda3|``: Reif's standard setting.
+
+        The setting in which a regular, injective characteristic map makes
+        the scheme C1 at the element (Reif 1995; Peters and Reif 2008,
+        Ch. 5) -- a *sufficient* setting, not a necessary condition for a
+        tangent plane.  What is necessary, for generic control points, is a
+        pair of leading eigenvectors whose planar map can be regular and
+        injective; where ``lambda1`` is simple and its eigenvector is
+        invariant under the turn by one sector (Fourier mode 0), or where
+        three or more eigenvalues share the subdominant modulus, there is no
+        such pair (:attr:`map_obstruction`).  Floating point, to :data:`TOL`;
+        :func:`exact_ordering` establishes it in exact arithmetic.
+        """
+        return self.standard_reason == ""
+
+    @property
+    def standard_reason(self) -> str:
+        """Empty when the standard setting holds, else what fails."""
         if not self.stationary:
             return "no stationary neighbourhood"
         m = self.moduli
@@ -465,6 +523,50 @@ class LocalSpectrum:
             return f"|lambda1| = {m[1]:.6g} != |lambda2| = {m[2]:.6g}"
         if m[3] >= m[2] * (1 - TOL):
             return f"|lambda2| = |lambda3| = {m[2]:.6g} (subdominant eigenvalue not double)"
+        return ""
+
+    @property
+    def necessary(self) -> bool:
+        """The old name of :attr:`standard` (which is a sufficient setting, not a
+        necessary condition); kept for old code."""
+        return self.standard
+
+    @property
+    def necessary_reason(self) -> str:
+        """The old name of :attr:`standard_reason`; kept for old code."""
+        return self.standard_reason
+
+    @property
+    def map_obstruction(self) -> str:
+        """Why the element has no characteristic map ("" when it has one).
+
+        A characteristic map needs exactly two leading eigenvalues after the
+        eigenvalue 1 (a real double eigenvalue with two eigenvectors, or a
+        complex pair).  With a *simple* ``lambda1`` there is no pair: the map
+        drawn from ``lambda1``'s eigenvector and one of the next would be a
+        choice, not the scheme's; when that eigenvector has Fourier mode 0 it
+        takes one value on the ``k`` turned copies of every point, so no map
+        built on it is injective, and for generic control points the limit
+        normal turns around the element with the next (mode +-1) terms: no
+        tangent plane.  With three or more eigenvalues of the subdominant
+        modulus the leading term maps the rings into space, not a plane: for
+        generic control points the limit has a cone point there.
+        """
+        if not self.stationary:
+            return self.note or "no stationary neighbourhood"
+        n = self.subdominant_count
+        m = self.moduli
+        if self.eigenvalues.size < 3:
+            return "neighbourhood too small"
+        if n == 1:
+            mode = int(self.modes[1]) if self.modes.size > 1 else -1
+            what = f" of Fourier mode {mode}" if mode >= 0 else ""
+            return (
+                f"lambda1 is simple{what} (|lambda1| = {m[1]:.6g} > |lambda2| = {m[2]:.6g}): "
+                "no pair of subdominant eigenvectors"
+            )
+        if n >= 3:
+            return f"{n} eigenvalues share the subdominant modulus {m[1]:.6g}: no planar pair"
         return ""
 
     def summary(self) -> str:
@@ -510,6 +612,10 @@ class _Context:
     scheme: Any
     options: dict
     duals: int
+    steps_per_match: int = 1  # steps from `level` to the matched level (1, or 2 for sqrt(3))
+    core: NDArray[np.int64] | None = None  # the smallest closed neighbourhood, positions in domain
+    perm: NDArray[np.int64] | None = None  # one sector's turn, positions in domain
+    rotation: int = 0  # sectors the identification is turned by (over one period)
 
 
 def _build_step(step: _Step, scheme, duals: int, options: dict) -> _Step:
@@ -696,9 +802,26 @@ def local_spectrum(
                 reason = "the neighbourhood is the whole mesh"
                 continue
             rot = _rotations(steps, L + p, els[1], start1, walk)
-            spec = _spectrum(A, img, [_candidate(wk, t_ana) for wk in rot], size)
+            perm = _rotation_perm(img, [_candidate(wk, t_ana) for wk in rot])
+            half = _half_turn(
+                _composite(steps, L, p), steps[L].mesh, els[0], steps[L + p].mesh, els[1]
+            )
+            spec = _spectrum(A, perm, size, half)
+            level_ana = w0.level[w0.level <= t_ana + 1e-9]
             ctx = _Context(
-                steps, L, p * spec.period, dom, img, spec.vectors, s, dict(options), duals
+                steps,
+                L,
+                p * spec.period,
+                dom,
+                img,
+                spec.vectors,
+                s,
+                dict(options),
+                duals,
+                steps_per_match=p,
+                core=np.flatnonzero(level_ana <= t_min + 1e-9),
+                perm=spec.perm,
+                rotation=spec.rotation,
             )
             return LocalSpectrum(
                 **common,
@@ -782,64 +905,117 @@ class _Spec:
     modes: NDArray[np.int64]
     rotation: int
     period: int
+    perm: NDArray[np.int64] | None
 
 
-def _spectrum(A, img, rotated_orders, k: int) -> _Spec:
+#: Relative imaginary part above which an eigenvalue counts as non-real when
+#: the period and the turn are chosen (round-off of a double eigenvalue stays
+#: far below it).
+REAL_TOL = 1e-6
+
+
+def _rotation_perm(img, rotated_orders) -> NDArray[np.int64] | None:
+    """``perm[i]``: the position, in ``img``'s order, of the vertex one sector on
+    from ``img[i]``."""
+    pos = {int(v): i for i, v in enumerate(img)}
+    if len(rotated_orders) < 2:
+        return None
+    order1 = rotated_orders[1]
+    if order1.size != img.size or set(order1.tolist()) != set(pos):
+        return None
+    return np.array([pos[int(v)] for v in order1], dtype=np.int64)
+
+
+def _nonreal(vals: NDArray[np.complex128]) -> int:
+    """How many eigenvalues (of the significant ones) are not real."""
+    mags = np.abs(vals)
+    big = mags > 1e-8 * max(float(mags.max(initial=0.0)), 1e-300)
+    return int(np.sum(np.abs(vals.imag[big]) > REAL_TOL * mags[big]))
+
+
+def _ring(mesh: Mesh, element) -> NDArray[np.int64]:
+    """The element's first ring in rotation order: a vertex's neighbours, a face's corners."""
+    kind, i = element
+    if kind == "vertex":
+        ring, off = mesh.vertex_ring
+        return np.asarray(mesh.head[ring[off[i] : off[i + 1]]], dtype=np.int64)
+    return np.asarray(mesh.corners[mesh.offsets[i] : mesh.offsets[i + 1]], dtype=np.int64)
+
+
+def _half_turn(S, mesh0: Mesh, el0, mesh1: Mesh, el1) -> bool:
+    """Does one step turn the element's neighbourhood by half a sector?
+
+    Structural, not spectral: the first vertex of the element's new ring
+    (a corner of the face, a neighbour of the vertex) leans equally on two
+    neighbouring members of the old ring, and more than on any other -- it
+    sits over an old edge (or face), between two sectors.  Pentagon
+    preservation's faces (a corner of the face copy is a scaled edge
+    midpoint) and sqrt(3)'s vertices (a new neighbour is an old face's
+    centroid) do; a chiral scheme leans unequally and is not a half turn.
+    """
+    old, new = _ring(mesh0, el0), _ring(mesh1, el1)
+    k = old.size
+    if k < 3 or new.size != k:
+        return False
+    w = np.asarray(S.tocsr()[int(new[0])].toarray()).ravel()[old]
+    order = np.argsort(-w, kind="stable")
+    a, b = int(order[0]), int(order[1])
+    top, second = w[a], w[b]
+    if top <= 1e-12 or abs(top - second) > 1e-9 * top:
+        return False
+    third = w[order[2]]
+    return bool((a - b) % k in (1, k - 1) and third < top * (1 - 1e-9))
+
+
+def _spectrum(A, perm, k: int, half_turn: bool = False) -> _Spec:
     """Eigenvalues of the local matrix by Fourier modes, rotation taken out.
 
-    ``A`` maps the domain (ordered like ``img``) to the image ``img``;
-    ``rotated_orders[1]`` is the image ordered from the start turned by one
-    sector (the rotation that block-diagonalizes ``A``).  Turning the
-    identification by ``a`` sectors multiplies the eigenvalues of mode w by
-    ``exp(2 pi i a w / k)``; the turn chosen makes the subdominant
-    eigenvalue's argument smallest.  When that still
-    leaves a complex pair that two steps make real (a turn by half a
-    sector), the period is 2 and the eigenvalues are squared.
+    ``A`` maps the domain (ordered like the image) to the image; ``perm`` is
+    the turn of the image by one sector (the rotation that
+    block-diagonalizes ``A``).  Turning the identification by ``a`` sectors
+    multiplies the eigenvalues of mode w by ``exp(2 pi i a w / k)``.
+
+    The period is decided by the neighbourhood, whatever the leading
+    eigenvalue: two steps when one step turns it by half a sector
+    (``half_turn``, :func:`_half_turn`: pentagon preservation's faces,
+    sqrt(3)'s vertices), which no relabelling of one step removes; one step
+    otherwise.  The turn chosen leaves the fewest non-real eigenvalues over
+    the whole spectrum, then the smallest argument of the subdominant ones,
+    then is the smallest.  A chiral scheme keeps complex eigenvalues under
+    every turn; they are reported with their argument.
     """
-    pos = {int(v): i for i, v in enumerate(img)}
-    perm = None
-    if len(rotated_orders) > 1:
-        order1 = rotated_orders[1]
-        if order1.size == img.size and set(order1.tolist()) == set(pos):
-            perm = np.array([pos[int(v)] for v in order1], dtype=np.int64)
     blocks = _fourier(A, perm, k) if perm is not None else None
     if blocks is None:  # no rotational symmetry to use: dense, modes unknown
         w, V = np.linalg.eig(A)
         modes = np.full(w.size, -1, dtype=np.int64)
+        perm = None
     else:
         w, V, modes = blocks
     # the subdominant: largest modulus after the eigenvalue 1
     order = np.argsort(-np.abs(w), kind="stable")
     unit = order[np.argmin(np.abs(w[order[:3]] - 1.0))] if w.size else 0
     rest = [i for i in order if i != unit]
-
-    # the eigenvalues of the subdominant modulus
-    top = [i for i in rest if abs(abs(w[i]) - abs(w[rest[0]])) <= TOL * abs(w[rest[0]])]
-    turnable = modes >= 0
+    turnable = bool(modes.size) and bool((modes >= 0).all())
 
     def best_turn(vals):
-        if not top or not turnable.all():
+        lead = abs(vals[rest[0]]) if rest else 0.0
+        top = [i for i in rest if abs(abs(vals[i]) - lead) <= TOL * lead]
+        if not turnable:
             return 0, vals
         cands = []
         for a in range(k):
             turned = vals * np.exp(2j * np.pi * a * modes / k)
-            worst = max(abs(float(np.angle(turned[i]))) for i in top)
-            cands.append((round(worst, 9), a, turned))
-        _, a, turned = min(cands, key=lambda c: (c[0], c[1]))
+            worst = max((abs(float(np.angle(turned[i]))) for i in top), default=0.0)
+            cands.append(((_nonreal(turned), round(worst, 9), a), a, turned))
+        _, a, turned = min(cands, key=lambda c: c[0])
         return a, turned
 
-    a, vals = best_turn(w)
-    period = 1
-    if any(_is_complex(vals[i]) for i in top):
-        # complex after one step but all real after two (a turn by half a
-        # sector): the period is two steps
-        a2, vals2 = best_turn(w**2)
-        if not any(_is_complex(vals2[i]) for i in top):
-            a, vals, period = a2, vals2, 2
+    period = 2 if half_turn else 1
+    a, vals = best_turn(w**period)
     key = np.lexsort(
         (np.angle(vals), np.round(np.abs(np.angle(vals)), 9), -np.round(np.abs(vals), 12))
     )
-    return _Spec(vals[key], V[:, key], modes[key], a, period)
+    return _Spec(vals[key], V[:, key], modes[key], a, period, perm)
 
 
 def _is_complex(z) -> bool:
@@ -892,6 +1068,43 @@ def _fourier(A, perm, k):
     return np.concatenate(values), np.concatenate(vectors, axis=1), np.concatenate(modes)
 
 
+def _fourier_blocks(A, perm, k) -> list[tuple[int, NDArray[Any]]] | None:
+    """The Fourier blocks ``B_w`` of ``A`` (the matrices :func:`_fourier` diagonalizes),
+    without their eigenvalues; linear in ``A``.  None without k-fold symmetry."""
+    n = A.shape[0]
+    if not np.allclose(A[np.ix_(perm, perm)], A, rtol=0, atol=1e-12):
+        return None
+    fixed = np.flatnonzero(perm == np.arange(n))
+    seen = np.zeros(n, dtype=bool)
+    seen[fixed] = True
+    orbits = []
+    for i in range(n):
+        if seen[i]:
+            continue
+        orb = [i]
+        j = int(perm[i])
+        while j != i:
+            orb.append(j)
+            j = int(perm[j])
+        if len(orb) != k:
+            return None
+        seen[orb] = True
+        orbits.append(orb)
+    O = np.array(orbits, dtype=np.int64).reshape(-1, k)
+    m = O.shape[0]
+    out = []
+    for w in range(k):
+        z = np.exp(2j * np.pi * w * np.arange(k) / k)
+        B = (A[O[:, 0]][:, O] * z[None, None, :]).sum(axis=2) if m else np.zeros((0, 0))
+        if w == 0 and fixed.size:
+            top = np.concatenate([B, A[np.ix_(O[:, 0], fixed)]], axis=1)
+            bottom = np.concatenate([A[fixed][:, O].sum(axis=2), A[np.ix_(fixed, fixed)]], axis=1)
+            B = np.concatenate([top, bottom], axis=0)
+        if B.size:
+            out.append((w, B))
+    return out
+
+
 def _measured_contraction(steps, element) -> float | None:
     ratios = _ring_ratios([st.mesh for st in steps], [st.element for st in steps])
     return extrapolate_ratio(ratios) if ratios else None
@@ -902,17 +1115,62 @@ def _measured_contraction(steps, element) -> float | None:
 # ---------------------------------------------------------------------------
 
 
-def _ring_radius(mesh: Mesh, element) -> float:
+def _ring_points(mesh: Mesh, element) -> tuple[NDArray[np.int64], NDArray[np.float64]]:
+    """The points around the element and its centre.
+
+    A vertex: its neighbours, about the vertex.  A face: its corners *and*
+    their neighbours, about the mean of the corners.  The corners alone
+    would miss Fourier mode 0 (which moves every corner alike, so their
+    offsets from their own mean do not see it); the ring one edge further
+    out sees every mode.
+    """
     kind, i = element
     v = np.asarray(mesh.vertices)
+    ring, off = mesh.vertex_ring
     if kind == "vertex":
-        ring, off = mesh.vertex_ring
-        nbrs = mesh.head[ring[off[i] : off[i + 1]]]
-        centre = v[i]
-    else:
-        nbrs = mesh.corners[mesh.offsets[i] : mesh.offsets[i + 1]]
-        centre = v[nbrs].mean(axis=0)
-    return float(np.sqrt(((v[nbrs] - centre) ** 2).sum(axis=1).mean()))
+        return mesh.head[ring[off[i] : off[i + 1]]], v[i]
+    corners = mesh.corners[mesh.offsets[i] : mesh.offsets[i + 1]]
+    around = np.concatenate([mesh.head[ring[off[c] : off[c + 1]]] for c in corners])
+    return np.unique(np.concatenate([corners, around])), v[corners].mean(axis=0)
+
+
+def _ring_radius(mesh: Mesh, element) -> float:
+    """Root mean square distance from the element's centre to the points around it
+    (:func:`_ring_points`)."""
+    pts, centre = _ring_points(mesh, element)
+    v = np.asarray(mesh.vertices)
+    return float(np.sqrt(((v[pts] - centre) ** 2).sum(axis=1).mean()))
+
+
+def _mode_radii(mesh: Mesh, element) -> tuple[float, float] | None:
+    """Root mean square offsets of the points around the element, split into
+    Fourier mode 0 and the other modes, or None when the neighbourhood is not
+    k-fold symmetric.
+
+    The walks from the element's ``k`` half-edges order the points sector by
+    sector (connectivity only, no weights): averaging a point's offset over
+    its ``k`` turned copies keeps mode 0, the remainder is every other mode.
+    Each part contracts at the rate of its own leading eigenvalue, so a
+    simple ``lambda1`` of mode 0 close to the next eigenvalue of another mode
+    (pentagon preservation at triangles) is not hidden behind it.
+    """
+    topo = _Topo(mesh)
+    walks = [_walk(topo, element, h, 1) for h in _starts(mesh, element)]
+    if len({w.signature for w in walks}) != 1:
+        return None
+    n = min(int(np.sum(walks[0].level <= 1.0)), *(w.verts.size for w in walks))
+    idx = np.stack([w.verts[:n] for w in walks])  # (k, n): a point and its turned copies
+    if np.any(walks[0].level[:n] > 1.0):
+        return None
+    v = np.asarray(mesh.vertices)
+    _, centre = _ring_points(mesh, element)
+    x = v[idx] - centre  # (k, n, 3)
+    mean = x.mean(axis=0, keepdims=True)
+    rest = x - mean
+    return (
+        float(np.sqrt((mean**2).sum(axis=-1).mean())),
+        float(np.sqrt((rest**2).sum(axis=-1).mean())),
+    )
 
 
 def _ring_ratios(meshes, elements) -> list[float]:
@@ -956,12 +1214,19 @@ def ring_contraction(
     """The measured contraction of an element's 1-ring, iteration after iteration.
 
     Computed with :func:`pentanb.subdivide` alone (no matrices, so it checks
-    them): the root mean square distance from a surviving vertex to its
-    neighbours (or from a surviving face's centroid to its corners) after
-    each iteration, and the ratio of consecutive iterations.  For a scheme with a
-    stationary neighbourhood the ratio tends to ``|lambda1|`` (the root
-    mean square is unchanged by a rotation of the ring, so a complex
-    ``lambda1`` gives a steady ratio too).
+    them): the offsets of the points around a surviving vertex (its
+    neighbours) or face (its corners and their neighbours: the corners
+    alone would miss Fourier mode 0, which moves them alike) from its
+    centre, after each iteration, split into mode 0 (the mean of a point's
+    offset over its ``k`` turned copies, found by connectivity alone) and
+    the other modes; the root mean square of each part, and the ratio of
+    consecutive iterations.  Each part tends to the modulus of its own
+    leading eigenvalue, so the slower part's ratio tends to ``|lambda1|``
+    whatever its mode (a complex ``lambda1`` turns the ring and leaves the
+    root mean square alone), without waiting for one mode to outgrow a
+    close one of another mode (pentagon preservation at triangles, where
+    ``|lambda2 / lambda1| = 0.82`` at scale 0.5).  Without k-fold
+    symmetry the two parts are not split.
 
     The element keeps its index: every remeshing of the package numbers the
     kept vertices and the face copies first, in the input's order, and two
@@ -980,8 +1245,10 @@ def ring_contraction(
     Returns
     -------
     ratios : (iterations,) float
+        The ratios of the part (mode 0, or the other modes) that contracts
+        slowest.
     limit : float
-        Aitken's extrapolation of the ratios (:func:`extrapolate_ratio`).
+        Aitken's extrapolation of those ratios (:func:`extrapolate_ratio`).
 
     Raises
     ------
@@ -1013,8 +1280,21 @@ def ring_contraction(
                 f"the {kind} {el[1]} does not keep its place under {_name(s)} + {duals} duals"
             )
         meshes.append(mesh)
-    ratios = np.array(_ring_ratios(meshes, [el] * len(meshes)))
-    return ratios, extrapolate_ratio(ratios)
+    split = [_mode_radii(m, el) for m in meshes]
+    if any(x is None for x in split):
+        ratios = np.array(_ring_ratios(meshes, [el] * len(meshes)))
+        return ratios, extrapolate_ratio(ratios)
+    radii = np.array(split, dtype=np.float64)  # (levels, 2): mode 0, the other modes
+    best: tuple[float, NDArray[np.float64]] | None = None
+    for part in radii.T:
+        if part[-1] <= 1e-12 * radii[-1].max():
+            continue  # no such mode in the data (a symmetric start)
+        r = part[1:] / part[:-1]
+        lim = extrapolate_ratio(r)
+        if best is None or lim > best[0]:
+            best = (lim, r)
+    assert best is not None
+    return best[1], best[0]
 
 
 # ---------------------------------------------------------------------------
@@ -1162,12 +1442,17 @@ def characteristic_map(
     Raises
     ------
     ValueError
-        When the spectrum has no stationary neighbourhood (nothing to draw).
+        When the spectrum has no stationary neighbourhood (nothing to draw),
+        or no characteristic map exists (:attr:`LocalSpectrum.map_obstruction`:
+        a simple ``lambda1``, or three or more eigenvalues of the subdominant
+        modulus).
     """
     if not isinstance(spectrum, LocalSpectrum):
         spectrum = local_spectrum(spectrum, kind, size, duals, **options)
     if not spectrum.stationary or spectrum._context is None:
         raise ValueError(f"no characteristic map: {spectrum.note or 'no stationary neighbourhood'}")
+    if spectrum.map_obstruction:
+        raise ValueError(f"no characteristic map: {spectrum.map_obstruction}")
     if (
         isinstance(iterations, bool)
         or not isinstance(iterations, (int, np.integer))
@@ -1320,6 +1605,1205 @@ def _winding(pts, corners, offsets, centre) -> int:
 
 
 # ---------------------------------------------------------------------------
+# exact arithmetic: the ordering of the leading eigenvalues, established
+# ---------------------------------------------------------------------------
+
+
+class _DualRows:
+    """The dual's exact rows, on demand: row ``f`` is ``1/n`` at each corner of face ``f``
+    (what :func:`~pentanb.analysis.subdivision_matrix.exact_dual_matrix` holds, without
+    building every row)."""
+
+    def __init__(self, mesh: Mesh):
+        self.offsets = mesh.offsets
+        self.corners = mesh.corners
+
+    def row(self, f: int) -> dict[int, Fraction]:
+        a, b = int(self.offsets[f]), int(self.offsets[f + 1])
+        w = Fraction(1, b - a)
+        out: dict[int, Fraction] = {}
+        for c in self.corners[a:b].tolist():
+            out[c] = out.get(c, Fraction(0)) + w
+        return out
+
+
+def _exact_step_factors(mesh: Mesh, scheme, duals: int, options: dict, exact_options: dict):
+    """The exact matrices of one step (the remeshing, then each dual), in order."""
+    from .subdivision_matrix import exact_remesh_matrix
+
+    out = scheme(mesh, **options)
+    factors: list[Any] = [exact_remesh_matrix(mesh, scheme, out, **exact_options)]
+    for _ in range(duals):
+        factors.append(_DualRows(out))
+        out = _schemes.dual(out)
+    return factors
+
+
+def _exact_options(options: dict, scale) -> dict:
+    """The scheme's options with the scale as a fraction (``scale`` overriding)."""
+    out = {k: (Fraction(v) if k == "scale" else v) for k, v in options.items()}
+    if scale is not None:
+        out["scale"] = Fraction(scale)
+    return out
+
+
+def exact_local_matrix(
+    spectrum: LocalSpectrum, scale=None, *, core: bool = True
+) -> list[list[Fraction]]:
+    """The local subdivision matrix of one identification step, in exact arithmetic.
+
+    The rules of the scheme with :class:`~fractions.Fraction` weights
+    (:func:`pentanb.analysis.subdivision_matrix.exact_remesh_matrix`),
+    composed over the steps from the spectrum's level to the level it is
+    identified with, restricted to the neighbourhood.  Its rounding equals
+    ``spectrum.matrix`` (checked by the tests); the rotation is not taken
+    out (:func:`exact_ordering` does that).
+
+    Parameters
+    ----------
+    spectrum : LocalSpectrum
+        From :func:`local_spectrum` (with its search context: not a
+        detached copy).
+    scale : rational, optional
+        Another scale for the same scheme (pentagon preservation and the
+        other scaled rules): the neighbourhood's connectivity does not
+        depend on the scale, its weights do (affinely, over one step).  Any
+        rational is accepted, 0 and 1 included (the weights are polynomials
+        in the scale).
+    core : bool
+        The smallest neighbourhood mapped onto itself (default), or the
+        analysed one (a ring more).
+
+    Returns
+    -------
+    list of lists of Fraction
+        Square, rows and columns in the spectrum's order.
+
+    Raises
+    ------
+    ValueError
+        Without a search context, or for a scheme without rules.
+    """
+    ctx = spectrum._context
+    if ctx is None:
+        raise ValueError(
+            "the spectrum has no search context (a detached copy): recompute it with local_spectrum"
+        )
+    p = ctx.steps_per_match
+    steps = ctx.steps
+    opts = _exact_options(ctx.options, scale)
+    chain = []
+    for j in range(ctx.level, ctx.level + p):
+        chain += _exact_step_factors(steps[j].mesh, ctx.scheme, ctx.duals, ctx.options, opts)
+    positions = ctx.core if core and ctx.core is not None else np.arange(ctx.domain.size)
+    dom = [int(v) for v in ctx.domain[positions]]
+    img = [int(v) for v in ctx.image[positions]]
+    where = {v: i for i, v in enumerate(dom)}
+    rows = []
+    cache: list[dict[int, dict[int, Fraction]]] = [{} for _ in chain]
+    for v in img:
+        vec: dict[int, Fraction] = {v: Fraction(1)}
+        for t in range(len(chain) - 1, -1, -1):
+            F = chain[t]
+            nxt: dict[int, Fraction] = {}
+            for c, x in vec.items():
+                r = cache[t].get(c)
+                if r is None:
+                    r = cache[t][c] = F.row(c)
+                for col, w in r.items():
+                    nxt[col] = nxt.get(col, Fraction(0)) + x * w
+            vec = {c: x for c, x in nxt.items() if x != 0}
+        outside = [c for c in vec if c not in where]
+        if outside:
+            raise RuntimeError(  # pragma: no cover - the float search checked closedness
+                "the exact rows leave the neighbourhood: it is not closed"
+            )
+        row = [Fraction(0)] * len(dom)
+        for c, x in vec.items():
+            row[where[c]] = x
+        rows.append(row)
+    return rows
+
+
+def _core_perm(ctx: _Context, positions) -> list[int] | None:
+    """The turn by one sector on the given positions (indices into them), or None."""
+    if ctx.perm is None:
+        return None
+    idx = {int(p): i for i, p in enumerate(positions)}
+    out = []
+    for p in positions:
+        q = int(ctx.perm[int(p)])
+        if q not in idx:
+            return None
+        out.append(idx[q])
+    return out
+
+
+def _period_matrix(spectrum: LocalSpectrum, A1: list[list[Fraction]], perm) -> list[list[Fraction]]:
+    """The matrix of one period with the rotation taken out: ``Pi^a A^q``."""
+    ctx = spectrum._context
+    assert ctx is not None
+    q = spectrum.period // ctx.steps_per_match
+    A = A1
+    for _ in range(q - 1):
+        A = _exact.mat_mul(A, A1)
+    a = spectrum.rotation % spectrum.size if perm is not None else 0
+    if a:
+        turn = list(range(len(A)))
+        for _ in range(a):
+            turn = [perm[t] for t in turn]
+        A = [A[turn[i]] for i in range(len(A))]
+    return A
+
+
+def _cyclotomic(d: int) -> list[int]:
+    """Coefficients of the cyclotomic polynomial Phi_d (lowest first)."""
+    p = [-1] + [0] * (d - 1) + [1]  # x^d - 1
+    for e in range(1, d):
+        if d % e == 0:
+            p = [int(c) for c in _exact.divmod_poly(p, _cyclotomic(e))[0]]
+    return p
+
+
+@dataclass(frozen=True)
+class _Block:
+    d: int  # the order of the turn on this invariant subspace
+    modes: tuple[int, ...]  # the Fourier modes it holds
+    matrix: list[list[Fraction]]
+
+
+def _split(A: list[list[Fraction]], perm, k: int) -> list[_Block]:
+    """``A`` restricted to the rational invariant subspaces ``ker Phi_d(Pi)``, ``d | k``.
+
+    The turn ``Pi`` by one sector commutes with ``A``; on every orbit of
+    ``k`` points, ``ker Phi_d(Pi)`` is spanned by the integer vectors
+    ``Pi^t Psi_d(Pi) e`` (``Psi_d = (x^k - 1) / Phi_d``, ``t < phi(d)``);
+    fixed points belong to d = 1.  Each restriction is a rational matrix
+    whose eigenvalues are those of the Fourier modes ``w`` of order ``d``
+    (``gcd(w, k) = k / d``).  Without a turn (or if ``A`` does not commute
+    with it, checked exactly) there is one block, ``A`` itself.
+    """
+    n = len(A)
+    whole = [_Block(1, tuple(range(k)), A)]
+    if perm is None or n == 0:
+        return whole
+    if any(A[perm[i]][perm[j]] != A[i][j] for i in range(n) for j in range(n) if A[i][j]):
+        return whole
+    # integers: A = N / den
+    den = 1
+    for row in A:
+        for x in row:
+            if x.denominator != 1:
+                den = den * x.denominator // math.gcd(den, x.denominator)
+    N = [[int(x * den) for x in row] for row in A]
+    seen = [False] * n
+    orbits, fixed = [], []
+    for i in range(n):
+        if seen[i]:
+            continue
+        orb = [i]
+        j = perm[i]
+        while j != i:
+            orb.append(j)
+            j = perm[j]
+        for j in orb:
+            seen[j] = True
+        if len(orb) == 1:
+            fixed.append(i)
+        elif len(orb) == k:
+            orbits.append(orb)
+        else:
+            return whole
+    blocks = []
+    xk1 = [-1] + [0] * (k - 1) + [1]
+    for d in range(1, k + 1):
+        if k % d:
+            continue
+        cyc = _cyclotomic(d)
+        psi = [int(c) for c in _exact.divmod_poly(xk1, cyc)[0]]
+        phi = len(cyc) - 1
+        cols: list[dict[int, int]] = []
+        for orb in orbits:
+            for t in range(phi):
+                cols.append({orb[(i + t) % k]: c for i, c in enumerate(psi) if c})
+        if d == 1:
+            cols += [{f: 1} for f in fixed]
+        if not cols:
+            continue
+        m = len(cols)
+        NB = [[sum(N[r][i] * c for i, c in col.items()) for col in cols] for r in range(n)]
+        BtNB = [[sum(NB[i][j] * c for i, c in col.items()) for j in range(m)] for col in cols]
+        gram = [[sum(c * b.get(i, 0) for i, c in a.items()) for b in cols] for a in cols]
+        M = _exact.solve(gram, [[Fraction(x, den) for x in row] for row in BtNB])
+        # the subspace is invariant: N B == B (den M), exactly
+        for j in range(m):
+            for r in range(n):
+                bm = sum(cols[t].get(r, 0) * M[t][j] for t in range(m) if M[t][j] and r in cols[t])
+                if bm * den != NB[r][j]:  # pragma: no cover - guarded by the commuting check
+                    return whole
+        modes = tuple(w for w in range(k) if math.gcd(w, k) == k // d)
+        blocks.append(_Block(d, modes, M))
+    return blocks
+
+
+@dataclass(frozen=True)
+class ExactSpectrum:
+    """The leading eigenvalues of a local matrix, established in exact arithmetic.
+
+    The matrix is rational (:func:`exact_local_matrix`); its characteristic
+    polynomial is computed exactly, split by the rational subspaces of the
+    Fourier modes (:func:`_split`), and the eigenvalues are located by
+    exact tests on it: the Schur-Cohn count of roots in a disc of rational
+    radius, Sturm's count of real roots, and exact greatest common divisors
+    (:mod:`pentanb.analysis._exact`).  Floating point only *suggests* the
+    radii tried; every statement here is decided in rational arithmetic.
+
+    Attributes
+    ----------
+    period : int
+        Steps of the matrix analysed (eigenvalues over one period).
+    scale : Fraction or None
+        The scale the matrix was built with (schemes with a scale).
+    size : int
+        Vertices of the neighbourhood (the smallest one mapped onto itself).
+    blocks : tuple of (d, modes, polynomial)
+        The characteristic polynomial of each invariant subspace (``d`` the
+        order of the turn on it, the Fourier modes it holds), coefficients
+        lowest first; their product is the matrix's.
+    unit_simple : bool
+        1 is an eigenvalue (of mode 0) of multiplicity one.
+    upper : Fraction or None
+        Every other eigenvalue has modulus below ``upper`` (< 1).
+    lower : Fraction or None
+        Exactly ``group`` eigenvalues (with multiplicity) have modulus in
+        ``[lower, upper)``; every other one has modulus below ``lower``.
+    group : int
+        The size of the leading group (0 when not established).
+    equal : bool or None
+        The group's moduli are equal (True), not all equal (False), or the
+        tests could not tell (None).  True for a single eigenvalue.
+    real : bool or None
+        The group is real (a simple or multiple real root, or two opposite
+        ones), a conjugate pair (False), or mixed / unknown (None).
+    value : Fraction or None
+        The group's eigenvalue over the period when it is rational.
+    note : str
+        What was established, in words (:meth:`describe`).
+    """
+
+    period: int
+    scale: Fraction | None
+    size: int
+    blocks: tuple[tuple[int, tuple[int, ...], tuple[Fraction, ...]], ...]
+    unit_simple: bool
+    upper: Fraction | None
+    lower: Fraction | None
+    group: int
+    equal: bool | None
+    real: bool | None
+    value: Fraction | None
+    note: str = ""
+
+    @property
+    def decided(self) -> bool:
+        """The leading group and the equality of its moduli were established."""
+        return self.unit_simple and self.group > 0 and self.equal is not None
+
+    @property
+    def standard(self) -> bool:
+        """``1 = lambda0`` simple ``> |lambda1| = |lambda2| > |lambda3|``, established exactly."""
+        return self.unit_simple and self.group == 2 and self.equal is True
+
+    @property
+    def step_value(self) -> Fraction | None:
+        """The group's eigenvalue per step when it is rational and its period-th root is too
+        (e.g. ``17/120`` for ``(17/120)**2`` over two steps); else None."""
+        v = self.value
+        if v is None:
+            return None
+        if self.period == 1:
+            return v
+        if self.period == 2 and v >= 0:
+            n, d = math.isqrt(v.numerator), math.isqrt(v.denominator)
+            if n * n == v.numerator and d * d == v.denominator:
+                return Fraction(n, d)
+        return None
+
+    def describe(self) -> str:
+        """The established facts as one sentence.
+
+        Returns
+        -------
+        str
+        """
+        if not self.unit_simple:
+            return "exact: the eigenvalue 1 is not simple" + (
+                f" ({self.note})" if self.note else ""
+            )
+        if not self.group or self.upper is None or self.lower is None:
+            return f"exact: leading group not established ({self.note})"
+        per = "" if self.period == 1 else f" over {self.period} steps"
+        val = ""
+        if self.value is not None:
+            sv = self.step_value
+            val = f" = {self.value}" + (
+                f" = ({sv})^{self.period}" if sv is not None and self.period > 1 else ""
+            )
+        if self.group == 1:
+            what = f"lambda1{val} is simple and real"
+        elif self.equal is True:
+            kind = {
+                True: "a real eigenvalue",
+                False: "a complex-conjugate pair",
+                None: "eigenvalues",
+            }[self.real]
+            mult = "" if self.real is False else f" of multiplicity {self.group}"
+            what = f"|lambda1| = ... = |lambda{self.group}|: {kind}{mult}{val}"
+        elif self.equal is False:
+            what = f"{self.group} eigenvalues of unequal moduli"
+        else:
+            what = f"{self.group} eigenvalues, equality of moduli not decided"
+        return (
+            f"exact{per}: 1 simple; {what}, modulus in [{self.lower}, {self.upper}); "
+            f"every other eigenvalue below {self.lower}"
+        )
+
+
+def _radius_between(a: float, b: float) -> Fraction:
+    """A simple rational strictly between two moduli ``a > b`` (or just below ``a``)."""
+    mid = (a + b) / 2 if b >= 0 else a / 2
+    gap = (a - b) / 4 if b >= 0 else a / 4
+    for den in (10, 100, 1000, 10**4, 10**6, 10**9, 10**12):
+        r = Fraction(mid).limit_denominator(den)
+        if abs(float(r) - mid) < gap:
+            return r
+    return Fraction(mid)
+
+
+def _count(polys: list[list[Fraction]], rho: Fraction) -> int | None:
+    total = 0
+    for p in polys:
+        c = _exact.count_inside(p, rho)
+        if c is None:
+            return None
+        total += c
+    return total
+
+
+def _nudged_count(polys, rho: Fraction, lo: float, hi: float) -> tuple[int, Fraction] | None:
+    """Root count inside ``rho``, moving ``rho`` within ``(lo, hi)`` if a root lies on it."""
+    for j in range(12):
+        if j:
+            t = Fraction(j, 13)
+            rho = Fraction(lo) + (Fraction(hi) - Fraction(lo)) * t
+        c = _count(polys, rho)
+        if c is not None:
+            return c, rho
+    return None
+
+
+def exact_ordering(spectrum: LocalSpectrum, scale=None) -> ExactSpectrum:
+    """Establish the leading eigenvalues of a local matrix in exact arithmetic.
+
+    The matrix of one period with the rotation taken out (as
+    :func:`local_spectrum` analyses it), on the smallest neighbourhood
+    mapped onto itself, built exactly (:func:`exact_local_matrix`); then, with
+    its characteristic polynomial split by Fourier modes:
+
+    * 1 is a root of multiplicity one (of mode 0);
+    * every other root has modulus below a rational ``upper < 1``
+      (Schur-Cohn);
+    * exactly ``group`` roots have modulus in ``[lower, upper)``, all the
+      others below ``lower`` (Schur-Cohn at both radii);
+    * their moduli are equal: one real root of multiplicity ``group``
+      (a common root of the blocks, found by exact gcds), or a pair of
+      non-real roots of one real polynomial (Sturm: no real root in the
+      annulus), which are conjugates.
+
+    Parameters
+    ----------
+    spectrum : LocalSpectrum
+        With its search context (from :func:`local_spectrum`).
+    scale : rational, optional
+        Another scale of the same scheme (see :func:`exact_local_matrix`).
+
+    Returns
+    -------
+    ExactSpectrum
+        ``standard`` is the exact counterpart of :attr:`LocalSpectrum.standard`.
+    """
+    ctx = spectrum._context
+    if ctx is None or not spectrum.stationary:
+        raise ValueError("exact_ordering needs a stationary spectrum with its search context")
+    positions = ctx.core if ctx.core is not None else np.arange(ctx.domain.size)
+    perm = _core_perm(ctx, positions)
+    A1 = exact_local_matrix(spectrum, scale)
+    A = _period_matrix(spectrum, A1, perm)
+    return _certify(A, perm, spectrum.size, spectrum.period, _scale_of(ctx, scale))
+
+
+def _scale_of(ctx: _Context, scale) -> Fraction | None:
+    if scale is not None:
+        return Fraction(scale)
+    s = ctx.options.get("scale")
+    return Fraction(s) if s is not None else None
+
+
+def _certify(A, perm, k: int, period: int, scale: Fraction | None) -> ExactSpectrum:
+    blocks = _split(A, perm, k)
+    polys = [_exact.charpoly(b.matrix) for b in blocks]
+    info = tuple((b.d, b.modes, tuple(p)) for b, p in zip(blocks, polys))
+    common: dict[str, Any] = dict(period=period, scale=scale, size=len(A), blocks=info)
+    # the eigenvalue 1: a simple root, of the block of mode 0 only
+    ones = [_multiplicity_at_one(p) for p in polys]
+    unit_simple = sum(ones) == 1 and blocks[0].d == 1 and ones[0] == 1
+    if not unit_simple:
+        return ExactSpectrum(
+            **common,
+            unit_simple=False,
+            upper=None,
+            lower=None,
+            group=0,
+            equal=None,
+            real=None,
+            value=None,
+            note=f"multiplicity of 1: {sum(ones)}",
+        )
+    reduced = [list(p) for p in polys]
+    reduced[0] = _exact.divmod_poly(reduced[0], [Fraction(-1), Fraction(1)])[0]
+    # floating point suggests the radii; the counts decide
+    floats = []
+    for b in blocks:
+        M = (
+            np.array([[float(x) for x in row] for row in b.matrix])
+            if b.matrix
+            else np.zeros((0, 0))
+        )
+        w = np.linalg.eigvals(M) if M.size else np.zeros(0)
+        floats.append(w)
+    allw = np.concatenate(floats) if floats else np.zeros(0)
+    # drop the eigenvalue 1 (the closest to 1 of mode 0)
+    if allw.size:
+        j = int(np.argmin(np.abs(floats[0] - 1.0)))
+        floats[0] = np.delete(floats[0], j)
+        allw = np.concatenate(floats)
+    mods = np.sort(np.abs(allw))[::-1]
+    n_rest = sum(len(p) - 1 for p in reduced)
+    if n_rest == 0:
+        return ExactSpectrum(
+            **common,
+            unit_simple=True,
+            upper=None,
+            lower=None,
+            group=0,
+            equal=None,
+            real=None,
+            value=None,
+            note="no eigenvalue besides 1",
+        )
+    m1 = float(mods[0])
+    guess = int(np.sum(np.abs(mods - m1) <= 1e-7 * max(m1, 1e-300)))
+    nxt = float(mods[guess]) if guess < mods.size else -1.0
+    up = _nudged_count(reduced, _radius_between(1.0, m1), m1, 1.0)
+    low = _nudged_count(reduced, _radius_between(m1, nxt), max(nxt, 0.0), m1) if m1 > 0 else None
+    if up is None or low is None or up[0] != n_rest:
+        return ExactSpectrum(
+            **common,
+            unit_simple=True,
+            upper=None,
+            lower=None,
+            group=0,
+            equal=None,
+            real=None,
+            value=None,
+            note="the radii could not separate the moduli",
+        )
+    upper, lower = up[1], low[1]
+    group = n_rest - low[0]
+    try:
+        equal, real, value = _group_equal(reduced, lower, upper, floats, m1)
+    except _Undecided:
+        equal, real, value = None, None, None
+    return ExactSpectrum(
+        **common,
+        unit_simple=True,
+        upper=upper,
+        lower=lower,
+        group=group,
+        equal=equal,
+        real=real,
+        value=value,
+    )
+
+
+def _multiplicity_at_one(p) -> int:
+    m = 0
+    q = list(p)
+    while q and _exact.evaluate(q, 1) == 0:
+        q = _exact.divmod_poly(q, [Fraction(-1), Fraction(1)])[0]
+        m += 1
+    return m
+
+
+class _Undecided(Exception):
+    """A Schur-Cohn count hit a singular case: the equality of moduli is left undecided."""
+
+
+def _in_annulus(p, lower: Fraction, upper: Fraction) -> int:
+    """Roots of ``p`` with modulus in ``[lower, upper)`` (the radii free of roots)."""
+    hi, lo = _exact.count_inside(p, upper), _exact.count_inside(p, lower)
+    if hi is None or lo is None:  # a singular case of the test, not a root on the circle
+        raise _Undecided
+    return hi - lo
+
+
+def _group_equal(polys, lower: Fraction, upper: Fraction, floats, m1: float):
+    """Are the moduli of the roots in ``[lower, upper)`` equal?  (equal, real, value)."""
+    inside = []  # (poly, roots with multiplicity, its float eigenvalues)
+    for p, w in zip(polys, floats):
+        # the floats only choose which polynomials to test; the counts decide
+        near = np.abs(np.abs(w) - m1) <= 1e-6 * max(m1, 1e-300) if len(w) else np.zeros(0, bool)
+        if not near.any() and len(w) and np.abs(w).max() < float(lower):
+            continue
+        c = _in_annulus(p, lower, upper)
+        if c:
+            inside.append((p, c, w))
+    total = sum(c for _, c, _ in inside)
+    if total == 1:
+        p, _, w = inside[0]
+        return True, True, _rational_value(p, w, m1)
+    annulus = [(lower, upper), (-upper, -lower)]
+    if len(inside) == 1:
+        p, c, w = inside[0]
+        sq = _exact.squarefree(p)
+        dc = _in_annulus(sq, lower, upper)
+        if dc == 1:  # one distinct root of multiplicity c: real (a non-real one has its conjugate)
+            return True, True, _rational_value(p, w, m1)
+        if dc == 2 and c == 2:
+            if sum(_exact.real_roots_in(sq, annulus)) == 0:
+                return True, False, None  # two non-real roots of a real polynomial: conjugates
+            mirror = [x * (-1) ** i for i, x in enumerate(sq)]
+            g = _exact.gcd(sq, mirror)
+            if len(g) > 1 and sum(_exact.real_roots_in(g, annulus)) > 0:
+                return True, True, None  # alpha and -alpha
+            return False, True, None
+        return None, None, None
+    # several blocks: one common real root carries the whole group
+    sqs = [_exact.squarefree(p) for p, _, _ in inside]
+    if all(_in_annulus(q, lower, upper) == 1 for q in sqs):
+        g = sqs[0]
+        for q in sqs[1:]:
+            g = _exact.gcd(g, q)
+        if len(g) > 1 and sum(_exact.real_roots_in(g, annulus)) > 0:
+            return True, True, _rational_value(inside[0][0], inside[0][2], m1)
+        return False, True, None
+    return None, None, None
+
+
+def _rational_value(p, w, m1: float) -> Fraction | None:
+    """The leading real root of ``p`` when it is rational (exact check), else None."""
+    if len(w) == 0:
+        return None
+    j = int(np.argmin(np.abs(np.abs(w) - m1)))
+    return _exact.rational_root(p, float(np.real(w[j])))
+
+
+# ---------------------------------------------------------------------------
+# the scale of pentagon preservation (issue 22, item 4)
+# ---------------------------------------------------------------------------
+
+#: The scheme whose scale :func:`scale_family` and :func:`scale_map` study.
+SCALE_SCHEME = "preserve_pentagons"
+#: The reference scale the neighbourhoods are found at (any scale in (0, 1)
+#: gives the same connectivity).
+REFERENCE_SCALE = Fraction(3, 4)
+
+
+@dataclass
+class ScaleFamily:
+    """Pentagon preservation's local matrix at one element, as a function of the scale.
+
+    One step of the remeshing is affine in the scale ``s`` (the copies of
+    the edge midpoints are ``s m + (1 - s) c``), the duals do not depend on
+    it, and the neighbourhood's connectivity does not either; so the local
+    matrix of one step is ``A(s) = base + s slope``.  In floating point the
+    two pieces come from the matrices at two scales; in exact arithmetic
+    (:meth:`exact`, computed on first use) from :func:`exact_local_matrix`
+    at ``s = 0`` and ``s = 1``.
+
+    Attributes
+    ----------
+    kind, size, duals
+        The element and the duals after each remeshing.
+    spectrum : LocalSpectrum
+        At :data:`REFERENCE_SCALE`.
+    base, slope : (n, n) float ndarray
+        ``A(0)`` and ``A(1) - A(0)`` on the smallest neighbourhood mapped
+        onto itself (floating point).
+    perm : list of int or None
+        The turn by one sector on that neighbourhood.
+    """
+
+    kind: str
+    size: int
+    duals: int
+    spectrum: LocalSpectrum
+    base: NDArray[np.float64]
+    slope: NDArray[np.float64]
+    perm: list[int] | None
+    _exact_pieces: tuple | None = field(default=None, repr=False)
+    _blocks: tuple | None = field(default=None, repr=False)
+
+    def exact_matrix(self, s) -> list[list[Fraction]]:
+        """``A(s)``, one step, exactly.
+
+        Parameters
+        ----------
+        s : rational
+
+        Returns
+        -------
+        list of lists of Fraction
+        """
+        if self._exact_pieces is None:
+            a0 = exact_local_matrix(self.spectrum, Fraction(0))
+            a1 = exact_local_matrix(self.spectrum, Fraction(1))
+            d = [[y - x for x, y in zip(r0, r1)] for r0, r1 in zip(a0, a1)]
+            self._exact_pieces = (a0, d)
+        a0, d = self._exact_pieces
+        s = Fraction(s)
+        return [[b + s * x for b, x in zip(rb, rd)] for rb, rd in zip(a0, d)]
+
+    def float_matrix(self, s: float) -> NDArray[np.float64]:
+        """``A(s)`` in floating point.
+
+        Parameters
+        ----------
+        s : float
+
+        Returns
+        -------
+        (n, n) float ndarray
+        """
+        return self.base + float(s) * self.slope
+
+    def moduli(self, s: float) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+        """The eigenvalue moduli per step at scale ``s`` (floating point), decreasing,
+        the eigenvalue 1 first, with their Fourier modes (-1 when unknown).
+
+        Parameters
+        ----------
+        s : float
+
+        Returns
+        -------
+        moduli : (n,) float ndarray
+        modes : (n,) int ndarray
+        """
+        m, modes = self.moduli_grid(np.array([float(s)]))
+        return m[0], modes[0]
+
+    def moduli_grid(self, scales) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+        """:meth:`moduli` at every scale of ``scales`` at once.
+
+        Parameters
+        ----------
+        scales : (g,) float array
+
+        Returns
+        -------
+        moduli : (g, n) float ndarray
+            Per step, decreasing along each row.
+        modes : (g, n) int ndarray
+        """
+        s = np.asarray(scales, dtype=np.float64)
+        if self._blocks is None:
+            perm = None if self.perm is None else np.asarray(self.perm, dtype=np.int64)
+            b0 = _fourier_blocks(self.base, perm, self.size) if perm is not None else None
+            b1 = _fourier_blocks(self.slope, perm, self.size) if b0 is not None else None
+            self._blocks = (b0, b1) if b0 is not None and b1 is not None else ()
+        if self._blocks:
+            vals, modes = [], []
+            for (w, B0), (_, B1) in zip(*self._blocks):
+                lam = np.linalg.eigvals(B0[None] + s[:, None, None] * B1[None])
+                vals.append(lam)
+                modes.append(np.full(lam.shape, w, dtype=np.int64))
+            lam, mode = np.concatenate(vals, axis=1), np.concatenate(modes, axis=1)
+        else:
+            lam = np.linalg.eigvals(self.base[None] + s[:, None, None] * self.slope[None])
+            mode = np.full(lam.shape, -1, dtype=np.int64)
+        ctx = self.spectrum._context
+        p = ctx.steps_per_match if ctx is not None else 1
+        m = np.abs(lam) ** (1.0 / p)
+        order = np.argsort(-np.round(m, 12), axis=1, kind="stable")
+        return np.take_along_axis(m, order, axis=1), np.take_along_axis(mode, order, axis=1)
+
+    def standard(self, s: float) -> bool:
+        """Reif's standard setting at scale ``s``, in floating point (:data:`TOL`).
+
+        Parameters
+        ----------
+        s : float
+
+        Returns
+        -------
+        bool
+        """
+        return bool(_standard_rows(self.moduli(s)[0][None])[0])
+
+    def standard_grid(self, scales) -> NDArray[np.bool_]:
+        """:meth:`standard` at every scale of ``scales``.
+
+        Parameters
+        ----------
+        scales : (g,) float array
+
+        Returns
+        -------
+        (g,) bool ndarray
+        """
+        return _standard_rows(self.moduli_grid(scales)[0])
+
+    def gap(self, s: float) -> float:
+        """``(|lambda2| - |lambda3|) / |lambda2|`` where the standard setting holds, else
+        ``-(|lambda1| - |lambda3|) / |lambda1|`` (how far it is from holding).
+
+        Parameters
+        ----------
+        s : float
+
+        Returns
+        -------
+        float
+        """
+        return float(self.gaps(np.array([float(s)]))[0])
+
+    def gaps(self, scales) -> NDArray[np.float64]:
+        """:meth:`gap` at every scale of ``scales``.
+
+        Parameters
+        ----------
+        scales : (g,) float array
+
+        Returns
+        -------
+        (g,) float ndarray
+        """
+        m, _ = self.moduli_grid(scales)
+        ok = _standard_rows(m)
+        return np.where(ok, (m[:, 2] - m[:, 3]) / m[:, 2], -(m[:, 1] - m[:, 3]) / m[:, 1])
+
+    def exact(self, s) -> ExactSpectrum:
+        """The leading eigenvalues at the rational scale ``s``, established exactly.
+
+        Parameters
+        ----------
+        s : rational
+
+        Returns
+        -------
+        ExactSpectrum
+        """
+        A = _period_matrix(self.spectrum, self.exact_matrix(s), self.perm)
+        return _certify(A, self.perm, self.size, self.spectrum.period, Fraction(s))
+
+
+def _standard_rows(m: NDArray[np.float64]) -> NDArray[np.bool_]:
+    """Reif's standard setting for every row of sorted moduli (the eigenvalue 1 first)."""
+    if m.shape[1] < 4:
+        return np.zeros(m.shape[0], dtype=bool)
+    return (
+        (np.abs(m[:, 0] - 1.0) <= 1e-9)
+        & (m[:, 1] < 1 - 1e-9)
+        & (np.abs(m[:, 1] - m[:, 2]) <= TOL * m[:, 1])
+        & (m[:, 3] < m[:, 2] * (1 - TOL))
+    )
+
+
+def _float_local_matrix(spectrum: LocalSpectrum, scale: float, positions) -> NDArray[np.float64]:
+    """The local matrix of one identification step at another scale (floating point)."""
+    ctx = spectrum._context
+    assert ctx is not None
+    S = None
+    for j in range(ctx.level, ctx.level + ctx.steps_per_match):
+        R, out = remesh_matrix(ctx.steps[j].mesh, ctx.scheme, scale=float(scale))
+        T = R
+        for _ in range(ctx.duals):
+            T = dual_matrix(out) @ T
+            out = _schemes.dual(out)
+        S = T if S is None else T @ S
+    assert S is not None
+    S = S.tocsr()
+    return S[ctx.image[positions]][:, ctx.domain[positions]].toarray()
+
+
+def scale_family(kind: str, size: int, duals: int = 2) -> ScaleFamily:
+    """Pentagon preservation's local matrix at one element as a function of the scale.
+
+    Parameters
+    ----------
+    kind : {"vertex", "face"}
+    size : int, >= 3
+    duals : int
+        Duals after each remeshing (the paper: an even number).
+
+    Returns
+    -------
+    ScaleFamily
+
+    Raises
+    ------
+    ValueError
+        When no stationary neighbourhood is found.
+    """
+    ref = float(REFERENCE_SCALE)
+    sp = local_spectrum(SCALE_SCHEME, kind, size, duals, scale=ref)
+    if not sp.stationary or sp._context is None:
+        raise ValueError(f"no stationary neighbourhood: {sp.note}")
+    ctx = sp._context
+    positions = ctx.core if ctx.core is not None else np.arange(ctx.domain.size)
+    perm = _core_perm(ctx, positions)
+    at_ref = sp.matrix[np.ix_(positions, positions)]
+    at_quarter = _float_local_matrix(sp, 0.25, positions)
+    slope = (at_ref - at_quarter) / (ref - 0.25)
+    base = at_quarter - 0.25 * slope
+    return ScaleFamily(kind, int(size), int(duals), sp, base, slope, perm)
+
+
+@dataclass(frozen=True)
+class ScaleThreshold:
+    """Where Reif's standard setting changes along the scale, for one element.
+
+    Attributes
+    ----------
+    kind, size, duals
+    status : str
+        ``"always"`` (at every scale sampled in (0, 1)), ``"never"``, or
+        ``"above"`` / ``"below"`` (the setting holds above / below
+        ``value``), or ``"mixed"`` (several changes).
+    value : Fraction or None
+        The threshold, when it is established exactly (the leading
+        eigenvalues coincide there, exactly).
+    bracket : (Fraction, Fraction) or None
+        An interval of the threshold established exactly at its ends (the
+        setting exactly fails at one end and holds at the other).
+    exact_at : dict
+        ``{scale: ExactSpectrum}``: the scales where the ordering was
+        established exactly.
+    note : str
+    """
+
+    kind: str
+    size: int
+    duals: int
+    status: str
+    value: Fraction | None = None
+    bracket: tuple[Fraction, Fraction] | None = None
+    exact_at: dict = field(default_factory=dict, compare=False)
+    note: str = ""
+
+    @property
+    def text(self) -> str:
+        """``"always"``, ``"never"``, ``"s > 5/7"``, ``"s > 0.7143 (in [a, b])"`` ..."""
+        if self.status in ("always", "never", "mixed"):
+            return self.status
+        where = str(self.value) if self.value is not None else ""
+        if not where and self.bracket is not None:
+            lo, hi = self.bracket
+            where = f"{float((lo + hi) / 2):.6f} (in [{lo}, {hi}])"
+        return f"s {'>' if self.status == 'above' else '<'} {where}"
+
+
+#: Scales sampled by :func:`scale_map`: 1/100 ... 99/100.
+SCALE_GRID = tuple(Fraction(j, 100) for j in range(1, 100))
+
+
+def _bisect(fam: ScaleFamily, lo: float, hi: float, at_lo: bool) -> tuple[float, float]:
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        if fam.standard(mid) == at_lo:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo < 1e-13:
+            break
+    return lo, hi
+
+
+def scale_threshold(fam: ScaleFamily, grid=SCALE_GRID, *, exact: bool = True) -> ScaleThreshold:
+    """Where the standard setting holds along the scale, for one element.
+
+    Sampled in floating point on ``grid``; each change is located by
+    bisection and, with ``exact``, established in exact arithmetic: the
+    rational nearest the change (denominator at most 1000) is tried as the
+    threshold (the leading eigenvalues must coincide there exactly, and the
+    setting must fail and hold exactly on either side, 1/10000 away);
+    otherwise the bisection's interval is established at its ends.
+
+    Parameters
+    ----------
+    fam : ScaleFamily
+    grid : sequence of rationals in (0, 1)
+    exact : bool
+
+    Returns
+    -------
+    ScaleThreshold
+    """
+    flags = [bool(x) for x in _standard_rows(fam.moduli_grid([float(s) for s in grid])[0])]
+    common: dict[str, Any] = dict(kind=fam.kind, size=fam.size, duals=fam.duals)
+    if all(flags):
+        return ScaleThreshold(**common, status="always")
+    if not any(flags):
+        return ScaleThreshold(**common, status="never")
+    changes = [j for j in range(len(flags) - 1) if flags[j] != flags[j + 1]]
+    if len(changes) != 1:
+        return ScaleThreshold(**common, status="mixed", note=f"{len(changes)} changes on the grid")
+    j = changes[0]
+    lo, hi = _bisect(fam, float(grid[j]), float(grid[j + 1]), flags[j])
+    status = "above" if flags[j + 1] else "below"
+    if not exact:
+        return ScaleThreshold(
+            **common,
+            status=status,
+            bracket=(Fraction(lo), Fraction(hi)),
+            note="floating point",
+        )
+    guess = Fraction((lo + hi) / 2).limit_denominator(1000)
+    eps = Fraction(1, 10_000)
+    at = {s: fam.exact(s) for s in (guess - eps, guess, guess + eps)}
+    below, on, above = at[guess - eps], at[guess], at[guess + eps]
+    flips = below.standard == flags[j] and above.standard == flags[j + 1]
+    if flips and on.unit_simple and on.group >= 3 and on.equal is True:
+        return ScaleThreshold(**common, status=status, value=guess, exact_at=at)
+    a, b = Fraction(lo).limit_denominator(10**9), Fraction(hi).limit_denominator(10**9)
+    if a >= b:
+        a, b = Fraction(lo), Fraction(hi)
+    at = {a: fam.exact(a), b: fam.exact(b)}
+    ok = at[a].standard == flags[j] and at[b].standard == flags[j + 1]
+    return ScaleThreshold(
+        **common,
+        status=status,
+        bracket=(a, b),
+        exact_at=at,
+        note="" if ok else "the exact ordering at the bracket's ends disagrees",
+    )
+
+
+def scale_map(
+    duals=(2, 4, 6),
+    sizes=range(3, 9),
+    kinds=KINDS,
+    grid=SCALE_GRID,
+    *,
+    exact: bool = True,
+) -> list[ScaleThreshold]:
+    """Where pentagon preservation is in Reif's standard setting, by scale.
+
+    For every number of duals, kind of element and size: the thresholds of
+    :func:`scale_threshold` (an element of ``"never"`` or ``"always"`` has
+    none on the grid).
+
+    Parameters
+    ----------
+    duals : iterable of int
+    sizes : iterable of int
+    kinds : iterable of {"vertex", "face"}
+    grid : sequence of rationals in (0, 1)
+    exact : bool
+        Establish each threshold in exact arithmetic.
+
+    Returns
+    -------
+    list of ScaleThreshold
+        Ordered by duals, kind, size.
+    """
+    out = []
+    for d in duals:
+        for kind in kinds:
+            for n in sizes:
+                out.append(scale_threshold(scale_family(kind, n, d), grid, exact=exact))
+    return out
+
+
+@dataclass(frozen=True)
+class ScaleStudy:
+    """Pentagon preservation's scale, studied: where the standard setting holds, and a
+    recommended scale (:func:`scale_study`).
+
+    Attributes
+    ----------
+    grid : (g,) float ndarray
+        The scales sampled.
+    moduli : dict
+        ``{(duals, kind, size): (g, 4) array}``: ``|lambda1|`` to ``|lambda4|``
+        per step at every scale of the grid.
+    standard : dict
+        ``{(duals, kind, size): (g,) bool array}``: the standard setting at
+        every scale (floating point).
+    thresholds : dict
+        ``{(duals, kind, size): ScaleThreshold}``.
+    recommended : Fraction
+        The recommended scale (with :attr:`recommended_duals` duals).
+    recommended_duals : int
+    optimum : float
+        The scale that maximizes the smallest relative gap
+        ``(|lambda2| - |lambda3|) / |lambda2|`` over the elements.
+    gaps : dict
+        ``{(kind, size): gap}`` at the recommended scale, and
+        ``worst_gap``: the smallest of them.
+    worst_gap_default : float
+        The smallest gap at the package's default scale, 3/4.
+    exact_at_recommended : dict
+        ``{(kind, size): ExactSpectrum}`` at the recommended scale.
+    """
+
+    grid: NDArray[np.float64]
+    moduli: dict
+    standard: dict
+    thresholds: dict
+    recommended: Fraction
+    recommended_duals: int
+    optimum: float
+    gaps: dict
+    worst_gap: float
+    worst_gap_default: float
+    exact_at_recommended: dict = field(default_factory=dict)
+    limiting: tuple = ()
+
+    def status(self, duals: int, kind: str, size: int) -> str:
+        """The threshold's text for one element.
+
+        Parameters
+        ----------
+        duals : int
+        kind : {"vertex", "face"}
+        size : int
+
+        Returns
+        -------
+        str
+            ``"always"``, ``"never"``, ``"s > 5/7"``, ...
+        """
+        return self.thresholds[(duals, kind, size)].text
+
+
+def _worst_gap(families: list[ScaleFamily], s: float) -> tuple[float, tuple[str, int]]:
+    gaps = [(fam.gap(s), (fam.kind, fam.size)) for fam in families]
+    return min(gaps)
+
+
+def _worst_gaps(families: list[ScaleFamily], scales) -> NDArray[np.float64]:
+    return np.min(np.stack([fam.gaps(scales) for fam in families]), axis=0)
+
+
+def scale_study(
+    duals=(2, 4, 6),
+    sizes=range(3, 9),
+    grid_points: int = 99,
+    *,
+    exact: bool = True,
+) -> ScaleStudy:
+    """Pentagon preservation's scale: the standard setting at every element, by scale
+    and number of duals, and the scale this analysis recommends.
+
+    The recommendation is made for the smallest number of duals at which
+    the setting holds at every element for some scale (2): the scale that
+    maximizes the smallest relative gap ``(|lambda2| - |lambda3|) /
+    |lambda2|`` over vertices and faces of ``sizes`` -- the rate at which
+    the rings around an element settle to the characteristic map's shape
+    -- rounded to the simplest fraction within 0.01, and established
+    exactly there (:func:`exact_ordering`, with ``exact``).
+
+    Parameters
+    ----------
+    duals : iterable of int
+    sizes : iterable of int
+    grid_points : int
+        Scales ``j / (grid_points + 1)``, ``j = 1 .. grid_points``.
+    exact : bool
+        Establish the thresholds and the recommended scale in exact arithmetic.
+
+    Returns
+    -------
+    ScaleStudy
+    """
+    sizes = list(sizes)
+    grid = tuple(Fraction(j, grid_points + 1) for j in range(1, grid_points + 1))
+    g = np.array([float(x) for x in grid])
+    fams: dict[tuple[int, str, int], ScaleFamily] = {}
+    moduli, standard, thresholds = {}, {}, {}
+    for d in duals:
+        for kind in KINDS:
+            for n in sizes:
+                fam = scale_family(kind, n, d)
+                key = (d, kind, n)
+                fams[key] = fam
+                mods, _ = fam.moduli_grid(g)
+                moduli[key] = mods[:, 1:5]
+                standard[key] = _standard_rows(mods)
+                thresholds[key] = scale_threshold(fam, grid, exact=exact)
+                if exact and thresholds[key].status == "never":
+                    ex = fam.exact(REFERENCE_SCALE)
+                    thresholds[key] = dataclasses.replace(
+                        thresholds[key], exact_at={REFERENCE_SCALE: ex}
+                    )
+    # the recommendation: the fewest duals at which every element has a working scale
+    ok_duals = [
+        d
+        for d in duals
+        if all(thresholds[(d, kind, n)].status != "never" for kind in KINDS for n in sizes)
+    ]
+    rec_duals = min(ok_duals) if ok_duals else min(duals)
+    family = [fams[(rec_duals, kind, n)] for kind in KINDS for n in sizes]
+    coarse = np.round(np.arange(0.5, 0.995, 0.005), 3)
+    best = float(coarse[int(np.argmax(_worst_gaps(family, coarse)))])
+    lo, hi = max(best - 0.005, 1e-3), min(best + 0.005, 1 - 1e-3)
+    for _ in range(40):  # golden-section refinement of max-min
+        a, b = lo + 0.382 * (hi - lo), lo + 0.618 * (hi - lo)
+        if _worst_gap(family, a)[0] < _worst_gap(family, b)[0]:
+            lo = a
+        else:
+            hi = b
+    optimum = (lo + hi) / 2
+    recommended = _simplest_fraction(optimum, 0.01)
+    gaps = {(fam.kind, fam.size): fam.gap(float(recommended)) for fam in family}
+    worst, _ = _worst_gap(family, float(recommended))
+    default, _ = _worst_gap(family, 0.75)
+    exact_at = {}
+    if exact:
+        exact_at = {(fam.kind, fam.size): fam.exact(recommended) for fam in family}
+    return ScaleStudy(
+        grid=g,
+        moduli=moduli,
+        standard=standard,
+        thresholds=thresholds,
+        recommended=recommended,
+        recommended_duals=rec_duals,
+        optimum=optimum,
+        gaps=gaps,
+        worst_gap=worst,
+        worst_gap_default=default,
+        exact_at_recommended=exact_at,
+        limiting=tuple(
+            sorted(
+                (k for k, v in gaps.items() if v <= worst * (1 + 0.05)),
+                key=lambda k: gaps[k],
+            )
+        ),
+    )
+
+
+def _simplest_fraction(x: float, within: float) -> Fraction:
+    """The fraction of smallest denominator within ``within`` of ``x``."""
+    for den in range(1, 1000):
+        num = round(x * den)
+        if abs(num / den - x) <= within:
+            return Fraction(num, den)
+    return Fraction(x).limit_denominator(1000)  # pragma: no cover
+
+
+# ---------------------------------------------------------------------------
 # the results table (issue 9, item 4)
 # ---------------------------------------------------------------------------
 
@@ -1344,8 +2828,15 @@ class ContinuityRow:
     kind, size : the element
     spectrum : LocalSpectrum or None
     char_map : CharacteristicMap or None
+        None where the element has no characteristic map (``map_note`` says
+        why) or no spectrum.
     fate : str
         What the element becomes when it does not survive.
+    map_note : str
+        Why there is no characteristic map (:attr:`LocalSpectrum.map_obstruction`).
+    exact : ExactSpectrum or None
+        The leading eigenvalues established in exact arithmetic
+        (:func:`exact_ordering`), when the table was asked for them.
     """
 
     label: str
@@ -1354,6 +2845,8 @@ class ContinuityRow:
     spectrum: LocalSpectrum | None
     char_map: CharacteristicMap | None
     fate: str = ""
+    map_note: str = ""
+    exact: ExactSpectrum | None = None
 
     @property
     def element(self) -> str:
@@ -1385,31 +2878,66 @@ class ContinuityRow:
         return f"{mod:.4f}" if z.real >= 0 else f"-{mod:.4f}"
 
     @property
-    def necessary(self) -> str:
+    def standard(self) -> str:
+        """``"holds"`` / ``"fails: <what>"`` for Reif's standard setting
+        (:attr:`LocalSpectrum.standard`), ``"exact"`` added where
+        :func:`exact_ordering` established it; ``"n/a"`` without a spectrum."""
         if self.spectrum is None or not self.spectrum.stationary:
             return "n/a"
-        r = self.spectrum.necessary_reason
-        return "holds" if not r else f"fails: {r}"
+        r = self.spectrum.standard_reason
+        text = "holds" if not r else f"fails: {r}"
+        if self.exact is not None and self.exact.decided:
+            text += " (exact)" if self.exact.standard == (not r) else " (exact disagrees)"
+        return text
+
+    @property
+    def necessary(self) -> str:
+        """The old name of :attr:`standard`; kept for old code."""
+        return self.standard
 
     @property
     def verdict(self) -> str:
-        if self.char_map is None:
-            return "n/a"
-        return self.char_map.verdict
+        """The characteristic map's verdict, or ``"none: <why>"`` where there is none."""
+        if self.char_map is not None:
+            return self.char_map.verdict
+        if self.map_note:
+            return f"none: {self.map_note}"
+        return "n/a"
 
     @property
     def c1(self) -> str:
-        """``yes`` / ``no`` / ``undecided`` with the reason."""
+        """``yes`` / ``no`` / ``undecided`` with the reason.
+
+        ``no`` is said for generic control points: where no characteristic
+        map exists (a simple ``lambda1`` of Fourier mode 0, or three or more
+        eigenvalues of the subdominant modulus: no tangent plane, see
+        :attr:`LocalSpectrum.map_obstruction`), or where the map is not
+        injective.
+        """
         sp = self.spectrum
         if sp is None:
             return "n/a"
         if not sp.stationary:
             return "undecided (no stationary neighbourhood)"
-        if not sp.necessary:
-            return "no (necessary condition fails)"
+        n = sp.subdominant_count
+        if n == 1:
+            mode = int(sp.modes[1]) if sp.modes.size > 1 else -1
+            if mode == 0:
+                return (
+                    "no tangent plane for generic control points "
+                    "(lambda1 simple, of Fourier mode 0)"
+                )
+            return "undecided (lambda1 simple)"
+        if n >= 3:
+            return (
+                f"no tangent plane for generic control points ({n} eigenvalues of the "
+                "subdominant modulus)"
+            )
         cm = self.char_map
-        if cm is None or not cm.injective:
-            return "no (characteristic map not injective)" if cm is not None else "undecided"
+        if cm is None:
+            return "undecided"
+        if not cm.injective:
+            return "no (characteristic map not injective)"
         if sp.subdominant_complex:
             return "undecided (complex subdominant pair; Reif's criterion is for real ones)"
         if not _spline_background(self.label):
@@ -1434,6 +2962,7 @@ def continuity_table(
     *,
     map_iterations: int = 2,
     progress: Callable[[str], None] | None = None,
+    exact: bool | Callable[[str], bool] = False,
 ) -> list[ContinuityRow]:
     """The results table: every scheme + ``duals`` duals at every element type.
 
@@ -1449,6 +2978,10 @@ def continuity_table(
         (:func:`characteristic_map`'s ``iterations``).
     progress : callable, optional
         Called with a line of text after every row.
+    exact : bool or callable
+        Establish the leading eigenvalues of every row in exact arithmetic
+        (:func:`exact_ordering`, in :attr:`ContinuityRow.exact`); a callable
+        ``exact(label) -> bool`` chooses the cases.
 
     Returns
     -------
@@ -1460,6 +2993,7 @@ def continuity_table(
     rows: list[ContinuityRow] = []
     sizes = list(sizes)
     for label, scheme, options in cases:
+        want_exact = exact(label) if callable(exact) else bool(exact)
         for kind in KINDS:
             fates = {n: element_fate(scheme, kind, n, **options) for n in sizes}
             lost = {n: f for n, f in fates.items() if not f.startswith(kind)}
@@ -1471,10 +3005,13 @@ def continuity_table(
                 if not sp.refines:
                     rows.append(ContinuityRow(label, kind, n, None, None, sp.note))
                     break
-                cm = None
-                if sp.stationary and sp.eigenvalues.size > 3:
-                    cm = characteristic_map(sp, iterations=map_iterations)
-                row = ContinuityRow(label, kind, n, sp, cm)
+                cm, why = None, ""
+                if sp.stationary:
+                    why = sp.map_obstruction
+                    if not why:
+                        cm = characteristic_map(sp, iterations=map_iterations)
+                ex = exact_ordering(sp) if want_exact and sp.stationary else None
+                row = ContinuityRow(label, kind, n, sp, cm, map_note=why, exact=ex)
                 rows.append(row)
                 if progress:
                     progress(f"{label} {kind} {n}: {row.lam(1)} {row.c1}")
@@ -1501,7 +3038,7 @@ def table_markdown(rows: list[ContinuityRow]) -> str:
     """
     head = (
         "| scheme + 2 duals | element | period | N | λ1 | λ2 | λ3 | λ4 | "
-        "necessary condition | characteristic map | C1 |\n"
+        "standard setting | characteristic map | C1 |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n"
     )
     lines = []
@@ -1515,6 +3052,6 @@ def table_markdown(rows: list[ContinuityRow]) -> str:
         size = f"{sp.neighbourhood}/{sp.analysis_size}" if sp.stationary else ""
         lines.append(
             f"| {r.label} | {r.element} | {period} | {size} | {r.lam(1)} | {r.lam(2)} | "
-            f"{r.lam(3)} | {r.lam(4)} | {r.necessary} | {r.verdict} | {r.c1} |"
+            f"{r.lam(3)} | {r.lam(4)} | {r.standard} | {r.verdict} | {r.c1} |"
         )
     return head + "\n".join(lines) + "\n"

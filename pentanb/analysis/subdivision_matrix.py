@@ -23,9 +23,20 @@ Two ways to build ``S``:
   on them, a :class:`ValueError` says so.  Costs about ``n / 3`` calls.
 
 Every row of ``S`` sums to 1 (affine invariance: translating the mesh
-translates the result).  The weights are non-negative for every registered
-scheme (their rules are convex combinations); a user's scheme may have
-negative weights, which :func:`matrix_checks` reports.
+translates the result).
+
+The weights of every registered scheme are rational (edge points at 1/2
+or 1/3, centroids 1/n, the scale of pentagon preservation and of the
+hexagonal and corner-cutting rules), so ``S`` is also available exactly:
+:func:`exact_remesh_matrix` and :func:`exact_dual_matrix` write the same
+rules with :class:`fractions.Fraction` weights (an :class:`ExactMatrix`),
+for the exact eigenvalue analysis of :mod:`pentanb.analysis.spectral`.  A
+float scale is taken as the binary fraction it is (``0.75`` is ``3/4``);
+pass a :class:`~fractions.Fraction` for any other rational.
+
+The weights are non-negative for every registered scheme (their rules are
+convex combinations); a user's scheme may have negative weights, which
+:func:`matrix_checks` reports.
 
 scipy is needed here (and only here and in the other analysis modules):
 ``import pentanb`` needs numpy only.
@@ -35,6 +46,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from fractions import Fraction
 from typing import Any
 
 import numpy as np
@@ -52,6 +64,9 @@ __all__ = [
     "matrix_checks",
     "MatrixChecks",
     "RULE_SCHEMES",
+    "ExactMatrix",
+    "exact_remesh_matrix",
+    "exact_dual_matrix",
 ]
 
 #: Relative tolerance of ``S @ vertices == result.vertices``.
@@ -79,35 +94,139 @@ def _csr(rows, cols, vals, shape):
 # ---------------------------------------------------------------------------
 
 
-class _Rows:
-    """Accumulates blocks of rows ``(cols, vals)`` in output order."""
+class ExactMatrix:
+    """A sparse matrix of :class:`~fractions.Fraction` weights (CSR, rows summed once).
 
-    def __init__(self, n_old: int):
+    What :func:`exact_remesh_matrix` and :func:`exact_dual_matrix` return: the
+    same rules as the float matrices, in exact arithmetic.
+
+    Attributes
+    ----------
+    shape : (int, int)
+    indptr, indices : int arrays
+        CSR structure, columns sorted within each row.
+    data : object array of Fraction
+        The non-zero weights.
+    """
+
+    def __init__(self, indptr, indices, data, shape: tuple[int, int]):
+        self.indptr = np.asarray(indptr, dtype=np.int64)
+        self.indices = np.asarray(indices, dtype=np.int64)
+        self.data = np.asarray(data, dtype=object)
+        self.shape = (int(shape[0]), int(shape[1]))
+
+    @classmethod
+    def from_coo(cls, rows, cols, vals, shape) -> ExactMatrix:
+        """Entries ``(rows[i], cols[i], vals[i])``, duplicates summed, zeros dropped.
+
+        Parameters
+        ----------
+        rows, cols : int arrays
+        vals : sequence of Fraction
+        shape : (int, int)
+
+        Returns
+        -------
+        ExactMatrix
+        """
+        rows = np.asarray(rows, dtype=np.int64)
+        cols = np.asarray(cols, dtype=np.int64)
+        vals = np.asarray(vals, dtype=object)
+        order = np.lexsort((cols, rows))
+        rows, cols, vals = rows[order], cols[order], vals[order]
+        if rows.size:
+            new = np.ones(rows.size, dtype=bool)
+            new[1:] = (rows[1:] != rows[:-1]) | (cols[1:] != cols[:-1])
+            starts = np.flatnonzero(new)
+            vals = np.add.reduceat(vals, starts) if vals.size else vals
+            rows, cols = rows[starts], cols[starts]
+            keep = np.array([v != 0 for v in vals], dtype=bool)
+            rows, cols, vals = rows[keep], cols[keep], vals[keep]
+        indptr = np.zeros(int(shape[0]) + 1, dtype=np.int64)
+        np.add.at(indptr, rows + 1, 1)
+        return cls(np.cumsum(indptr), cols, vals, shape)
+
+    @property
+    def nnz(self) -> int:
+        """Number of stored weights."""
+        return int(self.indices.size)
+
+    def row(self, i: int) -> dict[int, Fraction]:
+        """Row ``i`` as ``{column: weight}``.
+
+        Parameters
+        ----------
+        i : int
+            A row index.
+
+        Returns
+        -------
+        dict
+        """
+        a, b = int(self.indptr[i]), int(self.indptr[i + 1])
+        return dict(zip(self.indices[a:b].tolist(), self.data[a:b].tolist()))
+
+    def toarray(self) -> np.ndarray:
+        """The weights as a dense float array (each rounded once).
+
+        Returns
+        -------
+        (m, n) float ndarray
+        """
+        out = np.zeros(self.shape)
+        r = np.repeat(np.arange(self.shape[0]), np.diff(self.indptr))
+        out[r, self.indices] = [float(x) for x in self.data]
+        return out
+
+
+def _inverses(sizes: np.ndarray) -> np.ndarray:
+    """``1 / sizes`` as an object array of fractions."""
+    top = int(sizes.max(initial=1))
+    table = np.array([Fraction(0)] + [Fraction(1, n) for n in range(1, top + 1)], dtype=object)
+    return table[sizes]
+
+
+class _Rows:
+    """Accumulates blocks of rows ``(cols, vals)`` in output order.
+
+    With ``exact``, the weights are :class:`~fractions.Fraction` objects and
+    :meth:`matrix` returns an :class:`ExactMatrix`.
+    """
+
+    def __init__(self, n_old: int, exact: bool = False):
         self.n_old = n_old
+        self.exact = exact
         self.rows: list[np.ndarray] = []
         self.cols: list[np.ndarray] = []
         self.vals: list[np.ndarray] = []
         self.n = 0
 
+    def weight(self, x):
+        """A scalar weight in this accumulator's number type."""
+        return Fraction(x) if self.exact else float(x)
+
     def add(self, row_local, cols, vals, count: int) -> None:
         """``count`` new rows; entry ``i`` sits in local row ``row_local[i]``."""
         self.rows.append(self.n + np.asarray(row_local, dtype=np.int64))
         self.cols.append(np.asarray(cols, dtype=np.int64))
-        self.vals.append(np.asarray(vals, dtype=np.float64))
+        self.vals.append(np.asarray(vals, dtype=object if self.exact else np.float64))
         self.n += int(count)
 
     def identity(self) -> None:
         n = self.n_old
         r = np.arange(n, dtype=np.int64)
-        self.add(r, r, np.ones(n), n)
+        self.add(r, r, np.full(n, self.weight(1), dtype=object if self.exact else np.float64), n)
 
     def edge_points(self, mesh: Mesh, k: int) -> None:
         """Rows ``k e + j`` at ``(j + 1) / (k + 1)`` from the edge's smaller vertex."""
         E = mesh.n_edges
         a, b = mesh.edges[:, 0], mesh.edges[:, 1]
-        t = np.arange(1, k + 1, dtype=np.float64) / (k + 1)
+        if self.exact:
+            t = np.array([Fraction(j, k + 1) for j in range(1, k + 1)], dtype=object)
+        else:
+            t = np.arange(1, k + 1, dtype=np.float64) / (k + 1)
         rows = np.arange(E * k, dtype=np.int64)
-        ta = np.broadcast_to(1.0 - t, (E, k)).reshape(-1)
+        ta = np.broadcast_to(1 - t, (E, k)).reshape(-1)
         tb = np.broadcast_to(t, (E, k)).reshape(-1)
         self.add(
             np.concatenate([rows, rows]),
@@ -119,7 +238,8 @@ class _Rows:
     def centroids(self, mesh: Mesh, faces: np.ndarray | None = None) -> None:
         """One row per face (or per face of ``faces``, in that order): its centroid."""
         hf = mesh.halfedge_face
-        w = 1.0 / mesh.face_sizes[hf]
+        sizes = mesh.face_sizes[hf]
+        w = _inverses(sizes) if self.exact else 1.0 / sizes
         if faces is None:
             self.add(hf, mesh.corners, w, mesh.n_faces)
             return
@@ -128,7 +248,7 @@ class _Rows:
         keep = local[hf] >= 0
         self.add(local[hf[keep]], mesh.corners[keep], w[keep], faces.size)
 
-    def per_halfedge(self, mesh: Mesh, w_tail: float, w_head: float, w_centroid: float) -> None:
+    def per_halfedge(self, mesh: Mesh, w_tail, w_head, w_centroid) -> None:
         """One row per half-edge ``h``: ``w_tail tail + w_head head + w_centroid c_f``."""
         H = mesh.n_halfedges
         h = np.arange(H, dtype=np.int64)
@@ -139,21 +259,28 @@ class _Rows:
         start = mesh.offsets[:-1][hf]
         within = np.arange(owner.size, dtype=np.int64) - np.repeat(np.cumsum(sizes) - sizes, sizes)
         corner_cols = mesh.corners[np.repeat(start, sizes) + within]
-        corner_vals = np.repeat(w_centroid / sizes, sizes)
+        dtype = object if self.exact else np.float64
+        share = _inverses(sizes) * w_centroid if self.exact else w_centroid / sizes
         self.add(
             np.concatenate([h, h, owner]),
             np.concatenate([mesh.corners, mesh.head, corner_cols]),
-            np.concatenate([np.full(H, w_tail), np.full(H, w_head), corner_vals]),
+            np.concatenate(
+                [
+                    np.full(H, w_tail, dtype=dtype),
+                    np.full(H, w_head, dtype=dtype),
+                    np.repeat(share, sizes),
+                ]
+            ),
             H,
         )
 
     def matrix(self):
-        return _csr(
-            np.concatenate(self.rows),
-            np.concatenate(self.cols),
-            np.concatenate(self.vals),
-            (self.n, self.n_old),
-        )
+        rows = np.concatenate(self.rows)
+        cols = np.concatenate(self.cols)
+        vals = np.concatenate(self.vals)
+        if self.exact:
+            return ExactMatrix.from_coo(rows, cols, vals, (self.n, self.n_old))
+        return _csr(rows, cols, vals, (self.n, self.n_old))
 
 
 # ---------------------------------------------------------------------------
@@ -174,32 +301,36 @@ def dual_matrix(mesh: Mesh):
     scipy.sparse.csr_matrix, shape (F, V)
         ``dual_matrix(m) @ m.vertices == pentanb.dual(m).vertices``.
     """
-    rows = _Rows(mesh.n_vertices)
+    return _dual(mesh)
+
+
+def _dual(mesh: Mesh, out: Mesh | None = None, *, exact: bool = False):
+    rows = _Rows(mesh.n_vertices, exact)
     rows.centroids(mesh)
     return rows.matrix()
 
 
-def _pentagonalize(mesh: Mesh, out: Mesh):
-    r = _Rows(mesh.n_vertices)
+def _pentagonalize(mesh: Mesh, out: Mesh, *, exact: bool = False):
+    r = _Rows(mesh.n_vertices, exact)
     r.identity()
     r.edge_points(mesh, 2)
     r.centroids(mesh)
     return r.matrix()
 
 
-def _preserve_pentagons(mesh: Mesh, out: Mesh, scale: float = 0.75):
-    s = float(scale)
-    r = _Rows(mesh.n_vertices)
+def _preserve_pentagons(mesh: Mesh, out: Mesh, scale: float = 0.75, *, exact: bool = False):
+    r = _Rows(mesh.n_vertices, exact)
+    s = r.weight(scale)
     r.identity()
     r.edge_points(mesh, 1)
     # copy of the midpoint of h about the face's centre (the mean of its
     # edge midpoints, which is the mean of its vertices)
-    r.per_halfedge(mesh, s / 2, s / 2, 1.0 - s)
+    r.per_halfedge(mesh, s / 2, s / 2, 1 - s)
     return r.matrix()
 
 
-def _triangulate(mesh: Mesh, out: Mesh):
-    r = _Rows(mesh.n_vertices)
+def _triangulate(mesh: Mesh, out: Mesh, *, exact: bool = False):
+    r = _Rows(mesh.n_vertices, exact)
     r.identity()
     big = np.flatnonzero(mesh.face_sizes > 3)
     if big.size:
@@ -207,46 +338,46 @@ def _triangulate(mesh: Mesh, out: Mesh):
     return r.matrix()
 
 
-def _loop_remesh(mesh: Mesh, out: Mesh):
-    r = _Rows(mesh.n_vertices)
+def _loop_remesh(mesh: Mesh, out: Mesh, *, exact: bool = False):
+    r = _Rows(mesh.n_vertices, exact)
     r.identity()
     r.edge_points(mesh, 1)
     return r.matrix()
 
 
-def _sqrt3_remesh(mesh: Mesh, out: Mesh):
-    r = _Rows(mesh.n_vertices)
+def _sqrt3_remesh(mesh: Mesh, out: Mesh, *, exact: bool = False):
+    r = _Rows(mesh.n_vertices, exact)
     r.identity()
     r.centroids(mesh)
     return r.matrix()
 
 
-def _vertex_insertion(mesh: Mesh, out: Mesh):
-    r = _Rows(mesh.n_vertices)
+def _vertex_insertion(mesh: Mesh, out: Mesh, *, exact: bool = False):
+    r = _Rows(mesh.n_vertices, exact)
     r.identity()
     r.edge_points(mesh, 1)
     r.centroids(mesh)
     return r.matrix()
 
 
-def _corner_cutting(mesh: Mesh, out: Mesh, scale: float = 0.5):
-    s = float(scale)
-    r = _Rows(mesh.n_vertices)
-    r.per_halfedge(mesh, s, 0.0, 1.0 - s)
+def _corner_cutting(mesh: Mesh, out: Mesh, scale: float = 0.5, *, exact: bool = False):
+    r = _Rows(mesh.n_vertices, exact)
+    s = r.weight(scale)
+    r.per_halfedge(mesh, s, r.weight(0), 1 - s)
     return r.matrix()
 
 
-def _preserve_hexagons(mesh: Mesh, out: Mesh, scale: float = 0.5):
-    s = float(scale)
-    r = _Rows(mesh.n_vertices)
+def _preserve_hexagons(mesh: Mesh, out: Mesh, scale: float = 0.5, *, exact: bool = False):
+    r = _Rows(mesh.n_vertices, exact)
+    s = r.weight(scale)
     r.identity()
-    r.per_halfedge(mesh, s, 0.0, 1.0 - s)
+    r.per_halfedge(mesh, s, r.weight(0), 1 - s)
     return r.matrix()
 
 
-def _honeycomb(mesh: Mesh, out: Mesh):
-    r = _Rows(mesh.n_vertices)
-    third = 1.0 / 3.0
+def _honeycomb(mesh: Mesh, out: Mesh, *, exact: bool = False):
+    r = _Rows(mesh.n_vertices, exact)
+    third = Fraction(1, 3) if exact else 1.0 / 3.0
     r.per_halfedge(mesh, third, third, third)
     return r.matrix()
 
@@ -261,7 +392,7 @@ _RULES: dict[Callable, Callable] = {
     _schemes.corner_cutting: _corner_cutting,
     _schemes.preserve_hexagons: _preserve_hexagons,
     _schemes.honeycomb: _honeycomb,
-    _schemes.dual: lambda mesh, out: dual_matrix(mesh),
+    _schemes.dual: _dual,
 }
 
 #: Names of the registered schemes whose matrix is written from their rules
@@ -435,6 +566,59 @@ def remesh_matrix(mesh: Mesh, scheme, *, probe: bool | None = None, **options):
             )
         return S, out
     return probe_matrix(mesh, lambda m: s(m, **options), out), out
+
+
+def exact_remesh_matrix(mesh: Mesh, scheme, out: Mesh | None = None, **options) -> ExactMatrix:
+    """One remeshing's matrix with exact (rational) weights.
+
+    The rules of :func:`remesh_matrix`, with :class:`~fractions.Fraction`
+    weights: a scale is taken exactly (a float as the binary fraction it is,
+    ``0.75`` as ``3/4``; a :class:`~fractions.Fraction` as itself).
+
+    Parameters
+    ----------
+    mesh : Mesh
+    scheme : str, Scheme or callable
+        A scheme with rules (:data:`RULE_SCHEMES`, or the dual); a probed
+        callable has no exact matrix.
+    out : Mesh, optional
+        ``scheme(mesh, **options)`` when the caller has it (the rules read
+        only the input's connectivity; ``out`` is accepted for symmetry).
+    **options
+        The scheme's options (``scale=Fraction(5, 7)``).
+
+    Returns
+    -------
+    ExactMatrix, shape (out.n_vertices, mesh.n_vertices)
+        Equal, rounded to floats, to :func:`remesh_matrix`'s matrix to
+        rounding (checked by the tests).
+
+    Raises
+    ------
+    ValueError
+        For a scheme without rules.
+    """
+    s = get_scheme(scheme)
+    rule = _rule_of(s)
+    if rule is None:
+        raise ValueError(f"scheme {_name(s)} has no rules here: no exact matrix")
+    if out is None:
+        out = mesh
+    return rule(mesh, out, exact=True, **options)
+
+
+def exact_dual_matrix(mesh: Mesh) -> ExactMatrix:
+    """The dual's matrix with exact weights (``1/n`` for a face of ``n`` sides).
+
+    Parameters
+    ----------
+    mesh : Mesh
+
+    Returns
+    -------
+    ExactMatrix, shape (F, V)
+    """
+    return _dual(mesh, exact=True)
 
 
 def subdivision_matrix(

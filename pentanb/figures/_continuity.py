@@ -1,14 +1,19 @@
-"""The continuity table that the figures ``spectra`` and ``characteristic_maps`` share (private).
+"""The continuity results that the figures ``spectra``, ``characteristic_maps`` and
+``scale`` share (private).
 
 Section 7's open question, answered with subdivision theory by
 :func:`pentanb.analysis.spectral.continuity_table`: every scheme + 2 duals,
-at vertices of valence 3 to 8 and faces of 3 to 8 sides.  Both figures draw
-it and both check claims on it, so :func:`table` computes it once per
-process and keeps it (``functools.lru_cache(maxsize=1)``: one table, about
-6-10 s of one core): ``python -m pentanb figures`` (or ``--only spectra``)
-computes it once for the two drawings and their claims.  It is the only
-thing the figures package keeps between calls; ``table.cache_clear()``
-frees it.
+at vertices of valence 3 to 8 and faces of 3 to 8 sides, the rows of the
+paper's schemes with their leading eigenvalues established in exact
+arithmetic (:func:`pentanb.analysis.spectral.exact_ordering`).  Both
+figures draw it and both check claims on it, so :func:`table` computes it
+once per process and keeps it (``functools.lru_cache(maxsize=1)``: one
+table, about 10-15 s of one core): ``python -m pentanb figures`` (or
+``--only spectra``) computes it once for the two drawings and their
+claims.  Likewise :func:`scale_study` (pentagon preservation's scale, 2, 4
+and 6 duals, about 15-20 s) for the figure ``scale``.  They are the only
+things the figures package keeps between calls; ``table.cache_clear()``
+and ``scale_study.cache_clear()`` free them.
 
 The rows kept are *detached*: their spectra drop the search's context (the
 hierarchy of meshes the neighbourhood was found in, about 300 MB for the
@@ -27,13 +32,22 @@ import dataclasses
 import functools
 from collections.abc import Iterable, Sequence
 
-from ..analysis.spectral import TABLE_CASES, ContinuityRow, continuity_table
+from ..analysis.spectral import (
+    TABLE_CASES,
+    ContinuityRow,
+    ScaleStudy,
+    continuity_table,
+    exact_ordering,
+)
+from ..analysis.spectral import scale_study as _scale_study
 from ..schemes import SCHEMES
 
 __all__ = [
     "SIZES",
     "G1",
+    "PAPER_LABELS",
     "table",
+    "scale_study",
     "detached",
     "rows_of",
     "fate_of",
@@ -48,6 +62,9 @@ SIZES = tuple(range(3, 9))
 
 #: Section 7's words on continuity.
 G1 = "we have visually confirmed that the algorithms converge with G1 continuity."
+
+#: The table labels of the paper's schemes: their rows are established in exact arithmetic.
+PAPER_LABELS = ("pentagonalize", "preserve_pentagons 0.75", "preserve_pentagons 0.5")
 
 
 def detached(row: ContinuityRow) -> ContinuityRow:
@@ -82,11 +99,37 @@ def table() -> tuple[ContinuityRow, ...]:
     tuple of ContinuityRow
         Every scheme of :data:`~pentanb.analysis.spectral.TABLE_CASES` + 2
         duals at every element type of :data:`SIZES`, rows
-        :func:`detached`; kept for the process (``table.cache_clear()``
-        frees them).
+        :func:`detached`; the rows of :data:`PAPER_LABELS` carry their
+        exact ordering (:attr:`~pentanb.analysis.spectral.ContinuityRow.exact`).
+        Kept for the process (``table.cache_clear()`` frees them).
     """
     # case by case, so that one case's search context is held at a time (not 300 MB)
-    return tuple(detached(r) for case in TABLE_CASES for r in continuity_table([case], sizes=SIZES))
+    return tuple(
+        detached(_with_exact(r) if case[0] in PAPER_LABELS else r)
+        for case in TABLE_CASES
+        for r in continuity_table([case], sizes=SIZES)
+    )
+
+
+def _with_exact(row: ContinuityRow) -> ContinuityRow:
+    sp = row.spectrum
+    if sp is None or not sp.stationary or sp._context is None:
+        return row
+    return dataclasses.replace(row, exact=exact_ordering(sp))
+
+
+@functools.lru_cache(maxsize=1)
+def scale_study() -> ScaleStudy:
+    """:func:`~pentanb.analysis.spectral.scale_study` with its defaults, computed once.
+
+    Returns
+    -------
+    ScaleStudy
+        Pentagon preservation with 2, 4 and 6 duals at every element type of
+        :data:`SIZES`, thresholds and the recommended scale established
+        exactly; kept for the process (``scale_study.cache_clear()`` frees it).
+    """
+    return _scale_study(sizes=SIZES)
 
 
 def rows_of(rows: Iterable[ContinuityRow], label: str, kind: str) -> list[ContinuityRow]:

@@ -1,4 +1,4 @@
-"""Beyond the paper: the characteristic maps of the paper's schemes, and what they prove.
+"""Beyond the paper: the characteristic maps of the paper's schemes, and what they show.
 
 Section 7: "we have visually confirmed that the algorithms converge with G1
 continuity. However, there is still a need for theoretical proofs for
@@ -7,28 +7,33 @@ not theoretically validated this observation."
 
 The *characteristic map* of an extraordinary element is the planar map
 spanned by the two subdominant eigenvectors of its local subdivision
-matrix (:func:`pentanb.analysis.spectral.characteristic_map`).  If the
-necessary condition holds (figure ``spectra``) and the map is regular (no
-fold) and injective (one sheet), the limit surface is C1 at the element --
-Reif's sufficient condition (Reif 1995; Peters and Reif 2008), which also
-asks for a real double subdominant eigenvalue and a C1 surface away from
-the element.
+matrix (:func:`pentanb.analysis.spectral.characteristic_map`).  It exists
+only where exactly two eigenvalues lead after the eigenvalue 1 (a real
+double one or a complex pair): where ``lambda1`` is simple there is no
+pair, and where its eigenvector has Fourier mode 0 (the same at the ``k``
+turned copies of every point) no map built on it can be injective.  In
+Reif's standard setting (figure ``spectra``) a regular (no fold) and
+injective (one sheet) map makes the limit surface C1 at the element
+(Reif 1995; Peters and Reif 2008), given a real double subdominant
+eigenvalue and a C1 surface away from the element.
 
 The figure ``characteristic_maps`` draws the maps' control nets two iterations
 down, one row per scheme and kind of element, one panel per valence or
 size (:func:`pentanb.viz.spectra.plot_characteristic_maps`): (A)
 pentagonalization's vertices, (B)-(C) pentagon preservation with scale 0.75
-(vertices, faces), (D)-(E) with scale 0.5, and (F) vertex insertion + 2
-duals, a Catmull-Clark variant, for comparison.  Its claims: the maps are
-regular and injective everywhere except around triangles for scale 0.5 (a
-finding, where the necessary condition fails too); and C1 -- proven by this
-analysis for vertex insertion at every valence, undecided for the paper's
-schemes (pentagonalization's subdominant pair is complex, and neither
-pentagonal scheme is a known C1 spline away from its extraordinary
-elements), so the paper's "need for theoretical proofs" stands.  The table
-is shared with the figure ``spectra``
-(:func:`pentanb.figures._continuity.table`).  Its panels are charts:
-:func:`panels` is empty.
+(vertices, faces), (D)-(E) with scale 0.5 (the triangle has no map), and
+(F) vertex insertion + 2 duals, a Catmull-Clark variant, for comparison.
+Its claims (the paper's, with verdicts): the maps' control nets are regular
+and injective everywhere except around triangles for scale 0.5, where no
+characteristic map exists (the same cause as the spectrum's finding); the
+injectivity is evidence from control nets, not a proof.  An observation
+beyond the paper: C1 by Reif's criterion is established for the control
+at every valence and for no element of the paper's schemes
+(pentagonalization's subdominant pair is complex, and neither pentagonal
+scheme is a known C1 spline away from its extraordinary elements), so the
+paper's "need for theoretical proofs" stands.  The table is shared with
+the figure ``spectra`` (:func:`pentanb.figures._continuity.table`).  Its
+panels are charts: :func:`panels` is empty.
 """
 
 from __future__ import annotations
@@ -39,7 +44,8 @@ from typing import TYPE_CHECKING
 from ..analysis.spectral import KINDS, ContinuityRow
 from ..mesh import Mesh
 from ._continuity import G1, SIZES, key_label, plural, rows_of, scheme_name, sizes_text, table
-from .claim import FAILS, HOLDS, Claim, judged
+from .claim import CLAIM, FAILS, HOLDS, Claim, judged, observed
+from .spectra import READING, cause_of
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -49,8 +55,8 @@ CAPTION = (
     "Section 7: 'there is still a need for theoretical proofs for convergence'. The "
     "characteristic maps (the subdominant eigenvectors of the local subdivision matrix, "
     "two levels down) of the paper's schemes + 2 duals at vertices and faces of 3-8 sides, "
-    "and of vertex insertion + 2 duals for comparison; a regular, injective map with the "
-    "necessary condition is Reif's sufficient condition for C1."
+    "and of vertex insertion + 2 duals for comparison; in Reif's standard setting a regular, "
+    "injective map is his sufficient condition for C1."
 )
 
 #: The claims on the maps, (table label, kind) -> recorded verdict: the paper's
@@ -60,7 +66,7 @@ RECORDED = {
     ("preserve_pentagons 0.75", "vertex"): HOLDS,
     ("preserve_pentagons 0.75", "face"): HOLDS,
     ("preserve_pentagons 0.5", "vertex"): HOLDS,
-    ("preserve_pentagons 0.5", "face"): FAILS,  # a fold around triangles
+    ("preserve_pentagons 0.5", "face"): FAILS,  # no characteristic map around triangles
 }
 #: The paper's schemes (table labels).
 PAPER = tuple(dict.fromkeys(label for label, _ in RECORDED))
@@ -117,6 +123,7 @@ def map_claim(rows: Sequence[ContinuityRow], label: str, kind: str, recorded: st
     Holds when the map's control net is regular and injective
     (:attr:`~pentanb.analysis.spectral.CharacteristicMap.injective`) at every
     size of :data:`~pentanb.figures._continuity.SIZES`; a size without a map
+    (none exists, :attr:`~pentanb.analysis.spectral.ContinuityRow.map_note`)
     does not hold.
 
     Parameters
@@ -126,6 +133,12 @@ def map_claim(rows: Sequence[ContinuityRow], label: str, kind: str, recorded: st
         A table label, e.g. ``"preserve_pentagons 0.5"``.
     kind : {"vertex", "face"}
     recorded : str
+
+    Returns
+    -------
+    Claim
+        Of kind :data:`~pentanb.figures.claim.CLAIM`, with the cause of the
+        spectrum claim of the same scheme and kind.
     """
     by_size = {r.size: r for r in rows_of(rows, label, kind)}
     groups: dict[str, list[int]] = {}
@@ -133,16 +146,19 @@ def map_claim(rows: Sequence[ContinuityRow], label: str, kind: str, recorded: st
     for n in SIZES:
         r = by_size.get(n)
         if r is None or r.char_map is None:
-            note = r.spectrum.note if r is not None and r.spectrum is not None else "no row"
-            text = f"no characteristic map ({note})"
+            if r is not None and r.map_note:
+                text = f"no characteristic map ({r.map_note})"
+            else:
+                note = r.spectrum.note if r is not None and r.spectrum is not None else "no row"
+                text = f"no characteristic map ({note})"
             ok = False
         else:
             iterations = r.char_map.iterations
             text = r.char_map.verdict
             if not r.char_map.injective:
                 ok = False
-            if r.spectrum is not None and not r.spectrum.necessary:
-                text += " (the necessary condition fails there too)"
+            if r.spectrum is not None and not r.spectrum.standard:
+                text += " (outside the standard setting)"
         groups.setdefault(text, []).append(n)
     word = "valence" if kind == "vertex" else "sides"
     every = (
@@ -157,11 +173,17 @@ def map_claim(rows: Sequence[ContinuityRow], label: str, kind: str, recorded: st
         f"{scheme_name(label)}, characteristic map's control net {iterations} levels down at "
         f"{plural(kind)} by {word}: "
         + "; ".join(f"{text} at {sizes_text(ns)}" for text, ns in groups.items()),
-        "numerical evidence for G1 (with the necessary condition), not a proof: holds if the "
-        "net is regular (every face turns the same way) and injective (its boundary winds "
-        f"once around the element) at every {every}",
+        "holds if a characteristic map exists at every "
+        f"{every} and its control net is regular (every face turns the same way) and "
+        "injective (its boundary winds once around the element): evidence from control nets "
+        "for G1, not a proof of the limit map's injectivity; does not hold where no map "
+        "exists (lambda1 simple, or three or more eigenvalues of the subdominant modulus) or "
+        "the net folds",
         HOLDS if ok else FAILS,
         recorded,
+        kind=CLAIM,
+        reading=READING,
+        cause=cause_of(label, kind),
     )
 
 
@@ -182,19 +204,27 @@ def _c1_text(rows: Sequence[ContinuityRow], label: str) -> tuple[str, list[str]]
 
 
 def c1_claim(rows: Sequence[ContinuityRow], recorded: str = HOLDS) -> Claim:
-    """Sections 2 and 7: no theoretical proof yet; is C1 proven for the paper's schemes?
+    """Beyond Sections 2 and 7: is C1 established by Reif's criterion, and where?
 
-    Holds when the analysis proves C1 (:attr:`~pentanb.analysis.spectral.
+    An observation (no verdict on the paper): the property stated is that
+    the analysis establishes C1 (:attr:`~pentanb.analysis.spectral.
     ContinuityRow.c1` is "yes") for the control, :data:`CONTROL`, at every
-    valence of :data:`~pentanb.figures._continuity.SIZES`, and at no element
-    of the paper's schemes (:data:`PAPER`): the proof the paper asks for is
-    still missing.  Without the control the claim could hold on an analysis
-    that proves nothing.
+    valence of :data:`~pentanb.figures._continuity.SIZES`, and at no
+    element of the paper's schemes (:data:`PAPER`) -- the proof the paper
+    asks for is not supplied here.  The control keeps the observation from
+    being seen on an analysis that proves nothing.
 
     Parameters
     ----------
     rows : sequence of ContinuityRow
     recorded : str
+        :data:`~pentanb.figures.claim.HOLDS` when the property was seen when
+        the observation was written.
+
+    Returns
+    -------
+    Claim
+        Of kind :data:`~pentanb.figures.claim.OBSERVATION`.
     """
     texts, proven = [], []
     for label in PAPER:
@@ -209,18 +239,18 @@ def c1_claim(rows: Sequence[ContinuityRow], recorded: str = HOLDS) -> Claim:
         + f" | control, a bicubic spline away from its extraordinary vertices: {control}"
     )
     if proven:
-        measured += "; proven for the paper's schemes at " + ", ".join(proven)
-    return judged(
+        measured += "; established for the paper's schemes at " + ", ".join(proven)
+    return observed(
         "characteristic_maps.c1",
         "Section 2 (main results); Section 7",
         f"{SECTION2} [...] {PROOFS}",
         measured,
-        "holds if the analysis proves C1 (necessary condition, a real double subdominant "
-        "eigenvalue, a regular and injective characteristic map, a C1 spline away from the "
-        f"element) for the control at every valence {SIZES[0]}-{SIZES[-1]} and at no element "
-        "of the paper's schemes: the theoretical proof is still missing",
-        HOLDS if control_yes == SIZES and not proven else FAILS,
-        recorded,
+        "Reif's criterion (the standard setting, a real double subdominant eigenvalue, a "
+        "regular and injective characteristic map, a C1 spline away from the element) "
+        f"establishes C1 for the control at every valence {SIZES[0]}-{SIZES[-1]} and at no "
+        "element of the paper's schemes",
+        control_yes == SIZES and not proven,
+        recorded == HOLDS,
     )
 
 

@@ -41,6 +41,7 @@ from . import (
     fig13,
     formulas,
     lateral,
+    scale,
     section4,
     spectra,
 )
@@ -132,6 +133,7 @@ FIGURES: dict[str, FigureSpec] = {
     "convergence": _spec("convergence", convergence),
     "spectra": _spec("spectra", spectra),
     "characteristic_maps": _spec("characteristic_maps", characteristic_maps),
+    "scale": _spec("scale", scale),
 }
 
 

@@ -10,7 +10,10 @@ proofs for convergence."  The drawings here show what
   sides (``figures/spectra.png``);
 * :func:`plot_characteristic_maps` -- the characteristic maps of the
   paper's schemes (and of vertex insertion for comparison), each with its
-  verdict (``figures/characteristic_maps.png``);
+  verdict, or why none exists (``figures/characteristic_maps.png``);
+* :func:`plot_scale` -- pentagon preservation's leading eigenvalues against
+  its scale, with 2, 4 and 6 duals (``figures/scale.png``), and
+  :func:`plot_scale_family` for one element (a slider in the notebook);
 * :func:`plot_subdivision_matrix` -- a local (or global) subdivision matrix
   as a picture of its weights (the notebook ``09_continuity``);
 * :func:`plot_eigenvalues` and :func:`draw_characteristic_map` -- one case,
@@ -37,12 +40,16 @@ from ..analysis.spectral import (
     CharacteristicMap,
     ContinuityRow,
     LocalSpectrum,
+    ScaleFamily,
+    ScaleStudy,
     continuity_table,
 )
 
 __all__ = [
     "plot_spectra",
     "plot_characteristic_maps",
+    "plot_scale",
+    "plot_scale_family",
     "plot_subdivision_matrix",
     "plot_eigenvalues",
     "draw_characteristic_map",
@@ -108,7 +115,7 @@ def plot_spectra(
     Figure
         Vertices (blue circles) and faces (orange squares) of each size; the
         subdominant pair filled, the next ones smaller and hollow; a red
-        cross where the necessary condition ``|lambda1| = |lambda2| >
+        cross where Reif's standard setting ``|lambda1| = |lambda2| >
         |lambda3|`` fails, a ring where the subdominant pair is complex.
     """
     rows = _rows(rows)
@@ -138,7 +145,7 @@ def plot_spectra(
                         ls="none",
                         alpha=1.0 if j < 2 else 0.7,
                     )
-                if not r.spectrum.necessary:
+                if not r.spectrum.standard:
                     ax.plot([x], [m[0]], marker="x", ms=11, mew=2, color="#CC0000", ls="none")
                 elif r.spectrum.subdominant_complex:
                     ax.plot([x], [m[0]], marker="o", ms=12, mfc="none", mec="#555555", ls="none")
@@ -158,7 +165,7 @@ def plot_spectra(
         ax.set_ylabel("|λ| per step")
     fig.suptitle(
         "Leading eigenvalue moduli |λ1| ≥ |λ2| ≥ |λ3| ≥ |λ4| (filled: subdominant pair; "
-        "× necessary condition fails; ○ complex pair)",
+        "× standard setting fails; ○ complex pair)",
         fontsize=10,
     )
     return fig
@@ -250,7 +257,9 @@ def plot_characteristic_maps(
     lines = []
     for label in labels:
         for kind in ("vertex", "face"):
-            sel = [r for r in _stationary(rows, label, kind) if r.char_map is not None]
+            sel = [
+                r for r in _stationary(rows, label, kind) if r.char_map is not None or r.map_note
+            ]
             if sel:
                 lines.append((label, kind, sel))
     ncol = max((len(sel) for _, _, sel in lines), default=1)
@@ -265,10 +274,14 @@ def plot_characteristic_maps(
                 continue
             cm = sel[j].char_map
             head = f"{kind} {sel[j].size}"
+            title = f"{_letter(i)} {head}" if j == 0 else head
+            if cm is None:
+                _no_map(ax, sel[j], title)
+                continue
             draw_characteristic_map(
                 ax,
                 cm,
-                title=f"{_letter(i)} {head}" if j == 0 else head,
+                title=title,
                 antialiased=False,  # 36 nets of ~200 faces: 0.3 MB instead of 1.25 MB
                 edgecolor="#5A7D96",
             )
@@ -276,10 +289,29 @@ def plot_characteristic_maps(
             ax.set_xlabel(cm.verdict, fontsize=6.5, color="black" if cm.injective else "#CC0000")
         axes[i, 0].set_ylabel(f"{label}\n{_plural(kind)}", fontsize=7)
     fig.suptitle(
-        "Characteristic maps (subdominant eigenvectors, 2 levels down); red: folded faces",
+        "Characteristic maps (subdominant eigenvectors, 2 levels down); red: folded faces "
+        "or no map",
         fontsize=9,
     )
     return fig
+
+
+def _no_map(ax, row: ContinuityRow, title: str) -> None:
+    """An empty panel saying why the element has no characteristic map."""
+    ax.set_xticks([])
+    ax.set_yticks([])
+    ax.set_aspect("equal")
+    ax.set_title(title, fontsize=7)
+    sp = row.spectrum
+    mode = int(sp.modes[1]) if sp is not None and sp.modes.size > 1 else -1
+    if sp is not None and sp.subdominant_count == 1:
+        text = "λ1 simple" + (f"\n(mode {mode})" if mode >= 0 else "")
+    elif sp is not None and sp.subdominant_count >= 3:
+        text = f"{sp.subdominant_count} eigenvalues\nof one modulus"
+    else:
+        text = "no map"
+    ax.text(0.5, 0.5, text, ha="center", va="center", fontsize=7, color="#CC0000")
+    ax.set_xlabel("no characteristic map", fontsize=6.5, color="#CC0000")
 
 
 # ---------------------------------------------------------------------------
@@ -315,10 +347,10 @@ def plot_eigenvalues(spectrum: LocalSpectrum, ax=None, n: int = 12) -> Figure:
         r = float(np.abs(z[1]))
         ax.plot(r * np.cos(t), r * np.sin(t), ":", color="#0072B2", lw=0.8)
         ax.legend(fontsize=7, loc="upper left")
-        reason = spectrum.necessary_reason
+        reason = spectrum.standard_reason
         ax.set_title(
             f"{spectrum.scheme} {spectrum.kind} {spectrum.size}: |λ1| = {np.abs(z[1]):.4f}\n"
-            + ("necessary condition holds" if not reason else f"fails: {reason}"),
+            + ("standard setting holds" if not reason else f"fails: {reason}"),
             fontsize=8,
         )
     else:
@@ -360,4 +392,172 @@ def plot_subdivision_matrix(matrix, ax=None, *, title: str = "", log: bool = Tru
     ax.set_xlabel(f"old vertices ({A.shape[1]})")
     ax.set_ylabel(f"new vertices ({A.shape[0]})")
     ax.set_title(title or f"{A.shape[0]} x {A.shape[1]}, {int((A != 0).sum())} weights", fontsize=9)
+    return fig
+
+
+# ---------------------------------------------------------------------------
+# figures/scale.png: pentagon preservation's scale
+# ---------------------------------------------------------------------------
+
+_SIZE_COLORS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
+
+
+def plot_scale(study: ScaleStudy, duals: Sequence[int] = (2, 4, 6)) -> Figure:
+    """Pentagon preservation's leading eigenvalue moduli against the scale.
+
+    Parameters
+    ----------
+    study : ScaleStudy
+        From :func:`pentanb.analysis.spectral.scale_study`.
+    duals : sequence of int
+        One row of panels per number of duals.
+
+    Returns
+    -------
+    Figure
+        One row per number of duals, faces left and vertices right, lettered
+        (A), (B), ...: ``|lambda1|`` (solid) and ``|lambda3|`` (dashed) per
+        step for every size; Reif's standard setting ``|lambda1| = |lambda2|
+        > |lambda3|`` holds where the solid line lies above the dashed one of
+        its colour, and fails where the solid line is overdrawn in red; the
+        thresholds (red), the package's default 0.75 (grey) and the
+        recommended scale (green) marked; each panel's title gives every
+        size's status.
+    """
+    g = study.grid
+    sizes = sorted({key[2] for key in study.moduli})
+    fig = Figure(figsize=(10.0, 2.9 * len(duals) + 0.6), layout="constrained")
+    axes = fig.subplots(len(duals), 2, squeeze=False, sharex=True)
+    letter = 0
+    for i, d in enumerate(duals):
+        for j, kind in enumerate(("face", "vertex")):
+            ax = axes[i, j]
+            statuses: dict[str, list[int]] = {}
+            handles = {}
+            # the largest sizes first, so the triangle's lines are drawn on top
+            for c, n in reversed(list(enumerate(sizes))):
+                key = (d, kind, n)
+                if key not in study.moduli:
+                    continue
+                m = study.moduli[key]
+                color = _SIZE_COLORS[c % len(_SIZE_COLORS)]
+                (handles[n],) = ax.plot(g, m[:, 0], color=color, lw=1.2, label=f"{n}")
+                ax.plot(g, m[:, 2], color=color, lw=0.9, ls="--")
+                bad = ~study.standard[key]
+                if bad.any():
+                    ax.plot(g, np.where(bad, m[:, 0], np.nan), color="#CC0000", lw=3.5, alpha=0.35)
+                th = study.thresholds[key]
+                statuses.setdefault(th.text, []).append(n)
+                if th.value is not None:
+                    ax.axvline(float(th.value), color="#CC0000", lw=0.8)
+                    ax.annotate(
+                        f"{kind} {n}: s = {th.value}",
+                        (float(th.value), 0.02),
+                        xycoords=("data", "axes fraction"),
+                        fontsize=7,
+                        color="#CC0000",
+                        ha="right",
+                        rotation=90,
+                        va="bottom",
+                    )
+            ax.axvline(0.75, color="#888888", lw=0.8, ls=":")
+            if d == study.recommended_duals:
+                ax.axvline(float(study.recommended), color="#009E73", lw=1.0)
+            what = "; ".join(
+                f"{_sizes(sorted(ns))}: {text}"
+                for text, ns in sorted(statuses.items(), key=lambda kv: min(kv[1]))
+            )
+            ax.set_title(f"{_letter(letter)} {_plural(kind)}, {d} duals -- {what}", fontsize=8)
+            letter += 1
+            ax.set_xlim(0, 1)
+            ax.set_ylim(bottom=0)
+            ax.grid(alpha=0.3)
+            ax.legend(
+                [handles[n] for n in sorted(handles)],
+                [str(n) for n in sorted(handles)],
+                title="sides" if kind == "face" else "valence",
+                fontsize=6,
+                title_fontsize=6,
+                ncol=2,
+                loc="upper left",
+            )
+    for ax in axes[-1]:
+        ax.set_xlabel("scale s")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("|λ| per step")
+    fig.suptitle(
+        "Pentagon preservation: |λ1| (solid) and |λ3| (dashed) against the scale; red: the "
+        f"standard setting fails; grey: 0.75; green: recommended {study.recommended} "
+        f"({study.recommended_duals} duals)",
+        fontsize=9,
+    )
+    return fig
+
+
+def _sizes(ns: list[int]) -> str:
+    """``[3, 4, 5, 7]`` -> ``"3-5, 7"``."""
+    out, run = [], [ns[0]]
+    for n in ns[1:]:
+        if n == run[-1] + 1:
+            run.append(n)
+        else:
+            out.append(run)
+            run = [n]
+    out.append(run)
+    return ", ".join(f"{r[0]}-{r[-1]}" if len(r) > 1 else str(r[0]) for r in out)
+
+
+def plot_scale_family(fam: ScaleFamily, s: float | None = None, ax=None, n: int = 4) -> Figure:
+    """The leading eigenvalue moduli of one element against the scale, by Fourier mode.
+
+    Parameters
+    ----------
+    fam : ScaleFamily
+        From :func:`pentanb.analysis.spectral.scale_family`.
+    s : float, optional
+        A scale to mark (a slider's value).
+    ax : matplotlib axis, optional
+    n : int
+        How many eigenvalues after the eigenvalue 1 to draw.
+
+    Returns
+    -------
+    Figure
+    """
+    if ax is None:
+        fig = Figure(figsize=(5.2, 3.6), layout="constrained")
+        ax = fig.add_subplot()
+    else:
+        fig = ax.figure
+    g = np.linspace(0.005, 0.995, 199)
+    m, _ = fam.moduli_grid(g)
+    for i in range(1, 1 + n):
+        ax.plot(g, m[:, i], lw=1.4 if i <= 2 else 0.9, ls="-" if i <= 2 else "--", label=f"|λ{i}|")
+    bad = ~fam.standard_grid(g)
+    if bad.any():
+        ax.fill_between(
+            g,
+            0,
+            1,
+            where=bad,
+            color="#CC0000",
+            alpha=0.08,
+            lw=0,
+            transform=ax.get_xaxis_transform(),
+        )
+    if s is not None:
+        ax.axvline(float(s), color="black", lw=0.8)
+        ms, md = fam.moduli(float(s))
+        ax.set_title(
+            f"{fam.kind} {fam.size}, {fam.duals} duals, s = {float(s):.3f}: |λ1..3| = "
+            + ", ".join(f"{x:.4f} (mode {w})" for x, w in zip(ms[1:4], md[1:4]))
+            + ("" if fam.standard(float(s)) else "\nstandard setting fails"),
+            fontsize=7,
+        )
+    ax.set_xlim(0, 1)
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel("scale s")
+    ax.set_ylabel("|λ| per step")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
     return fig
