@@ -495,7 +495,7 @@ def planarity(mesh: Mesh) -> float:
     """The largest distance of a corner from its face's best-fit plane,
     over the mesh's mean edge length (0 when every face is planar).
 
-    The measure of issue 10: the paper's meshes after two duals (Figures 1B,
+    The meshes of the paper's figures after two duals (Figures 1B,
     9A, 12B) are 6-15 % of an edge length off; canonical positions
     (:func:`pentanb.canonical`) and :func:`pentanb.planarize` bring it to
     rounding level.
