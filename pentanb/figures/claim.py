@@ -621,8 +621,8 @@ def region_claim(
 
     A claim (``kind`` :data:`CLAIM`) holds when all three are 0 to rounding
     at every step; holds within tolerance when at the first step each is at
-    most :data:`REGION_TOLERANCE` and no later step is further from the tile
-    than the first (the duals approach it); does not hold otherwise.  An
+    most :data:`REGION_TOLERANCE` and no later step has a larger one (the
+    duals do not take the regions away from it); does not hold otherwise.  An
     observation (``kind`` :data:`OBSERVATION`) states that the regions are
     further than :data:`REGION_TOLERANCE` from the flat tile at every step.
 
@@ -697,7 +697,7 @@ def region_claim(
         "; ".join(parts),
         f"{tile_text}; holds if the angle spread and planarity are 0 and the mean angles "
         f"the tile's (to rounding) at every step; within tolerance if at the first step each "
-        f"is within {REGION_TOLERANCE:.0%} and no later step is further from the tile",
+        f"is within {REGION_TOLERANCE:.0%} and no later step has a larger one",
         verdict,
         recorded,
         kind=kind,
