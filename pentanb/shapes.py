@@ -1,6 +1,7 @@
 """Test shapes: the Platonic solids, boxes, tori, higher genus and two low-poly rabbits.
 
-Every function returns a closed, outward-oriented :class:`~pentanb.Mesh`.
+Every function returns a closed, outward-oriented :class:`~pentanb.Mesh`,
+but :func:`open_disk`, a surface with boundary (not in :data:`SHAPES`).
 :data:`SHAPES` lists them by name (with their default sizes) for sliders,
 the command line and the tests; :func:`get` builds one by name.
 """
@@ -14,7 +15,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .memory import default_max_bytes, mesh_bytes
-from .mesh import Mesh, MeshError
+from .mesh import Mesh, MeshError, check_closed
 from .schemes.smoothing import dual
 
 __all__ = [
@@ -33,6 +34,7 @@ __all__ = [
     "box",
     "rabbit",
     "animal",
+    "open_disk",
     "outward",
     "SHAPES",
     "get",
@@ -72,7 +74,7 @@ def outward(vertices: ArrayLike, faces: Iterable[ArrayLike]) -> Mesh:
         p = v[f]
         normal = np.cross(p[1] - p[0], p[2] - p[0])
         out.append(f if normal @ (p.mean(axis=0) - c) > 0 else f[::-1])
-    return Mesh(v, out)
+    return check_closed(Mesh(v, out), "outward")
 
 
 def tetrahedron() -> Mesh:
@@ -510,6 +512,29 @@ def rabbit() -> Mesh:
     from .io import read_obj
 
     with resources.as_file(resources.files("pentanb.data") / "rabbit.obj") as path:
+        return read_obj(path)
+
+
+def open_disk() -> Mesh:
+    """A small open model: a domed disk with two holes (a surface with boundary).
+
+    147 vertices, 300 edges and 152 faces (72 triangles, 68 quadrilaterals,
+    12 pentagons), genus 0 with three boundary loops (the rim, 30 edges, and
+    two holes of 11), so ``V - E + F = 2 - 2g - b = -1``; it lies on a
+    sphere of radius 1.4 over the unit disk, its normals up.  Built by
+    :mod:`pentanb.data.make_open_disk` and shipped as
+    ``pentanb/data/open_disk.obj`` (read here with numpy only).
+
+    Returns
+    -------
+    Mesh
+        An open mesh: ``open_disk().boundary_loops`` has three loops.
+    """
+    from importlib import resources
+
+    from .io import read_obj
+
+    with resources.as_file(resources.files("pentanb.data") / "open_disk.obj") as path:
         return read_obj(path)
 
 

@@ -12,6 +12,8 @@ over the face lists), so that a test can fail.
 
 from __future__ import annotations
 
+import itertools
+import math
 import pickle
 
 import numpy as np
@@ -359,3 +361,565 @@ def test_loop_order_names_the_vertex_two_boundary_fans_share():
     assert bad == 0 and loops.size == 0
     loops, offsets, bad = loop_order(tail[:3], head[:3], np.arange(3), 5)
     assert bad == -1 and loops.tolist() == [0, 1, 2] and offsets.tolist() == [0, 3]
+
+
+# ================================================================= 2. the schemes on open meshes
+SCHEME_NAMES = list(pb.SCHEMES)
+SMALL_OPEN = ["grid 3x2", "one pentagon", "annulus", "torus without three faces"]
+#: the flat ones, to check that no face is folded
+FLAT = {"grid 3x2": lambda: grid(3, 2), "one pentagon": OPEN["one pentagon"]}
+
+
+def open_counts(m: Mesh) -> tuple[int, int, int, int, int]:
+    """(V, E, F, B, C): vertices, edges, faces, boundary edges, corners."""
+    C = len(pb.schemes.boundary_corners(m))
+    return m.n_vertices, m.n_edges, m.n_faces, m.n_boundary_edges, C
+
+
+def check_open_valid(out: Mesh) -> None:
+    """An operator's open output is a valid mesh whose arrays are the references'."""
+    rebuilt = Mesh(out.vertices, face_lists(out))  # validates (raises when invalid)
+    twin, loops, rings = reference(out)
+    assert out.twin.tolist() == twin
+    assert [x.tolist() for x in out.boundary_loops] == loops
+    ring, off = out.vertex_ring
+    assert [ring[off[v] : off[v + 1]].tolist() for v in range(out.n_vertices)] == rings
+    for name in ("halfedge_edge", "edges", "valences", "is_boundary_vertex"):
+        assert np.array_equal(getattr(out, name), getattr(rebuilt, name)), name
+
+
+@pytest.mark.parametrize("scheme", SCHEME_NAMES + ["dual"])
+@pytest.mark.parametrize("name", SMALL_OPEN)
+def test_every_scheme_and_the_dual_give_valid_open_meshes_with_the_predicted_counts(name, scheme):
+    m = OPEN[name]()
+    counts = open_counts(m)
+    if scheme == "dual":
+        steps = [pb.dual(m)]
+        steps.append(pb.dual(steps[0]))
+        predicted = [pb.schemes.registry.dual_counts(*counts)]
+        predicted.append(pb.schemes.registry.dual_counts(*predicted[0]))
+    else:
+        out = pb.SCHEMES[scheme](m)
+        steps = [out, pb.dual(out), pb.dual(pb.dual(out))]
+        predicted = pb.schemes.registry.open_counts_after(counts, scheme, 1, 2)
+    for out, expect in zip(steps, predicted):
+        check_open_valid(out)
+        got = open_counts(out)
+        if scheme == "triangulate" and out is steps[0]:  # exact without triangles only
+            assert all(g <= e for g, e in zip(got[:3], expect)) and got[3] == expect[3]
+        elif scheme != "triangulate":
+            assert got == expect
+        assert out.n_boundary_loops == m.n_boundary_loops
+        assert (out.genus, out.n_components) == (m.genus, m.n_components)
+
+
+def _loop_points(m: Mesh) -> list[np.ndarray]:
+    return [m.vertices[m.corners[loop]] for loop in m.boundary_loops]
+
+
+def _turned(points: np.ndarray, start: np.ndarray) -> np.ndarray:
+    """The cyclic point sequence turned to begin at its point nearest ``start``."""
+    at = int(np.argmin(np.linalg.norm(points - start, axis=1)))
+    return np.roll(points, -at, axis=0)
+
+
+#: schemes that keep the old vertices: every boundary edge of the input becomes
+#: this many, at these fractions of its length
+SPLIT = {
+    "pentagonalize": 3,
+    "preserve_pentagons": 2,
+    "loop_remesh": 2,
+    "vertex_insertion": 2,
+    "preserve_hexagons": 3,
+    "triangulate": 1,
+    "sqrt3_remesh": 1,
+}
+
+
+@pytest.mark.parametrize("scheme", list(SPLIT))
+@pytest.mark.parametrize("name", ["annulus", "torus without three faces", "one pentagon"])
+def test_the_boundary_of_a_remeshing_is_the_inputs_refined(name, scheme):
+    m = OPEN[name]()
+    out = pb.SCHEMES[scheme](m)
+    k = SPLIT[scheme]
+    t = np.arange(k)[:, None, None] / k
+    for before, after in zip(_loop_points(m), _loop_points(out)):
+        refined = (1 - t) * before + t * np.roll(before, -1, axis=0)  # (k, b, 3)
+        refined = refined.transpose(1, 0, 2).reshape(-1, 3)
+        assert np.allclose(_turned(after, before[0]), refined, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("op", [pb.dual, pb.honeycomb])
+def test_the_dual_and_honeycomb_close_the_boundary_through_its_midpoints(op):
+    m = OPEN["torus without three faces"]()  # (no corner: every boundary vertex has 2 faces)
+    assert len(pb.schemes.boundary_corners(m)) == 0
+    out = op(m)
+    for before, after in zip(_loop_points(m), _loop_points(out)):
+        mids = 0.5 * before + 0.5 * np.roll(before, -1, axis=0)
+        assert np.array_equal(_turned(after, mids[0]), mids)
+
+
+def test_corner_cutting_cuts_the_boundary_as_chaikin_does():
+    m = OPEN["annulus"]()
+    for scale, near in ((0.5, 0.25), (0.8, 0.1)):
+        out = pb.corner_cutting(m, scale=scale)
+        for before, after in zip(_loop_points(m), _loop_points(out)):
+            nxt = np.roll(before, -1, axis=0)
+            cut = np.stack([(1 - near) * before + near * nxt, near * before + (1 - near) * nxt], 1)
+            assert np.allclose(_turned(after, cut[0, 0]), cut.reshape(-1, 3), atol=1e-12)
+
+
+#: what folds faces near the boundary of a flat patch within three iterations:
+#: triangulate and sqrt(3) give a corner a second face, so the dual cuts it off
+#: (then the faces next to the cut fold, as when Catmull-Clark cuts a corner);
+#: honeycomb with one dual makes long thin triangles along the boundary
+FOLDS = {("triangulate", 1), ("triangulate", 2), ("sqrt3_remesh", 1), ("sqrt3_remesh", 2)}
+FOLDS |= {("honeycomb", 1)}
+
+
+@pytest.mark.parametrize(
+    "scheme, duals",
+    [
+        pytest.param(
+            s, d, marks=[pytest.mark.xfail(strict=True, reason="folds")] if (s, d) in FOLDS else []
+        )
+        for s in SCHEME_NAMES
+        for d in (0, 1, 2)
+    ],
+)
+@pytest.mark.parametrize("name", list(FLAT))
+def test_no_face_of_a_flat_patch_folds_iteration_after_iteration(name, scheme, duals):
+    m = FLAT[name]()
+    for _ in range(3):
+        m = pb.subdivide(m, scheme, iterations=1, duals=duals)
+        assert np.allclose(m.face_normals, [0, 0, 1], atol=1e-9), scheme
+
+
+def test_pentagonalize_gives_pentagons_and_two_duals_line_the_boundary_with_quads():
+    m = OPEN["annulus"]()
+    out = pb.pentagonalize(m)
+    assert out.face_size_histogram() == {5: m.n_halfedges}
+    smooth = pb.smooth(out, duals=2)
+    # the faces of the boundary's midpoints are quads: one per boundary edge
+    assert smooth.face_size_histogram() == {4: out.n_boundary_edges, 5: out.n_faces}
+
+
+def test_corners_are_the_sharp_one_face_vertices_and_stay_where_they_are():
+    m = grid(3, 2)
+    square = {(0.0, 0.0), (3.0, 0.0), (0.0, 2.0), (3.0, 2.0)}
+    assert {tuple(m.vertices[v, :2]) for v in pb.schemes.boundary_corners(m)} == square
+    # pentagonalization's point at two thirds of a boundary edge has one face but
+    # lies on a straight boundary: no corner
+    p = pb.pentagonalize(m)
+    assert (p.valences[p.is_boundary_vertex] == 2).sum() == m.n_boundary_edges + 4
+    assert {tuple(p.vertices[v, :2]) for v in pb.schemes.boundary_corners(p)} == square
+    for scheme in ("pentagonalize", "preserve_pentagons", "corner_cutting", "honeycomb"):
+        out = pb.subdivide(m, scheme, iterations=2, duals=2)
+        corners = pb.schemes.boundary_corners(out)
+        assert {tuple(out.vertices[v, :2]) for v in corners} == square, scheme
+        # the boundary stays on the square's sides
+        rim = out.vertices[out.is_boundary_vertex]
+        on_side = np.isclose(rim[:, 0], 0) | np.isclose(rim[:, 0], 3)
+        on_side |= np.isclose(rim[:, 1], 0) | np.isclose(rim[:, 1], 2)
+        assert on_side.all(), scheme
+
+
+def test_a_vertex_of_one_face_turning_less_than_the_corner_angle_is_cut_off():
+    n = 16  # a regular 16-gon: the boundary turns by 22.5 degrees at every vertex
+    t = 2 * np.pi * np.arange(n) / n
+    m = Mesh(np.stack([np.cos(t), np.sin(t), 0 * t], 1), [list(range(n))])
+    assert len(pb.schemes.boundary_corners(m)) == 0
+    assert pb.dual(m).n_vertices == 1 + n  # the centroid and the midpoints
+    t = 2 * np.pi * np.arange(5) / 5  # a pentagon turns by 72 degrees: five corners
+    m = Mesh(np.stack([np.cos(t), np.sin(t), 0 * t], 1), [list(range(5))])
+    assert pb.schemes.boundary_corners(m).tolist() == [0, 1, 2, 3, 4]
+    assert pb.dual(m).n_vertices == 1 + 5 + 5
+
+
+# ====================================================================== 3. measured properties
+def tilted_patch() -> tuple[Mesh, np.ndarray, np.ndarray]:
+    """A jittered 4 x 3 grid of quads with one square split into two triangles, laid
+    in the plane through ``origin`` with unit normal ``normal``."""
+    m = grid(4, 3)
+    rng = np.random.default_rng(5)
+    uv = m.vertices[:, :2] + rng.uniform(-0.2, 0.2, (m.n_vertices, 2))
+    normal = np.array([1.0, 2.0, 3.0]) / np.sqrt(14.0)
+    e1 = np.cross(normal, [0.0, 0.0, 1.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(normal, e1)
+    origin = np.array([0.3, -1.2, 2.5])
+    faces = face_lists(m)
+    a, b, c, d = faces.pop(5)
+    faces += [[a, b, c], [a, c, d]]
+    return Mesh(origin + uv[:, :1] * e1 + uv[:, 1:] * e2, faces), origin, normal
+
+
+@pytest.mark.parametrize("scheme", SCHEME_NAMES)
+def test_a_flat_patch_stays_in_its_plane(scheme):
+    m, origin, normal = tilted_patch()
+    assert np.abs((m.vertices - origin) @ normal).max() < 1e-14
+    out = pb.subdivide(m, scheme, iterations=2, duals=2)
+    assert np.abs((out.vertices - origin) @ normal).max() < 1e-12
+    assert not out.is_closed and out.n_boundary_loops == 1
+
+
+def test_a_flat_patch_stays_in_its_plane_fails_on_a_bent_patch():
+    m, origin, normal = tilted_patch()
+    bent = m.with_vertices(m.vertices + 1e-6 * normal * (np.arange(m.n_vertices) == 7)[:, None])
+    out = pb.subdivide(bent, "pentagonalize", iterations=1, duals=2)
+    assert np.abs((out.vertices - origin) @ normal).max() > 1e-8
+
+
+# ---------------------------------------------------------------------- the boundary's curve scheme
+def refine(p: np.ndarray, k: int) -> np.ndarray:
+    """A closed polygon with its edges cut in k equal parts (k - 1 new points each)."""
+    nxt = np.roll(p, -1, axis=0)
+    return np.stack([(1 - j / k) * p + (j / k) * nxt for j in range(k)], 1).reshape(-1, 3)
+
+
+def average(p: np.ndarray) -> np.ndarray:
+    """The polygon of the midpoints of a closed polygon's edges (the open dual's rule)."""
+    return 0.5 * p + 0.5 * np.roll(p, -1, axis=0)
+
+
+def curve_step(p: np.ndarray, k: int) -> np.ndarray:
+    """One iteration with two duals, on the boundary alone: cut, then average twice."""
+    return average(average(refine(p, k)))
+
+
+def turning_angles(p: np.ndarray) -> np.ndarray:
+    """(b,) signed turning angle (degrees, + to the left seen from +z) at every vertex
+    of a closed plane polygon."""
+    a = np.roll(p, -1, axis=0) - p
+    b = np.roll(a, 1, axis=0)
+    cross = b[:, 0] * a[:, 1] - b[:, 1] * a[:, 0]
+    return np.degrees(np.arctan2(cross, np.einsum("ij,ij->i", a, b)))
+
+
+def heptagon_disk() -> Mesh:
+    """A lopsided convex heptagon cut into seven triangles round an inner point:
+    every boundary vertex has two faces (no corner); it turns by up to 102.5 degrees."""
+    t = np.radians([5, 15, 100, 220, 230, 290, 330])
+    v = np.concatenate([[[0.1, -0.05, 0.0]], np.stack([np.cos(t), np.sin(t), 0 * t], 1)])
+    return Mesh(v, [[0, 1 + i, 1 + (i + 1) % 7] for i in range(7)])
+
+
+CUT = {"pentagonalize": 3, "preserve_pentagons": 2}
+
+
+@pytest.mark.parametrize("scheme", list(CUT))
+def test_the_boundary_follows_its_curve_scheme_on_the_mesh(scheme):
+    m = heptagon_disk()
+    (p,) = _loop_points(m)
+    for _ in range(3):
+        m = pb.subdivide(m, scheme, iterations=1, duals=2)
+        p = curve_step(p, CUT[scheme])
+        (q,) = _loop_points(m)
+        assert np.allclose(_turned(q, p[0]), p, rtol=0, atol=1e-12)
+        assert (m.vertices[:, 2] == 0).all()
+
+
+def test_preserve_pentagons_with_two_duals_is_cubic_bspline_subdivision_on_the_boundary():
+    (p,) = _loop_points(heptagon_disk())
+    q = curve_step(p, 2)
+    nxt, prv = np.roll(p, -1, axis=0), np.roll(p, 1, axis=0)
+    edge = (p + nxt) / 2
+    vertex = (prv + 6 * p + nxt) / 8
+    bspline = np.stack([edge, np.roll(vertex, -1, axis=0)], 1).reshape(-1, 3)
+    assert np.allclose(_turned(q, bspline[0]), bspline, atol=1e-15)
+    # and not Chaikin's (quadratic B-spline) rules
+    chaikin = np.stack([0.75 * p + 0.25 * nxt, 0.25 * p + 0.75 * nxt], 1).reshape(-1, 3)
+    assert not np.allclose(_turned(q, chaikin[0]), chaikin, atol=1e-3)
+
+
+def test_pentagonalize_with_two_duals_is_a_ternary_scheme_of_mask_1_4_8_10_8_4_1_on_the_boundary():
+    (p,) = _loop_points(heptagon_disk())
+    q = curve_step(p, 3)
+    up = np.zeros((3 * len(p), 3))
+    up[::3] = p
+    mask = np.array([1, 4, 8, 10, 8, 4, 1]) / 12
+    conv = sum(w * np.roll(up, k, axis=0) for k, w in enumerate(mask))
+    assert np.allclose(_turned(conv, q[0]), q, atol=1e-15)
+    # every new point an affine combination: the mask's three phases sum to 1
+    assert [mask[r::3].sum() for r in range(3)] == pytest.approx([1, 1, 1])
+
+
+#: the largest turning angle (degrees) of the heptagon disk's boundary, iteration
+#: by iteration (two duals each), measured on the boundary's curve scheme
+TURNS = {
+    "pentagonalize": [102.5, 62.76, 33.53, 17.07, 8.571, 4.290, 2.146, 1.073, 0.537],
+    "preserve_pentagons": [102.5, 74.50, 40.64, 20.78, 10.81, 5.418, 2.716, 1.358, 0.679],
+}
+
+
+@pytest.mark.parametrize("scheme", list(CUT))
+def test_a_disk_boundary_stays_convex_and_turns_less_each_iteration_under_1_degree_after_8(
+    scheme,
+):
+    (p,) = _loop_points(heptagon_disk())
+    largest = []
+    for _ in range(9):
+        a = turning_angles(p)
+        assert (a > 0).all() and a.sum() == pytest.approx(360.0)  # convex, once round
+        largest.append(float(a.max()))
+        p = curve_step(p, CUT[scheme])
+    assert largest == pytest.approx(TURNS[scheme], rel=2e-3)
+    assert all(b < a for a, b in itertools.pairwise(largest))
+    assert largest[7] > 1.0 > largest[8]  # under 1 degree after 8 iterations
+    # halving: each iteration divides the largest turn by about 2
+    assert largest[8] / largest[7] == pytest.approx(0.5, abs=0.01)
+
+
+def test_the_turning_angle_measure_fails_on_a_polygon_with_a_kink():
+    (p,) = _loop_points(heptagon_disk())
+    for _ in range(6):
+        p = curve_step(p, 2)
+    assert turning_angles(p).max() < 3
+    p[10] += 0.05 * (p[10] - p.mean(axis=0))  # one vertex pushed out
+    assert turning_angles(p).max() > 10
+
+
+# ---------------------------------------------------------------------- far from the boundary
+def ring_distance(m: Mesh) -> np.ndarray:
+    """(n,) int: every vertex's distance (in edges) from the boundary."""
+    d = np.full(m.n_vertices, -1)
+    front = np.flatnonzero(m.is_boundary_vertex)
+    d[front] = 0
+    e = m.edges
+    k = 0
+    while front.size:
+        k += 1
+        near = np.isin(e, front)
+        nb = np.unique(np.concatenate([e[near[:, 0], 1], e[near[:, 1], 0]]))
+        front = nb[d[nb] < 0]
+        d[front] = k
+    return d
+
+
+def far_faces_match(open_out: Mesh, closed_out: Mesh, rings: int) -> int:
+    """How many faces of ``open_out`` at least ``rings`` edges from its boundary are
+    faces of ``closed_out``, positions to 1e-12 (AssertionError if one is not)."""
+    from scipy.spatial import cKDTree
+
+    d = ring_distance(open_out)
+    tree = cKDTree(closed_out.face_centroids)
+    count = 0
+    for f, verts in enumerate(open_out.faces):
+        if d[verts].min() < rings:
+            continue
+        dist, g = tree.query(open_out.face_centroids[f])
+        a, b = open_out.vertices[verts], closed_out.vertices[closed_out.faces[g]]
+        assert dist < 1e-9 and len(a) == len(b), f
+        s = int(np.argmin(np.linalg.norm(b - a[0], axis=1)))
+        assert np.abs(np.roll(b, -s, axis=0) - a).max() < 1e-12, f
+        count += 1
+    return count
+
+
+#: rings (of the output) beyond which its faces are the closed mesh's, for one iteration
+RINGS = {
+    "pentagonalize": 2,
+    "preserve_pentagons": 2,
+    "triangulate": 2,
+    "loop_remesh": 2,
+    "sqrt3_remesh": 3,
+    "vertex_insertion": 2,
+    "corner_cutting": 3,
+    "preserve_hexagons": 3,
+    "honeycomb": 4,
+}
+
+
+@pytest.mark.parametrize("scheme", SCHEME_NAMES)
+def test_faces_far_from_a_cut_are_those_of_the_closed_torus(scheme):
+    torus = shapes.torus(12, 8)
+    band = without(torus, range(16))  # two rings of faces cut out: a band, two loops
+    closed_out = pb.subdivide(torus, scheme, iterations=1, duals=2)
+    open_out = pb.subdivide(band, scheme, iterations=1, duals=2)
+    assert far_faces_match(open_out, closed_out, RINGS[scheme]) > 100
+    with pytest.raises(AssertionError):  # nearer the cut they differ
+        far_faces_match(open_out, closed_out, RINGS[scheme] - 1)
+
+
+@pytest.mark.parametrize("scheme, rings", [("pentagonalize", 8), ("preserve_pentagons", 7)])
+def test_faces_far_from_a_cut_are_those_of_the_closed_torus_after_two_iterations(scheme, rings):
+    torus = shapes.torus(12, 8)
+    band = without(torus, range(16))
+    closed_out = pb.subdivide(torus, scheme, iterations=2, duals=2)
+    open_out = pb.subdivide(band, scheme, iterations=2, duals=2)
+    assert far_faces_match(open_out, closed_out, rings) > 500
+
+
+# ---------------------------------------------------------------------- counts with boundary terms
+@pytest.mark.parametrize("scheme", SCHEME_NAMES)
+def test_counts_after_two_iterations_are_the_formulas_with_boundary_terms(scheme):
+    m = shapes.open_disk()
+    predicted = pb.schemes.registry.open_counts_after(open_counts(m), scheme, 2, 2)
+    out = m
+    got = []
+    for _ in range(2):
+        out = pb.SCHEMES[scheme](out)
+        got.append(open_counts(out))
+        for _ in range(2):
+            out = pb.dual(out)
+            got.append(open_counts(out))
+    if scheme != "triangulate":
+        assert got == predicted
+        return
+    # triangulate is exact on meshes without triangles or of triangles only (the open
+    # disk is neither): at most the formula, the boundary kept; then the duals' counts
+    before = open_counts(m)
+    for i, counts in enumerate(got):
+        if i % 3 == 0:
+            bound = pb.SCHEMES[scheme].open_counts(*before)
+            assert all(g <= b for g, b in zip(counts[:3], bound)) and counts[3] == before[3]
+        else:
+            assert counts == pb.schemes.registry.dual_counts(*before)
+        before = counts
+
+
+def test_the_open_formulas_are_the_closed_ones_with_boundary_terms():
+    for s in pb.SCHEMES.values():
+        V, E, F = 20, 30, 12
+        assert s.open_counts(V, E, F, 0, 0)[:3] == s.counts(V, E, F), s.name
+    assert pb.SCHEMES["pentagonalize"].open_formula == "(V+2E+F, 5E-B, 2E-B, 3B, C)"
+    assert pb.SCHEMES["preserve_pentagons"].open_formula == "(V+3E-B, 6E-2B, 2E+F-B, 2B, C)"
+    assert pb.schemes.registry.dual_counts(20, 30, 12, 5, 2) == (19, 37, 20, 7, 2)
+
+
+# ---------------------------------------------------------------------- the open model
+def test_the_open_disk_model():
+    m = shapes.open_disk()
+    assert (m.n_vertices, m.n_edges, m.n_faces) == (147, 300, 152)
+    assert m.face_size_histogram() == {3: 72, 4: 68, 5: 12}
+    assert [len(x) for x in m.boundary_loops] == [30, 11, 11]
+    assert (m.genus, m.euler_characteristic, m.n_components) == (0, -1, 1)
+    r = np.linalg.norm(m.vertices[:, :2], axis=1)
+    assert np.allclose(r[m.corners[m.boundary_loops[0]]], 1.0, atol=1e-6)  # the rim
+    assert (m.face_normals[:, 2] > 0).all()
+
+
+@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
+def test_the_papers_schemes_fold_no_face_of_the_open_disk(scheme):
+    out = pb.subdivide(shapes.open_disk(), scheme, iterations=2, duals=2)
+    up = out.vertices[out.corners] - [0, 0, -np.sqrt(1.4**2 - 1)]  # from the sphere's centre
+    outward = np.add.reduceat(up, out.offsets[:-1], axis=0)
+    assert (np.einsum("ij,ij->i", out.face_normals, outward) > 0).all()
+    assert out.n_boundary_loops == 3 and out.genus == 0
+
+
+def test_the_shipped_open_disk_is_what_its_script_writes(tmp_path):
+    pytest.importorskip("scipy")
+    from importlib import resources
+
+    from pentanb.data import make_open_disk
+
+    out = tmp_path / "open_disk.obj"
+    assert make_open_disk.main([str(out)]) == 0
+    shipped = resources.files("pentanb.data").joinpath("open_disk.obj").read_text()
+    assert out.read_text() == shipped
+
+
+# ====================================================================== 4. Section 4 with boundary
+def ngon_meshes_with_boundary() -> dict[str, tuple[int, Mesh]]:
+    """Open meshes whose faces all have n sides, by name: (n, mesh)."""
+    out: dict[str, tuple[int, Mesh]] = {}
+    for n in range(3, 10):
+        t = 2 * np.pi * np.arange(n) / n
+        out[f"one {n}-gon"] = (n, Mesh(np.stack([np.cos(t), np.sin(t), 0 * t], 1), [range(n)]))
+    out["grid of quads"] = (4, grid(3, 2))
+    out["torus band of quads"] = (4, without(shapes.torus(12, 8), range(16)))
+    out["pentagonalized open disk"] = (5, pb.pentagonalize(shapes.open_disk()))
+    out["pentagonalized torus with holes"] = (
+        5,
+        pb.pentagonalize(OPEN["torus without three faces"]()),
+    )
+    out["triangulated grid"] = (3, pb.triangulate(grid(3, 2)))
+    return out
+
+
+@pytest.mark.parametrize("name", list(ngon_meshes_with_boundary()))
+def test_real_open_ngon_meshes_satisfy_equation_1_with_boundary(name):
+    from pentanb import topology as tp
+
+    n, m = ngon_meshes_with_boundary()[name]
+    assert set(m.face_size_histogram()) == {n}
+    g, b, v, e_b = m.genus, m.n_boundary_loops, m.n_vertices, m.n_boundary_edges
+    assert tp.euler_characteristic(g, b) == m.euler_characteristic
+    assert tp.ngon_mesh_counts_with_boundary(n, g, b, v, e_b) == (v, m.n_edges, m.n_faces)
+    # the valence of equation (1) with boundary is the mesh's, boundary edges counted
+    assert tp.average_valence_with_boundary(n, g, b, v, e_b) == pytest.approx(m.valences.mean())
+    # and a valid mesh meets the count-wise criterion
+    assert tp.can_tile_with_boundary(n, g, b, v, e_b)
+    r = tp.vertex_range_with_boundary(n, g, b, e_b)
+    assert r is not None and r[0] <= v <= r[1]
+    # one boundary edge more or less: no such mesh
+    assert tp.ngon_mesh_counts_with_boundary(n, g, b, v, e_b + n - 2 + 1) is None or n == 3
+
+
+def test_equation_1_with_boundary_is_equation_1_without():
+    from pentanb import topology as tp
+
+    for n, g, v in [(3, 0, 4), (5, 0, 20), (6, 1, 30), (5, 2, 31)]:
+        assert tp.average_valence_with_boundary(n, g, 0, v, 0) == tp.average_valence(n, g, v)
+        assert tp.ngon_mesh_counts_with_boundary(n, g, 0, v, 0) == tp.ngon_mesh_counts(n, g, v)
+    with pytest.raises(ValueError, match=r"both 0 \(closed\) or both positive"):
+        tp.average_valence_with_boundary(5, 0, 1, 10, 0)
+    with pytest.raises(ValueError, match=r"at least 3 edges, got e_b=5"):
+        tp.ngon_mesh_counts_with_boundary(5, 0, 2, 10, 5)
+
+
+def test_which_ngons_tile_surfaces_with_boundary():
+    from pentanb import topology as tp
+
+    # closed: pentagons at most (no hexagonal sphere); with boundary: hexagons too
+    assert [tp.ngonalization_exists(n) for n in (5, 6, 7)] == [True, False, False]
+    assert [tp.ngonalization_exists_with_boundary(n) for n in (5, 6, 7)] == [True, True, False]
+    # a hexagonal disk needs six boundary edges (one hexagon), then any number of vertices
+    assert tp.min_boundary_edges(6, 0, 1) == 6
+    assert tp.vertex_range_with_boundary(6, 0, 1, 5) is None
+    assert tp.vertex_range_with_boundary(6, 0, 1, 6) == (6, math.inf)
+    # heptagons: the interior is bounded by the boundary, v <= 3 e_b - 14 on a disk
+    assert tp.vertex_range_with_boundary(7, 0, 1, 7) == (7, 7)
+    assert tp.vertex_range_with_boundary(7, 0, 1, 20)[1] == 3 * 20 - 14
+    # every n fits some surface with boundary, of any genus and number of loops
+    for n in range(3, 12):
+        for g in range(3):
+            for b in range(1, 4):
+                assert tp.can_tile_with_boundary(n, g, b), (n, g, b)
+    assert tp.euler_characteristic(0, 3) == -1
+
+
+# ====================================================================== large open meshes
+def test_a_large_open_mesh_takes_the_default_path_and_stays_valid():
+    m = grid(70, 60)  # 16,800 corners: the compiled kernels' size, when numba is there
+    assert m.n_halfedges >= pb._jit.MIN_CORNERS
+    for scheme in ("pentagonalize", "preserve_pentagons"):
+        out = pb.subdivide(m, scheme, iterations=1, duals=2)
+        rebuilt = Mesh(out.vertices, face_lists(out))
+        assert np.array_equal(out.twin, rebuilt.twin)
+        counts = pb.schemes.registry.open_counts_after(open_counts(m), scheme, 1, 2)[-1]
+        assert open_counts(out) == counts
+        assert (out.vertices[:, 2] == 0).all()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scheme", SCHEME_NAMES + ["dual"])
+def test_open_meshes_are_the_same_by_the_numpy_path_and_the_kernels(scheme, monkeypatch):
+    from pentanb import _jit
+
+    if not _jit.available():
+        pytest.skip("numba is not installed")
+    monkeypatch.setattr(_jit, "MIN_CORNERS", 0)
+    before = _jit.use_jit(False)
+    try:
+        outs = []
+        for on in (False, True):
+            _jit.use_jit(on)
+            m = shapes.open_disk()
+            out = pb.dual(m) if scheme == "dual" else pb.subdivide(m, scheme, 1, 2)
+            outs.append((out.vertices, out.corners, out.offsets, out.twin, out.vertex_ring[0]))
+        for a, b in zip(*outs):
+            assert a.dtype == b.dtype and a.tobytes() == b.tobytes()
+    finally:
+        _jit.use_jit(before)

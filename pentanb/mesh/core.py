@@ -716,10 +716,9 @@ class Mesh:
         -------
         dict
             ``"V"``, ``"E"``, ``"F"`` (ints), ``"faces"`` and ``"valences"``
-            (the histograms), ``"chi"`` and ``"genus"`` (ints).
-
-        An open mesh adds ``"B"``, its boundary edges, and ``"loops"``, its
-        boundary loops (``chi = 2 - 2 genus - loops`` when connected).
+            (the histograms), ``"chi"`` and ``"genus"`` (ints).  An open
+            mesh adds ``"B"``, its boundary edges, and ``"loops"``, its
+            boundary loops (``chi = 2 - 2 genus - loops`` when connected).
         """
         out = {
             "V": self.n_vertices,

@@ -8,11 +8,14 @@
   smoothing);
 * :mod:`~pentanb.schemes.registry`: :data:`SCHEMES`, one table naming them all.
 
-Every operator is a pure function ``Mesh -> Mesh``.
+Every operator is a pure function ``Mesh -> Mesh``, on closed and open
+meshes alike (:func:`boundary_corners` names the boundary vertices the dual
+keeps; :mod:`~pentanb.schemes.smoothing` gives the rule).
 """
 
 from __future__ import annotations
 
+from ._build import CORNER_ANGLE, boundary_corners
 from .classic import (
     corner_cutting,
     honeycomb,
@@ -41,4 +44,6 @@ __all__ = [
     "SCHEMES",
     "Scheme",
     "get_scheme",
+    "boundary_corners",
+    "CORNER_ANGLE",
 ]

@@ -3,6 +3,22 @@
 Every operator indexes new vertices in blocks: first the old vertices (when
 kept), then points on edges, then points per face or per half-edge.  These
 helpers compute those blocks from the input's half-edge arrays.
+
+Open meshes (surfaces with boundary) take a numpy path: an operator writes
+its output's faces (boundary edges split as interior edges are, faces
+remeshed face by face) and the output's twins and vertex rings are derived
+from them when first asked for (:func:`remeshed` does this by itself).  The
+operators that make a face of every vertex (the dual, corner cutting,
+honeycomb) close a boundary vertex's face along the boundary with
+:func:`open_vertex_faces`: through one point on each of its two boundary
+edges, and through the vertex itself where it is a *corner*
+(:func:`boundary_corners`): a boundary vertex of one face (two edges) where
+the boundary turns by more than :data:`CORNER_ANGLE`.  A vertex of one face
+on a straight boundary is no corner (pentagonalization leaves one on every
+boundary edge, at two thirds of it: keeping those would pin the boundary to
+its first polygon); a vertex of one face where the boundary turns sharply
+is (as Catmull-Clark's and Doo-Sabin's boundary rules keep such corners:
+cutting them lets the faces next to them fold).
 """
 
 from __future__ import annotations
@@ -207,6 +223,7 @@ def output(
     rings: Rings | Callable[[], Rings | Several] | None = None,
     size_counts: tuple[tuple[int, int], ...] | None = None,
     dual_of: Mesh | None = None,
+    closed: bool = False,
 ) -> Mesh:
     """Wrap an operator's output, valid by construction (no re-validation, no copy).
 
@@ -231,6 +248,9 @@ def output(
         operator knows it (what :func:`pentanb.mesh.build.size_counts` would count).
     dual_of : Mesh, optional
         The mesh the output is the dual of (:func:`pentanb.dual` only).
+    closed : bool
+        True when the output is closed (the operator's input was): recorded
+        with it (see :func:`pentanb.mesh.build.trusted`).
     """
     dtype = index_dtype(vertices.shape[0], corners.size)
     corners = corners.astype(dtype, copy=False)
@@ -243,6 +263,7 @@ def output(
         rings=rings,
         size_counts=size_counts,
         dual_of=dual_of,
+        closed=closed,
     )
 
 
@@ -261,8 +282,11 @@ def remeshed(
     The output's twins and vertex rings are ``twin_of(faces, dt)`` and
     ``rings_of(faces, dt)``, run only when first asked for, ``faces`` being
     ``mesh``'s faces without its positions (so the output does not keep
-    them alive).
+    them alive).  Those write a closed mesh's; an open mesh's output
+    derives its own from its faces (the numpy path).
     """
+    if not mesh.is_closed:
+        return output(vertices, corners, offsets, size_counts=size_counts)
     faces = _mesh.faces_only(mesh)
     return output(
         vertices,
@@ -271,6 +295,7 @@ def remeshed(
         twin=lambda: twin_of(faces, dt),
         rings=lambda: rings_of(faces, dt),
         size_counts=size_counts,
+        closed=True,
     )
 
 
@@ -337,7 +362,10 @@ def check_vertex_faces(mesh: Mesh, op: str, valence: np.ndarray | None = None) -
     if valence is None:
         _, ring_offsets = mesh.vertex_ring
         valence = np.diff(ring_offsets)
-    few = np.flatnonzero(valence < 3)
+    if mesh.is_closed:
+        few = np.flatnonzero(valence < 3)
+    else:  # a boundary vertex's face closes along the boundary: 2 edges are enough
+        few = np.flatnonzero((valence < 3) & ~mesh.is_boundary_vertex)
     if few.size:
         v, k = int(few[0]), int(valence[few[0]])
         more = f" (and {few.size - 1} more such vertices)" if few.size > 1 else ""
@@ -346,3 +374,128 @@ def check_vertex_faces(mesh: Mesh, op: str, valence: np.ndarray | None = None) -
             f"in the result would have {k} sides, and a face needs at least 3 (a mesh "
             "built with Mesh.from_csr(..., validate=False) is not checked for this)"
         )
+
+
+#: Turning angle (degrees) of the boundary above which a boundary vertex of
+#: one face is a corner, kept by the dual (see :func:`boundary_corners`).
+CORNER_ANGLE = 30.0
+
+
+def boundary_corners(mesh: Mesh) -> np.ndarray:
+    """(C,) int: the corners of an open mesh's boundary, in increasing order.
+
+    A corner is a boundary vertex of one face (two edges) where the
+    boundary turns by more than :data:`CORNER_ANGLE` degrees (the angle
+    between the boundary edge that enters it and the one that leaves
+    it).  The dual, corner cutting and honeycomb keep every corner where
+    it is, and it stays a corner of their outputs (one face, the same
+    turn); the other boundary vertices are cut off.  Empty for a closed
+    mesh.
+
+    Parameters
+    ----------
+    mesh : Mesh
+
+    Returns
+    -------
+    (C,) int
+    """
+    bh = mesh.boundary_halfedges
+    if not bh.size:
+        return np.zeros(0, dtype=np.int64)
+    v = mesh.vertices
+    tail, head = mesh.corners[bh], mesh.head[bh]
+    after = loop_successor(mesh)  # the edge leaving head[bh[j]] is bh[after[j]]
+    a = v[head] - v[tail]
+    b = v[head[after]] - v[tail[after]]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        cos = np.einsum("ij,ij->i", a, b) / (np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1))
+    sharp = cos < np.cos(np.radians(CORNER_ANGLE))  # (NaN, a zero-length edge: no corner)
+    one_face = mesh.valences[head] == 2
+    return np.sort(head[sharp & one_face]).astype(np.int64)
+
+
+def corner_ids(mesh: Mesh, first: int) -> np.ndarray:
+    """(n,) int: the output vertex keeping every corner (numbered from ``first``
+    in vertex order), -1 at every other vertex."""
+    ids = np.full(mesh.n_vertices, -1, dtype=np.int64)
+    at = boundary_corners(mesh)
+    ids[at] = np.arange(first, first + at.size)
+    return ids
+
+
+def loop_successor(mesh: Mesh) -> np.ndarray:
+    """(B,) int: for every boundary half-edge (index j into
+    :attr:`~pentanb.Mesh.boundary_halfedges`), the index of the next one round its loop."""
+    bh = mesh.boundary_halfedges
+    off = _mesh.loop_offsets(mesh)
+    j = np.arange(bh.size, dtype=np.int64)
+    if not bh.size:
+        return j
+    loop_of = np.repeat(np.arange(off.size - 1), np.diff(off))
+    after = j + 1
+    last = after == off[1:][loop_of]
+    after[last] = off[:-1][loop_of[last]]
+    return after
+
+
+def open_vertex_faces(
+    mesh: Mesh,
+    items: tuple[np.ndarray, ...],
+    entering: np.ndarray,
+    leaving: np.ndarray,
+    kept: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray]:
+    """A face round every vertex of an open mesh, from its vertex ring (CSR, int64).
+
+    Round an interior vertex, its ring's face half-edges h in order, each
+    giving ``items[0][h], items[1][h], ...``: what the closed operator
+    writes.  Round a boundary vertex v, whose ring is its hole half-edge
+    ``H + j`` then its face half-edges from the boundary edge it leaves
+    by: ``entering[j]`` (a point for the boundary edge ``bh[j]`` that
+    enters v), ``kept[v]`` when it is not -1 (v itself, kept: a corner),
+    ``leaving[j']`` (a point for the boundary edge ``bh[j']`` that leaves
+    v), then the items of the face half-edges.  Counter-clockwise, as the
+    faces round interior vertices.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        An open mesh.
+    items : tuple of (H,) int
+        What every face half-edge of a ring contributes, in order.
+    entering, leaving : (B,) int
+        What every boundary edge contributes to the face of its head, of its tail.
+    kept : (n,) int, optional
+        The output vertex that keeps a boundary vertex, -1 where none does
+        (:func:`corner_ids`).
+
+    Returns
+    -------
+    corners : int64 array
+    offsets : (n + 1,) int64
+    """
+    ring, ring_off = mesh.vertex_ring
+    H, per = mesh.n_halfedges, len(items)
+    ring = ring.astype(np.int64)
+    hole = ring >= H
+    j = ring[hole] - H
+    if kept is None:
+        keep = np.full(j.size, -1, dtype=np.int64)
+    else:  # v, the hole half-edge's tail: the head of bh[j]
+        keep = kept[mesh.head[mesh.boundary_halfedges[j]]]
+    count = np.full(ring.size, per, dtype=np.int64)
+    count[hole] = 2 + (keep >= 0)
+    at = np.cumsum(count) - count
+    out = np.empty(int(count.sum()), dtype=np.int64)
+    face = ring[~hole]
+    base = at[~hole]
+    for s, item in enumerate(items):
+        out[base + s] = item[face]
+    base = at[hole]
+    out[base] = entering[j]
+    out[base[keep >= 0] + 1] = keep[keep >= 0]
+    out[base + count[hole] - 1] = leaving[loop_successor(mesh)[j]]
+    total = np.zeros(count.size + 1, dtype=np.int64)
+    np.cumsum(count, out=total[1:])
+    return out, total[ring_off]

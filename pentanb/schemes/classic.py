@@ -1,6 +1,6 @@
 """The remeshings the paper compares its schemes with (Sections 3 and 6).
 
-Each works on any closed polygon mesh, keeps the Euler characteristic, and
+Each works on any polygon mesh, closed or open, keeps the Euler characteristic, and
 is a pure remeshing: old vertices (where kept) do not move and new ones are
 placed by simple affine rules.
 
@@ -17,6 +17,33 @@ function               paper                        V, E, F after       Conway
 =====================  ===========================  ==================  =========
 
 (For ``triangulate``, F' counts the non-triangles and s' their sides.)
+
+Open meshes (B boundary edges, C corners: boundary vertices of one face)
+are remeshed face by face as closed ones; what a boundary edge becomes:
+
+* ``loop_remesh``, ``vertex_insertion``: split at its midpoint, as every edge;
+* ``triangulate``: kept;
+* ``sqrt3_remesh``: kept, and the triangle ``(u, w, c_f)`` takes the place of
+  the flipped edge's two (no edge to flip across the boundary), as in
+  Kobbelt's sqrt(3) at a boundary step that does not split it;
+* ``corner_cutting``: two points, ``m + scale (u - m)`` and
+  ``m + scale (w - m)`` about its midpoint m (a quarter from each end for
+  the default scale: Chaikin's corner cutting, Doo-Sabin's boundary rule),
+  and a quad between them and its face's copy; every boundary vertex's
+  face is closed through them (and through the vertex at a corner);
+* ``preserve_hexagons``: cut in three, so that its hexagon
+  ``(k_bf, k_af, a, t1, t2, b)`` stays a hexagon;
+* ``honeycomb``: its midpoint, joined to the point of its half-edge; every
+  boundary vertex's face is closed through the midpoints of its two
+  boundary edges (and through the vertex at a corner), as the dual's.
+
+Corners (boundary vertices of one face where the boundary turns by more
+than 30 degrees, :func:`~pentanb.schemes._build.boundary_corners`) are kept
+by the schemes that make a face of every vertex, as by the dual
+(:mod:`pentanb.schemes.smoothing`).
+
+The registry (:data:`pentanb.SCHEMES`) gives every scheme's counts with
+these boundary terms.
 """
 
 from __future__ import annotations
@@ -32,10 +59,12 @@ from ._build import (
     check_scale,
     check_vertex_faces,
     columns,
+    corner_ids,
     edge_points,
     fixed_size,
     index_dtype,
     inverse,
+    open_vertex_faces,
     output,
     remeshed,
     scale_safe,
@@ -64,7 +93,8 @@ def triangulate(mesh: Mesh) -> Mesh:
     Parameters
     ----------
     mesh : Mesh
-        A closed manifold polygon mesh.
+        A manifold polygon mesh, closed or open (the module docstring says
+        what a boundary edge becomes).
 
     Returns
     -------
@@ -88,7 +118,7 @@ def triangulate(mesh: Mesh) -> Mesh:
     kept = mesh.corners[~big[hf]].reshape(-1, 3)
     corners, offsets = fixed_size(np.concatenate([kept, fans]))
     vertices = np.concatenate([mesh.vertices, mesh.face_centroids[big_faces]])
-    return output(vertices, corners, offsets)
+    return output(vertices, corners, offsets, closed=mesh.is_closed)
 
 
 @scale_safe
@@ -102,7 +132,8 @@ def loop_remesh(mesh: Mesh) -> Mesh:
     Parameters
     ----------
     mesh : Mesh
-        A closed manifold polygon mesh.
+        A manifold polygon mesh, closed or open (the module docstring says
+        what a boundary edge becomes).
 
     Returns
     -------
@@ -174,7 +205,8 @@ def sqrt3_remesh(mesh: Mesh) -> Mesh:
     Parameters
     ----------
     mesh : Mesh
-        A closed manifold polygon mesh.
+        A manifold polygon mesh, closed or open (the module docstring says
+        what a boundary edge becomes).
 
     Returns
     -------
@@ -187,7 +219,12 @@ def sqrt3_remesh(mesh: Mesh) -> Mesh:
     n, F, H = mesh.n_vertices, mesh.n_faces, mesh.n_halfedges
     dt = index_dtype(n + F, 3 * H)
     c = affine(mesh.halfedge_face, 1, n, dt)
-    tris = columns(dt, H, mesh.corners, c[mesh.twin], c)
+    if mesh.is_closed:
+        tris = columns(dt, H, mesh.corners, c[mesh.twin], c)
+    else:  # a boundary half-edge (u, w) of f keeps its edge: (u, w, c_f)
+        twin = mesh.twin
+        across = np.where(twin < H, c[np.minimum(twin, H - 1)], mesh.head.astype(dt))
+        tris = columns(dt, H, mesh.corners, across, c)
     corners, offsets = fixed_size(tris)
     vertices = np.empty((n + F, 3))
     vertices[:n] = mesh.vertices
@@ -231,7 +268,8 @@ def vertex_insertion(mesh: Mesh) -> Mesh:
     Parameters
     ----------
     mesh : Mesh
-        A closed manifold polygon mesh.
+        A manifold polygon mesh, closed or open (the module docstring says
+        what a boundary edge becomes).
 
     Returns
     -------
@@ -336,6 +374,8 @@ def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     check_mesh(mesh, "corner_cutting")
     s = check_scale(scale)
     check_vertex_faces(mesh, "corner_cutting")
+    if not mesh.is_closed:
+        return _open_corner_cutting(mesh, s)
     H, E = mesh.n_halfedges, mesh.n_edges
     dt = index_dtype(H, 4 * H)
     nxt, twin = mesh.next, mesh.twin
@@ -349,6 +389,52 @@ def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     )
     points = _corner_points(mesh, s)
     return remeshed(mesh, points, corners, offsets, dt, _cutting_twin, _cutting_rings)
+
+
+def _open_corner_cutting(mesh: Mesh, s: float) -> Mesh:
+    """Corner cutting of an open mesh (numpy; twins and rings derived when asked for).
+
+    Points: the H corner points, two per boundary edge ``bh[j]`` (``H +
+    2j`` near its tail, ``H + 2j + 1`` near its head, at ``scale`` about
+    its midpoint), then the boundary's corners, kept.  Faces: the copies, one
+    quad per edge in edge order (a boundary edge's: ``(next h, h, near
+    tail, near head)``), one face per vertex (:func:`open_vertex_faces`).
+    """
+    H, E = mesh.n_halfedges, mesh.n_edges
+    bh = mesh.boundary_halfedges
+    B = bh.size
+    kept = corner_ids(mesh, H + 2 * B)
+    nxt, twin = mesh.next.astype(np.int64), mesh.twin.astype(np.int64)
+    eh = mesh.edge_halfedge.astype(np.int64)
+    t = twin[eh]
+    inner = t < H
+    slot = np.full(H, -1, dtype=np.int64)  # j of every boundary half-edge
+    slot[bh] = np.arange(B)
+    jb = slot[eh[~inner]]
+    quads = np.empty((E, 4), dtype=np.int64)
+    quads[:, 0] = nxt[eh]
+    quads[:, 1] = eh
+    quads[inner, 2] = nxt[t[inner]]
+    quads[inner, 3] = t[inner]
+    quads[~inner, 2] = H + 2 * jb
+    quads[~inner, 3] = H + 2 * jb + 1
+    h = np.arange(H, dtype=np.int64)
+    near_tail = H + 2 * np.arange(B, dtype=np.int64)
+    faces, face_off = open_vertex_faces(mesh, (h,), near_tail + 1, near_tail, kept)
+    corners = np.concatenate([h, quads.reshape(-1), faces])
+    offsets = np.concatenate(
+        [mesh.offsets, np.arange(H + 4, H + 4 * E + 1, 4), H + 4 * E + face_off[1:]]
+    )
+    v = mesh.vertices
+    at = np.flatnonzero(kept >= 0)
+    points = np.empty((H + 2 * B + at.size, 3))
+    points[:H] = _corner_points(mesh, s)
+    a, b = v[mesh.corners[bh]], v[mesh.head[bh]]
+    mid = 0.5 * a + 0.5 * b
+    points[H : H + 2 * B : 2] = mid + s * (a - mid)
+    points[H + 1 : H + 2 * B : 2] = mid + s * (b - mid)
+    points[H + 2 * B :] = v[at]
+    return output(points, corners, offsets)
 
 
 def _edge_slot(m, h: np.ndarray, per: int, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
@@ -423,7 +509,8 @@ def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     Parameters
     ----------
     mesh : Mesh
-        A closed manifold polygon mesh.
+        A manifold polygon mesh, closed or open (the module docstring says
+        what a boundary edge becomes).
     scale : float in (0, 1)
         Size of every face's copy, relative to the face, about its centroid.
 
@@ -436,6 +523,8 @@ def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     """
     check_mesh(mesh, "preserve_hexagons")
     s = check_scale(scale)
+    if not mesh.is_closed:
+        return _open_hexagons(mesh, s)
     n, H = mesh.n_vertices, mesh.n_halfedges
     dt = index_dtype(n + 2 * mesh.n_edges, 4 * H)
     k = np.arange(n, n + H, dtype=dt)
@@ -451,6 +540,50 @@ def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     vertices[:n] = mesh.vertices
     vertices[n:] = _corner_points(mesh, s)
     return remeshed(mesh, vertices, corners, offsets, dt, _hexagons_twin, _hexagons_rings)
+
+
+def _open_hexagons(mesh: Mesh, s: float) -> Mesh:
+    """Hexagon preservation of an open mesh (numpy; twins and rings derived when asked for).
+
+    Points: the old vertices, one copy point per half-edge (``V + h``),
+    then the two trisection points of every boundary edge ``bh[j]``
+    (``V + H + 2j`` at a third from its tail, ``V + H + 2j + 1`` at two
+    thirds).  A boundary edge ``h = (a, b)``'s hexagon runs along the
+    edge instead of round the missing face: ``(k_bf, k_af, a, t1, t2, b)``.
+    """
+    n, H, E = mesh.n_vertices, mesh.n_halfedges, mesh.n_edges
+    bh = mesh.boundary_halfedges
+    B = bh.size
+    k = np.arange(n, n + H, dtype=np.int64)
+    nxt, twin = mesh.next.astype(np.int64), mesh.twin.astype(np.int64)
+    tail, head = mesh.corners.astype(np.int64), mesh.head.astype(np.int64)
+    h = mesh.edge_halfedge.astype(np.int64)
+    g = twin[h]
+    inner = g < H
+    slot = np.full(H, -1, dtype=np.int64)
+    slot[bh] = np.arange(B)
+    jb = slot[h[~inner]]
+    hexagons = np.empty((E, 6), dtype=np.int64)
+    hexagons[:, 0] = k[nxt[h]]
+    hexagons[:, 1] = k[h]
+    hexagons[:, 2] = tail[h]
+    gi = g[inner]
+    hexagons[inner, 3] = k[nxt[gi]]
+    hexagons[inner, 4] = k[gi]
+    hexagons[inner, 5] = tail[gi]
+    hexagons[~inner, 3] = n + H + 2 * jb
+    hexagons[~inner, 4] = n + H + 2 * jb + 1
+    hexagons[~inner, 5] = head[h[~inner]]
+    corners = np.concatenate([k, hexagons.reshape(-1)])
+    offsets = np.concatenate([mesh.offsets, np.arange(H + 6, H + 6 * E + 1, 6)])
+    v = mesh.vertices
+    vertices = np.empty((n + H + 2 * B, 3))
+    vertices[:n] = v
+    vertices[n : n + H] = _corner_points(mesh, s)
+    a, b = v[mesh.corners[bh]], v[mesh.head[bh]]
+    vertices[n + H :: 2] = a * (2.0 / 3.0) + b * (1.0 / 3.0)
+    vertices[n + H + 1 :: 2] = a * (1.0 / 3.0) + b * (2.0 / 3.0)
+    return output(vertices, corners, offsets)
 
 
 def _hex_slot(m, h: np.ndarray, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
@@ -517,7 +650,8 @@ def honeycomb(mesh: Mesh) -> Mesh:
     Parameters
     ----------
     mesh : Mesh
-        A closed manifold polygon mesh.
+        A manifold polygon mesh, closed or open (the module docstring says
+        what a boundary edge becomes).
 
     Returns
     -------
@@ -526,6 +660,8 @@ def honeycomb(mesh: Mesh) -> Mesh:
         then one 2k-gon per k-valent vertex.
     """
     check_mesh(mesh, "honeycomb")
+    if not mesh.is_closed:
+        return _open_honeycomb(mesh)
     H = mesh.n_halfedges
     dt = index_dtype(H, 3 * H)
     ring, ring_off = mesh.vertex_ring
@@ -540,6 +676,33 @@ def honeycomb(mesh: Mesh) -> Mesh:
     else:
         points = (v[mesh.corners] + v[mesh.head] + centres[mesh.halfedge_face]) / 3.0
     return remeshed(mesh, points, corners, offsets, dt, _honeycomb_twin, _honeycomb_rings)
+
+
+def _open_honeycomb(mesh: Mesh) -> Mesh:
+    """Honeycomb of an open mesh (numpy; twins and rings derived when asked for).
+
+    Points: the H points of the half-edges, the midpoints of the boundary
+    edges (``H + j`` for ``bh[j]``), then the boundary's corners, kept.  Faces: the copies,
+    then one face per vertex (:func:`open_vertex_faces`), closed along the
+    boundary as the dual's.
+    """
+    H = mesh.n_halfedges
+    bh = mesh.boundary_halfedges
+    B = bh.size
+    h = np.arange(H, dtype=np.int64)
+    mids = np.arange(H, H + B, dtype=np.int64)
+    kept = corner_ids(mesh, H + B)
+    faces, face_off = open_vertex_faces(mesh, (h, mesh.prev.astype(np.int64)), mids, mids, kept)
+    corners = np.concatenate([h, faces])
+    offsets = np.concatenate([mesh.offsets, H + face_off[1:]])
+    v, centres = mesh.vertices, mesh.face_centroids
+    at = np.flatnonzero(kept >= 0)
+    points = np.empty((H + B + at.size, 3))
+    points[:H] = (v[mesh.corners] + v[mesh.head] + centres[mesh.halfedge_face]) / 3.0
+    a, b = v[mesh.corners[bh]], v[mesh.head[bh]]
+    points[H : H + B] = 0.5 * a + 0.5 * b
+    points[H + B :] = v[at]
+    return output(points, corners, offsets)
 
 
 def _honeycomb_twin(m, dt: np.dtype) -> np.ndarray:

@@ -3,6 +3,12 @@
 Both are remeshings: the old vertices stay where they are and new vertices
 are placed by affine rules.  Smoothing is the dual's job
 (:func:`pentanb.smooth`).
+
+On an open mesh both work face by face as on a closed one: a boundary edge
+is split as an interior edge is (in three, in two), so the output's
+boundary is the input's, refined, and its faces are the same pentagons
+(and copies); the output's twins and rings are then derived from its
+faces (numpy) instead of written from the input's.
 """
 
 from __future__ import annotations
@@ -43,12 +49,14 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     Parameters
     ----------
     mesh : Mesh
-        V vertices, E edges, F faces.
+        V vertices, E edges, F faces; open meshes too (B boundary edges).
 
     Returns
     -------
     Mesh
-        V + 2E + F vertices, 5E edges, 2E pentagons.  Vertices are numbered
+        V + 2E + F vertices, 5E edges, 2E pentagons (open: V + 2E + F
+        vertices, 5E - B edges, 2E - B pentagons, 3B boundary edges: a
+        pentagon per half-edge, and each boundary edge in three).  Vertices are numbered
         old vertices first, then the two trisection points of every edge
         (edge ``e``: rows ``V + 2e`` at 1/3 and ``V + 2e + 1`` at 2/3 from its
         smaller vertex), then the face centroids.  The pentagon of half-edge
@@ -63,6 +71,7 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     written when first asked for (by the dual, say), never found by sorting.
     """
     check_mesh(mesh, "pentagonalize")
+    closed = mesh.is_closed
     n, E, F, H = mesh.n_vertices, mesh.n_edges, mesh.n_faces, mesh.n_halfedges
     dt = index_dtype(n + 2 * E + F, 5 * H)
     forward = _mesh.forward(mesh)
@@ -95,6 +104,8 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     vertices[:n] = mesh.vertices
     edge_points(mesh, 2, out=vertices[n : n + 2 * E])
     vertices[n + 2 * E :] = mesh.face_centroids
+    if not closed:  # (its twins and rings derived from its faces)
+        return output(vertices, faces.reshape(-1), np.arange(0, 5 * H + 1, 5, dtype=dt))
     # the twins' producer holds the input's twins and offsets only, not its
     # faces (whose cached connectivity would then stay alive until the
     # output's twins are asked for, maybe an iteration later)
@@ -105,6 +116,7 @@ def pentagonalize(mesh: Mesh) -> Mesh:
         np.arange(0, 5 * H + 1, 5, dtype=dt),
         twin=lambda: _pentagonalized_twin(twin_in, offsets_in, dt),
         rings=lambda: _pentagonalized_rings(source, dt),
+        closed=True,
     )
 
 
@@ -191,14 +203,15 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     Parameters
     ----------
     mesh : Mesh
-        V vertices, E edges, F faces.
+        V vertices, E edges, F faces; open meshes too (B boundary edges).
     scale : float in (0, 1)
         Size of the inner copy relative to the polygon of edge midpoints.
 
     Returns
     -------
     Mesh
-        V + 3E vertices, 6E edges, F + 2E faces: the F inner copies (same
+        V + 3E vertices, 6E edges, F + 2E faces (open: V + 3E - B vertices,
+        6E - 2B edges, F + 2E - B faces, 2B boundary edges): the F inner copies (same
         sizes and order as the input's faces) followed by one pentagon per
         half-edge ``h = (u, w)``: ``(m_h, w, m_next, q_next, q_h)``.
         Vertices: old vertices, edge midpoints (``V + e``), then one copy
@@ -207,8 +220,8 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     check_mesh(mesh, "preserve_pentagons")
     s = check_scale(scale)
     n, E, H, F = mesh.n_vertices, mesh.n_edges, mesh.n_halfedges, mesh.n_faces
-    dt = index_dtype(n + 3 * E, 6 * H)
-    vertices = np.empty((n + 3 * E, 3))
+    dt = index_dtype(n + E + H, 6 * H)
+    vertices = np.empty((n + E + H, 3))
     vertices[:n] = mesh.vertices
     edge_points(mesh, 1, out=vertices[n : n + E])
     mid = mesh.halfedge_edge.astype(dt)

@@ -12,6 +12,13 @@ these schemes (:data:`pentanb.notation.OPERATORS`: ``g q e o c z u n``)
 take theirs from :data:`SCHEMES`.  Nothing in :mod:`pentanb.schemes`
 imports :mod:`pentanb.notation`; Conway strings used as scheme names
 (``"dg"``) are resolved by :func:`pentanb.notation.as_scheme`.
+
+Open meshes: every scheme's counts are written once, with the number B of
+boundary edges and C of corners (:func:`pentanb.schemes.boundary_corners`,
+the boundary vertices the dual keeps): :attr:`Scheme.open_counts`, ``(V, E,
+F, B, C) -> (V', E', F', B', C')``; the closed counts are those with ``B = C
+= 0``.  :func:`dual_counts` is the dual's, :func:`open_counts_after` the
+counts after every step of :func:`pentanb.subdivide` on an open mesh.
 """
 
 from __future__ import annotations
@@ -23,9 +30,20 @@ from typing import Any
 from ..mesh import Mesh
 from . import classic, pentagonal
 
-__all__ = ["Scheme", "SCHEMES", "get_scheme", "count_formula", "Counts"]
+__all__ = [
+    "Scheme",
+    "SCHEMES",
+    "get_scheme",
+    "count_formula",
+    "Counts",
+    "OpenCounts",
+    "dual_counts",
+    "open_counts_after",
+]
 
 Counts = tuple[int, int, int]
+#: (V, E, F, B, C): vertices, edges, faces, boundary edges and corners.
+OpenCounts = tuple[int, int, int, int, int]
 
 
 @dataclass(frozen=True)
@@ -58,6 +76,11 @@ class Scheme:
     bound : str
         When the upper bound is reached, printed after "at most" by
         :attr:`formula` (e.g. ``"when no face is a triangle"``).
+    open_counts : callable or None
+        ``open_counts(V, E, F, B, C) -> (V', E', F', B', C')`` for a mesh
+        with B boundary edges and C corners (B = C = 0: closed, and
+        ``counts`` is its first three); None for a scheme whose open counts
+        are not known.
     """
 
     name: str
@@ -70,6 +93,7 @@ class Scheme:
     family: str = "comparison"
     exact_counts: bool = True
     bound: str = ""
+    open_counts: Callable[[int, int, int, int, int], OpenCounts] | None = None
 
     def __call__(self, mesh: Mesh, **options) -> Mesh:
         return self.func(mesh, **options)
@@ -85,27 +109,47 @@ class Scheme:
             return text
         return text + " at most" + (f" ({self.bound})" if self.bound else "")
 
+    @property
+    def open_formula(self) -> str:
+        """The count formula with boundary terms, e.g. ``"(V+2E+F, 5E-B, 2E-B, 3B, C)"``.
 
-def count_formula(counts: Callable[..., tuple]) -> str:
+        ``(V', E', F', B', C')`` from the input's (V, E, F), B boundary
+        edges and C corners; empty when :attr:`open_counts` is None.
+        """
+        if self.open_counts is None:
+            return ""
+        text = count_formula(self.open_counts, boundary=True)
+        if self.exact_counts:
+            return text
+        return text + " at most" + (f" ({self.bound})" if self.bound else "")
+
+
+def count_formula(counts: Callable[..., tuple], boundary: bool = False) -> str:
     """A count formula as text: ``"(V+2E+F, 5E, 2E)"`` for pentagonalization's.
 
     Parameters
     ----------
     counts : callable
-        ``counts(V, E, F) -> (V', E', F')``, linear in V, E and F (it is
-        evaluated on symbols: sums and integer multiples only).
+        ``counts(V, E, F) -> (V', E', F')``, or with ``boundary``
+        ``counts(V, E, F, B, C) -> (V', E', F', B', C')``, linear in its
+        arguments (it is evaluated on symbols: sums, differences and
+        integer multiples only).
+    boundary : bool
+        Whether ``counts`` also takes and gives B and C, the boundary edges
+        and corners.
 
     Returns
     -------
     str
-        The three linear forms, their terms in the order V, E, F.
+        The linear forms, their terms in the order V, E, F (, B, C).
     """
-    symbols: list[Any] = [_Linear((1, 0, 0)), _Linear((0, 1, 0)), _Linear((0, 0, 1))]
+    k = 5 if boundary else 3
+    symbols: list[Any] = [_Linear(tuple(int(i == j) for j in range(k))) for i in range(k)]
     return "(" + ", ".join(str(x) for x in counts(*symbols)) + ")"
 
 
 class _Linear:
-    """A linear form in V, E, F, to print a scheme's count formula."""
+    """A linear form in V, E, F (and B, C), to print a scheme's count formula."""
 
     def __init__(self, c: Iterable[int]) -> None:
         self.c = tuple(c)
@@ -119,97 +163,199 @@ class _Linear:
 
     __radd__ = __add__
 
+    def __neg__(self) -> _Linear:
+        return _Linear(-a for a in self.c)
+
+    def __sub__(self, o: object) -> _Linear:
+        if isinstance(o, _Linear):
+            return self + (-o)
+        if o == 0:
+            return self
+        return NotImplemented
+
     def __mul__(self, k: int) -> _Linear:
         return _Linear(k * a for a in self.c)
 
     __rmul__ = __mul__
 
     def __str__(self) -> str:
-        parts = [name if k == 1 else f"{k}{name}" for k, name in zip(self.c, "VEF") if k]
-        return "+".join(parts) or "0"
+        text = ""
+        for k, name in zip(self.c, "VEFBC"):
+            if k:
+                term = name if abs(k) == 1 else f"{abs(k)}{name}"
+                text += ("-" if k < 0 else "+" if text else "") + term
+        return text or "0"
+
+
+def _closed(open_counts: Callable[..., OpenCounts]) -> Callable[..., Counts]:
+    """The closed counts ``(V, E, F) -> (V', E', F')``: ``open_counts`` at B = C = 0."""
+
+    def counts(V: Any, E: Any, F: Any) -> Counts:
+        V2, E2, F2, _, _ = open_counts(V, E, F, 0, 0)
+        return V2, E2, F2
+
+    return counts
+
+
+def _scheme(*args: Any, open_counts: Callable[..., OpenCounts], **kw: Any) -> Scheme:
+    """A :class:`Scheme` whose closed counts are its open counts at B = C = 0 (one formula)."""
+    name, func, label, paper, conway = args
+    return Scheme(
+        name, func, label, paper, conway, _closed(open_counts), open_counts=open_counts, **kw
+    )
+
+
+def dual_counts(V: int, E: int, F: int, B: int = 0, C: int = 0) -> OpenCounts:
+    """The counts of the dual: ``(F + B + C, E + B + C, V, B + C, C)``.
+
+    A vertex per face, per boundary edge (its midpoint) and per corner
+    (kept), a face per vertex (see :func:`pentanb.dual`); ``(F, E, V)``
+    when closed.
+
+    Parameters
+    ----------
+    V, E, F, B, C : int
+        Vertices, edges, faces, boundary edges and corners of the input.
+
+    Returns
+    -------
+    (int, int, int, int, int)
+        ``(V', E', F', B', C')``.
+    """
+    return F + B + C, E + B + C, V, B + C, C
+
+
+def open_counts_after(
+    counts: OpenCounts, scheme: str | Scheme, iterations: int = 1, duals: int = 2
+) -> list[OpenCounts]:
+    """The (V, E, F, B) after every step of :func:`pentanb.subdivide`, boundary included.
+
+    Parameters
+    ----------
+    counts : (V, E, F, B, C)
+        The input's vertices, edges, faces, boundary edges
+        (``mesh.n_boundary_edges``) and corners
+        (``len(pentanb.schemes.boundary_corners(mesh))``).
+    scheme : str or Scheme
+        A registered scheme.
+    iterations, duals : int
+        As for :func:`pentanb.subdivide`.
+
+    Returns
+    -------
+    list of (V, E, F, B, C)
+        One entry per remeshing and per dual, in order.
+
+    Raises
+    ------
+    ValueError
+        A scheme that is not registered or whose open counts are not known.
+    """
+    s = get_scheme(scheme)
+    if not isinstance(s, Scheme) or s.open_counts is None:
+        raise ValueError(f"no open counts for {scheme!r}")
+    out: list[OpenCounts] = []
+    V, E, F, B, C = counts
+    for _ in range(iterations):
+        V, E, F, B, C = s.open_counts(V, E, F, B, C)
+        out.append((V, E, F, B, C))
+        for _ in range(duals):
+            V, E, F, B, C = dual_counts(V, E, F, B, C)
+            out.append((V, E, F, B, C))
+    return out
 
 
 _LIST = [
-    Scheme(
+    _scheme(
         "pentagonalize",
         pentagonal.pentagonalize,
         "Pentagonalization",
         "Section 5.1, Figures 1, 6-9, 12",
         "gyro",
-        lambda V, E, F: (V + 2 * E + F, 5 * E, 2 * E),
+        # a pentagon per half-edge (2E - B), every edge in three (3B on the boundary)
+        open_counts=lambda V, E, F, B, C: (V + 2 * E + F, 5 * E - B, 2 * E - B, 3 * B, C),
         family="pentagonal",
     ),
-    Scheme(
+    _scheme(
         "preserve_pentagons",
         pentagonal.preserve_pentagons,
         "Pentagon preservation",
         "Section 5.2, Figures 1D, 10, 11",
         "quinto (scale 0.5)",
-        lambda V, E, F: (V + 3 * E, 6 * E, F + 2 * E),
-        {"scale": 0.75},
+        # midpoints, a copy vertex per half-edge; a copy per face, a pentagon per half-edge
+        open_counts=lambda V, E, F, B, C: (V + 3 * E - B, 6 * E - 2 * B, F + 2 * E - B, 2 * B, C),
+        options={"scale": 0.75},
         family="pentagonal",
     ),
-    Scheme(
+    _scheme(
         "triangulate",
         classic.triangulate,
         "Simplest triangulation",
         "Figure 2",
         None,
-        # all triangles (2E = 3F): kept as they are; else at most (exact
-        # without triangles)
-        lambda V, E, F: (V, E, F) if 2 * E == 3 * F else (V + F, 3 * E, 2 * E),
+        # all triangles (2E - B = 3F): kept as they are; else at most (exact
+        # without triangles); the boundary is kept
+        open_counts=lambda V, E, F, B, C: (
+            (V, E, F, B, C) if 2 * E - B == 3 * F else (V + F, 3 * E - B, 2 * E - B, B, 0)
+        ),
         exact_counts=False,
         bound="when no face is a triangle",
     ),
-    Scheme(
+    _scheme(
         "loop_remesh",
         classic.loop_remesh,
         "Loop remeshing",
         "Section 3, Figure 3",
         "subdivide",
-        lambda V, E, F: (V + E, 4 * E, F + 2 * E),
+        open_counts=lambda V, E, F, B, C: (V + E, 4 * E - B, F + 2 * E - B, 2 * B, C),
     ),
-    Scheme(
+    _scheme(
         "sqrt3_remesh",
         classic.sqrt3_remesh,
         "sqrt(3) remeshing",
         "Section 3",
         None,
-        lambda V, E, F: (V + F, 3 * E, 2 * E),
+        # the boundary kept: a triangle (u, w, c_f) on every boundary half-edge
+        # (which gives a corner a second face)
+        open_counts=lambda V, E, F, B, C: (V + F, 3 * E - B, 2 * E - B, B, 0),
     ),
-    Scheme(
+    _scheme(
         "vertex_insertion",
         classic.vertex_insertion,
         "Vertex insertion (Catmull-Clark)",
         "Section 3",
         "ortho",
-        lambda V, E, F: (V + E + F, 4 * E, 2 * E),
+        open_counts=lambda V, E, F, B, C: (V + E + F, 4 * E - B, 2 * E - B, 2 * B, C),
     ),
-    Scheme(
+    _scheme(
         "corner_cutting",
         classic.corner_cutting,
         "Corner cutting (Doo-Sabin)",
         "Section 3",
         "expand",
-        lambda V, E, F: (2 * E, 4 * E, V + E + F),
-        {"scale": 0.5},
+        # a point per half-edge, two per boundary edge (Chaikin's), the corners kept
+        open_counts=lambda V, E, F, B, C: (2 * E + B + C, 4 * E + B + C, V + E + F, 2 * B + C, C),
+        options={"scale": 0.5},
     ),
-    Scheme(
+    _scheme(
         "preserve_hexagons",
         classic.preserve_hexagons,
         "Hexagon preservation (dual of Loop)",
         "Section 4, Figures 4-5",
         "chamfer",
-        lambda V, E, F: (V + 2 * E, 4 * E, F + E),
-        {"scale": 0.5},
+        # a copy point per half-edge and every boundary edge in three; a corner
+        # gets a second face
+        open_counts=lambda V, E, F, B, C: (V + 2 * E + B, 4 * E + B, F + E, 3 * B, 0),
+        options={"scale": 0.5},
     ),
-    Scheme(
+    _scheme(
         "honeycomb",
         classic.honeycomb,
         "Honeycomb (dual of sqrt(3))",
         "Section 6, Figure 13",
         "zip",
-        lambda V, E, F: (2 * E, 3 * E, V + F),
+        # a point per half-edge and per boundary edge (its midpoint), the corners kept
+        open_counts=lambda V, E, F, B, C: (2 * E + C, 3 * E + C, V + F, B + C, C),
     ),
 ]
 

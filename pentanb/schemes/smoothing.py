@@ -5,6 +5,27 @@ even number of times to create a smooth mesh."  The dual puts a vertex at
 each face's centroid and makes a face of each vertex; applied twice it gives
 back the mesh's type with every vertex moved to the average of the centroids
 of its neighbouring faces.
+
+On an open mesh the dual stays open.  Its vertices are the face centroids,
+the midpoints of the boundary edges and the boundary's *corners*
+(:func:`~pentanb.schemes._build.boundary_corners`: vertices of one face
+where the boundary turns by more than 30 degrees), kept where they are.  A
+boundary vertex's face goes round its faces' centroids and is closed along
+the boundary through the midpoints of its two boundary edges, and through
+the vertex itself at a corner.  A vertex of one face on a straight boundary
+is cut off like the others (pentagonalization leaves one at two thirds of
+every boundary edge: keeping them would pin the boundary to its first
+polygon); a corner is kept, as Catmull-Clark's and Doo-Sabin's boundary
+rules keep theirs (cut off, the faces next to it fold after a few
+iterations).  So the dual's boundary is the polygon of the midpoints of the
+boundary's edges, corners kept, and two duals replace every boundary vertex
+p_i that is not a corner by ``(p_{i-1} + 2 p_i + p_{i+1}) / 4``: two rounds
+of midpoint averaging, as in Lane and Riesenfeld's B-spline subdivision.  After a
+remeshing that splits boundary edges at their midpoints (pentagon
+preservation, Loop's, vertex insertion) that makes the boundary follow
+cubic B-spline subdivision, the boundary rule of Loop and Catmull-Clark;
+after pentagonalization's trisection, the ternary scheme of mask
+``(1, 4, 8, 10, 8, 4, 1) / 12``, which is C1.
 """
 
 from __future__ import annotations
@@ -13,7 +34,15 @@ import numpy as np
 
 from ..mesh import Mesh
 from ..mesh import build as _mesh
-from ._build import check_count, check_mesh, check_vertex_faces, inverse, output
+from ._build import (
+    check_count,
+    check_mesh,
+    check_vertex_faces,
+    corner_ids,
+    inverse,
+    open_vertex_faces,
+    output,
+)
 
 __all__ = ["dual", "smooth"]
 
@@ -24,7 +53,8 @@ def dual(mesh: Mesh) -> Mesh:
     Parameters
     ----------
     mesh : Mesh
-        Any closed polygon mesh with V vertices, E edges and F faces.
+        Any polygon mesh with V vertices, E edges and F faces; open meshes
+        too (B boundary edges, C corners: boundary vertices of one face).
 
     Returns
     -------
@@ -33,6 +63,15 @@ def dual(mesh: Mesh) -> Mesh:
         faces; face ``v`` of the dual goes round vertex ``v`` of ``mesh``
         counter-clockwise, so the orientation (the sign of the enclosed
         volume) is kept.  A k-valent vertex becomes a k-gon.
+
+        Open (B boundary edges, C corners): F + B + C vertices (the
+        centroids, the midpoints of the boundary edges in the order of
+        :attr:`~pentanb.Mesh.boundary_halfedges`, then the corners in
+        vertex order, where they are), E + B + C edges, V faces, B + C
+        boundary edges and the same C corners.  The face of a boundary
+        vertex with k faces has k + 2 sides (k + 3 at a corner): the
+        module's docstring gives the rule and the curve scheme the
+        boundary follows.
 
     Notes
     -----
@@ -51,6 +90,8 @@ def dual(mesh: Mesh) -> Mesh:
         meshes; only ``Mesh.from_csr(..., validate=False)`` can build one.
     """
     check_mesh(mesh, "dual")
+    if not mesh.is_closed:
+        return _open_dual(mesh)
     source_offsets = _mesh.dual_source_offsets(mesh)
     if source_offsets is not None:
         # mesh is itself a dual: its vertex f is the source's face f, with as
@@ -73,7 +114,35 @@ def dual(mesh: Mesh) -> Mesh:
         twin=lambda: _dual_twin(faces),
         rings=lambda: (inverse(faces.vertex_ring[0]), faces.offsets),
         dual_of=mesh,
+        closed=True,
     )
+    _mesh.note_extent(out, _mesh.extent(mesh))
+    return out
+
+
+def _open_dual(mesh: Mesh) -> Mesh:
+    """The dual of an open mesh (numpy; its twins and rings derived when asked for).
+
+    Vertices: the F face centroids, the B midpoints of the boundary edges,
+    then the C corners.  The face of vertex v: the centroids of v's faces
+    in its ring's order, preceded on the boundary by the midpoint of the
+    boundary edge entering v, v itself at a corner, and the midpoint of the
+    one leaving it.
+    """
+    check_vertex_faces(mesh, "dual")
+    F, bh = mesh.n_faces, mesh.boundary_halfedges
+    B = bh.size
+    kept = corner_ids(mesh, F + B)
+    mids = np.arange(F, F + B, dtype=np.int64)
+    corners, offsets = open_vertex_faces(mesh, (mesh.halfedge_face,), mids, mids, kept)
+    v = mesh.vertices
+    at = np.flatnonzero(kept >= 0)
+    vertices = np.empty((F + B + at.size, 3))
+    vertices[:F] = mesh.face_centroids
+    a, b = v[mesh.corners[bh]], v[mesh.head[bh]]
+    vertices[F : F + B] = 0.5 * a + 0.5 * b  # (no sum that could overflow)
+    vertices[F + B :] = v[at]
+    out = output(vertices, corners, offsets)
     _mesh.note_extent(out, _mesh.extent(mesh))
     return out
 
