@@ -9,14 +9,19 @@
 #     versions of pentanb/viz/js_versions.json (the one place they are
 #     written; pentanb.viz.html reads the same file), in a cache folder
 #     outside the repository: $PENTANB_JS_DIR, default
-#     ${XDG_CACHE_HOME:-$HOME/.cache}/pentanb/js.
+#     ${XDG_CACHE_HOME:-$HOME/.cache}/pentanb/js,
+#   * in the same folder, the npm packages that only the documentation site
+#     needs (MathJax), at the versions of docs/js_versions.json (docs/conf.py
+#     reads it too).
 # Safe to run again: each step is skipped when its result is already there.
 #
 # Usage: bash .ci/browser-setup.sh [python]
 set -euo pipefail
 
 PY="${1:-${PYTHON:-}}"
-JS_VERSIONS="$(cd "$(dirname "$0")/.." && pwd)/pentanb/viz/js_versions.json"
+REPO="$(cd "$(dirname "$0")/.." && pwd)"
+JS_VERSIONS="$REPO/pentanb/viz/js_versions.json"
+DOCS_JS_VERSIONS="$REPO/docs/js_versions.json"
 JS_DIR="${PENTANB_JS_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/pentanb/js}"
 
 apt_updated=0
@@ -38,13 +43,16 @@ if [ -n "$PY" ] && ! "$PY" -c "import playwright" 2>/dev/null; then
     "$PY" -m pip install --quiet "playwright>=1.40"
 fi
 
-# "name@version" for every package of js_versions.json not yet in the cache
-# at that version
-mapfile -t packages < <("${PY:-python3}" - "$JS_VERSIONS" "$JS_DIR" <<'PYTHON'
+# "name@version" for every package of the js_versions.json files not yet in
+# the cache at that version
+mapfile -t packages < <("${PY:-python3}" - "$JS_DIR" "$JS_VERSIONS" "$DOCS_JS_VERSIONS" <<'PYTHON'
 import json, pathlib, sys
-wanted = json.loads(pathlib.Path(sys.argv[1]).read_text())
+wanted = {}
+for path in sys.argv[2:]:
+    if pathlib.Path(path).is_file():
+        wanted.update(json.loads(pathlib.Path(path).read_text()))
 for name, version in wanted.items():
-    installed = pathlib.Path(sys.argv[2], "node_modules", name, "package.json")
+    installed = pathlib.Path(sys.argv[1], "node_modules", name, "package.json")
     if not installed.is_file() or json.loads(installed.read_text()).get("version") != version:
         print(f"{name}@{version}")
 PYTHON
