@@ -1,4 +1,4 @@
-"""The command line: ``python -m pentanb [demo | figures --out DIR]``.
+"""The command line: ``python -m pentanb [demo | figures --out DIR | docs]``.
 
 ``demo`` (the default) runs every scheme of :data:`pentanb.SCHEMES` on the
 Platonic solids and a torus and prints V, E, F, face sizes and valences.
@@ -142,6 +142,36 @@ def _demo(args) -> int:
     return 0
 
 
+def _docs(args) -> int:
+    """Build the documentation site (docs/conf.py) with warnings as errors."""
+    import importlib.util
+    import subprocess
+
+    root = Path(__file__).resolve().parent.parent
+    if not (root / "docs" / "conf.py").is_file():
+        print(f"pentanb docs: no docs/conf.py in {root}; run it from a clone", file=sys.stderr)
+        return 2
+    missing = [m for m in ("sphinx", "myst_nb", "numpydoc") if importlib.util.find_spec(m) is None]
+    if missing:
+        print(
+            f'pentanb docs: {", ".join(missing)} missing; pip install -e ".[docs]"',
+            file=sys.stderr,
+        )
+        return 2
+    out = Path(args.out) if args.out else root / "docs" / "_build" / "html"
+    cmd = [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-b", "html"]
+    cmd += ["-c", str(root / "docs"), str(root), str(out)]
+    if args.force:  # the executed notebooks are kept beside the output folder
+        import shutil
+
+        shutil.rmtree(out.parent / ".jupyter_cache", ignore_errors=True)
+    print(" ".join(cmd), file=sys.stderr, flush=True)
+    status = subprocess.call(cmd, cwd=root)
+    if status == 0:
+        print(f"open {out / 'index.html'}", file=sys.stderr)
+    return status
+
+
 def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="pentanb",
@@ -165,6 +195,12 @@ def _parser() -> argparse.ArgumentParser:
         ),
     )
     f.set_defaults(func=_figures)
+    s = sub.add_parser(
+        "docs", help="build the documentation site (Sphinx, notebooks executed, offline)"
+    )
+    s.add_argument("--out", help="output folder (default: docs/_build/html)")
+    s.add_argument("--force", action="store_true", help="execute every notebook again")
+    s.set_defaults(func=_docs)
     return p
 
 
