@@ -9,7 +9,7 @@ floating point:
   (Berkowitz's division-free algorithm on the integer matrix ``D M``);
 * :func:`count_inside`: how many roots of a rational polynomial lie in the
   open disc ``|z| < rho`` (the Schur-Cohn test; Marden, *Geometry of
-  Polynomials*, 1966, Theorem 42.1), for a rational ``rho``;
+  Polynomials*, 1966, Ch. X), for a rational ``rho``;
 * :func:`real_roots`: how many distinct real roots lie in ``(a, b]``
   (Sturm's theorem);
 * :func:`gcd`, :func:`squarefree`: exact Euclid, with every remainder made a
@@ -211,7 +211,8 @@ def count_inside(p: Sequence, rho) -> int | None:
     of ``f_j`` at its nominal degree ``n - j``), ``delta_j = f_j(0)``; when
     no ``delta_j`` vanishes, no root lies on the circle and the number
     inside is the number of negative products ``delta_1 ... delta_k``
-    (Marden 1966, Theorem 42.1).  Exact for rational ``rho > 0``.
+    (the Schur-Cohn theorem; Marden 1966, Ch. X).  Exact for rational
+    ``rho > 0``; checked against numpy's roots by the tests.
 
     Returns
     -------
