@@ -21,7 +21,8 @@ valence or a face of some size that survives every level:
    subdominant eigenvalue (real, or a complex pair).  A simple ``lambda1``
    gives no pair, and where its eigenvector has Fourier mode 0 no map built
    on it is injective and the limit normal turns around the element; three
-   or more eigenvalues of the subdominant modulus give a cone point
+   or more eigenvalues of the subdominant modulus leave rings that are not
+   flat, so no tangent plane either
    (:attr:`LocalSpectrum.map_obstruction`).
 3. The *characteristic map* is the limit of subdividing the planar control
    net whose coordinates are the two subdominant eigenvectors; it exists
@@ -550,7 +551,8 @@ class LocalSpectrum:
         normal turns around the element with the next (mode +-1) terms: no
         tangent plane.  With three or more eigenvalues of the subdominant
         modulus the leading term maps the rings into space, not a plane: for
-        generic control points the limit has a cone point there.
+        generic control points the rings it leaves are not flat: no tangent
+        plane.
         """
         if not self.stationary:
             return self.note or "no stationary neighbourhood"
@@ -2656,6 +2658,9 @@ class ScaleStudy:
         The smallest gap at the package's default scale, 3/4.
     exact_at_recommended : dict
         ``{(kind, size): ExactSpectrum}`` at the recommended scale.
+    limiting : tuple of (kind, size)
+        The elements whose gap at the recommended scale is within 5 % of the
+        smallest, smallest first (those that fix the optimum).
     """
 
     grid: NDArray[np.float64]
