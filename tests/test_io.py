@@ -256,12 +256,13 @@ def test_obj_without_faces(tmp_path):
 
 
 def test_obj_non_manifold_raises_the_mesh_message_prefixed_with_the_file(tmp_path):
-    lines = _cube_obj_lines()[:-1]  # the cube minus its last face
-    path = write_text(tmp_path / "open.obj", lines)
+    lines = _cube_obj_lines()
+    lines[-1] = "f " + " ".join(reversed(lines[-1].split()[1:]))  # the last face flipped
+    path = write_text(tmp_path / "flipped.obj", lines)
     with pytest.raises(
         MeshError,
-        match=rf"^{esc(path)}: edge \(\d+, \d+\) of face \d+ has only "
-        r"one side \(a boundary\)",
+        match=rf"^{esc(path)}: directed edge \(\d+, \d+\) is used by faces \[\d+, \d+\]: "
+        r"inconsistent orientation",
     ):
         read(path)
 
@@ -386,10 +387,9 @@ def test_off_face_index_out_of_range(tmp_path):
 
 def test_off_non_manifold_raises_the_mesh_message_prefixed_with_the_file(tmp_path):
     lines = _cube_off_lines()
-    lines[1] = "8 5 12"
-    lines = lines[:-1]
-    path = write_text(tmp_path / "open.off", lines)
-    with pytest.raises(MeshError, match=rf"^{esc(path)}: edge .* \(a boundary\)"):
+    lines[-1] = "4 " + " ".join(reversed(lines[-1].split()[1:]))  # the last face flipped
+    path = write_text(tmp_path / "flipped.off", lines)
+    with pytest.raises(MeshError, match=rf"^{esc(path)}: directed edge .* inconsistent"):
         read(path)
 
 
