@@ -936,7 +936,7 @@ def test_claim_scale_more_duals_fails_on_two_duals_filed_as_four(scale_data):
 
 @pytest.mark.slow
 @falsifies("scale.recommended")
-def test_claim_scale_recommended_fails_below_the_threshold(scale_data):
+def test_claim_scale_recommended_fails_on_scales_below_the_threshold(scale_data):
     # the exact ordering just below 5/7 in place of the triangle's at 7/8, and 3/4
     # recommended in place of 7/8: each makes the observation unseen
     below = scale_data.thresholds[(2, "face", 3)].exact_at
