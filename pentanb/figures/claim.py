@@ -180,8 +180,15 @@ class Claim:
         return self.cause or self.key
 
     def tag(self) -> str:
-        """The head of the statement: ``[holds]``, ``[consistency check: holds]`` or
-        ``[observation]``, then the key and a ``FINDING`` or ``REGRESSION`` mark."""
+        """The head of the statement as the report prints it.
+
+        Returns
+        -------
+        str
+            ``[holds]`` (a claim's verdict), ``[consistency check: holds]`` or
+            ``[observation]``, then the key, then ``  FINDING`` for a claim that
+            does not hold or ``  REGRESSION (recorded: ...)``.
+        """
         if self.kind == CLAIM:
             head = f"[{self.verdict}]"
         elif self.kind == CHECK:
