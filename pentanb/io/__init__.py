@@ -20,6 +20,8 @@ format    read                                   write
 anything; a failure leaves no half-written file.  Every reader reads its
 file as bytes in blocks, checks counts as it goes (a damaged file fails at
 its first inconsistency) and names the file and line of what it refuses.
+``read`` takes a path (a regular file or a pipe: a FIFO, ``/dev/stdin``) or
+a binary file object; see :func:`read`.
 
 Other libraries (imported only when these are called; ``pip install
 pentanb[convert]``): :func:`from_trimesh`, :func:`to_trimesh`,
@@ -29,11 +31,20 @@ pentanb[convert]``): :func:`from_trimesh`, :func:`to_trimesh`,
 from __future__ import annotations
 
 import os
-from typing import Any
+from pathlib import Path
+from typing import IO, Any
 
 from ..mesh import Mesh
 from . import obj, off, ply, stl
-from ._common import FORMATS, IgnoredDataWarning, as_path, check_mesh, format_of, write_as
+from ._common import (
+    FORMATS,
+    IgnoredDataWarning,
+    as_path,
+    check_mesh,
+    format_of,
+    name_of,
+    write_as,
+)
 from .convert import from_meshio, from_trimesh, to_meshio, to_trimesh
 from .obj import read_obj, write_obj
 from .off import read_off, write_off
@@ -83,14 +94,25 @@ def _check_options(caller: str, format: str, options: dict[str, Any], known: tup
         raise TypeError(f"{caller}: format {format!r} takes {takes}; got {', '.join(unknown)}")
 
 
-def read(path: str | os.PathLike, format: str | None = None, **options: Any) -> Mesh:
+def read(path: str | os.PathLike | IO[bytes], format: str | None = None, **options: Any) -> Mesh:
     """Read a mesh from an OBJ, OFF, PLY or STL file.
 
     Parameters
     ----------
-    path : str or path-like
+    path : str, path-like or binary file object
+        A path to a regular file or to a pipe (a FIFO, ``/dev/stdin`` under
+        ``cat mesh.ply | python ...``), or a binary file object
+        (``io.BytesIO``, ``open(p, "rb")``, ``sys.stdin.buffer``), read from
+        its position and left open.  Every format reads from a stream that
+        cannot seek; memory then grows with the bytes that arrive, never
+        with the counts a header claims (binary PLY and STL from a pipe are
+        held in memory whole, as binary PLY from a file is).  A FIFO is
+        opened without blocking: with no writer it reads as empty.  A path
+        to a device (a terminal, ``/dev/zero``) is refused.
     format : {"obj", "off", "ply", "stl"}, optional
-        The file's format; default: from the suffix of ``path`` (any case).
+        The file's format; default: from the suffix of ``path`` (any case),
+        or of a file object's ``name``.  Needed for a name without a known
+        suffix (``/dev/stdin``, ``io.BytesIO``).
     **options
         Options of the format's reader: ``tolerance`` for STL (see
         :func:`read_stl`).
@@ -107,12 +129,22 @@ def read(path: str | os.PathLike, format: str | None = None, **options: Any) -> 
         whose mesh is not a closed manifold raises the mesh's own error,
         prefixed with the file name.
     ValueError
-        An unknown suffix (without ``format``) or format.
+        An unknown suffix (without ``format``) or format; a path to a
+        device or socket.
     TypeError
-        ``path`` is not a path, or an option the format does not take.
+        ``path`` is neither a path nor a binary file object (a text file
+        object is refused), or an option the format does not take.
     """
-    path = as_path(path, "read")
-    fmt = format_of(path, format)
+    name = name_of(path)
+    if name is None:
+        if format is None:
+            names = ", ".join(FORMATS.values())
+            raise ValueError(
+                f"read: a {type(path).__name__} has no file name to tell its format by; "
+                f"pass format= one of {names}"
+            )
+        name = Path()
+    fmt = format_of(name, format)
     _check_options("read", fmt, options, READ_OPTIONS[fmt])
     return _READERS[fmt](path, **options)
 
@@ -138,7 +170,9 @@ def write(mesh: Mesh, path: str | os.PathLike, format: str | None = None, **opti
         Before anything is written: a suffix that names no format and no
         ``format`` (the message names the suffix and the known ones), an
         unknown ``format``, a ``format`` that contradicts the suffix, or a
-        bad option value.
+        bad option value.  For binary STL (float32 coordinates) also a
+        ``MeshError``: a vertex float32 cannot hold, or triangles whose
+        corners meet at one float32 point (see :func:`write_stl`).
     TypeError
         ``mesh`` is not a :class:`~pentanb.Mesh`, ``path`` not a path, or an
         option the format does not take.
@@ -157,4 +191,5 @@ def write(mesh: Mesh, path: str | os.PathLike, format: str | None = None, **opti
         ply.check_write_options(**options)
     elif fmt == "stl":
         stl.check_write_options(**options)
+        options["prepared"] = stl.prepare(mesh, options.get("ascii", False))
     write_as(mesh, path, fmt, "write", _WRITERS[fmt], **options)

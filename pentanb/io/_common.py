@@ -1,6 +1,9 @@
 """What the readers and writers share.
 
 * the formats and how a path names one (:func:`format_of`);
+* what a reader reads (:func:`open_source`): a path to a regular file or a
+  pipe (FIFO, ``/dev/stdin``), or a binary file object; a device is refused
+  and a FIFO without a writer reads as empty instead of blocking;
 * writing to a temporary name and renaming (:func:`write_atomically`);
 * a text file read as bytes, in blocks of whole lines (:func:`line_blocks`),
   and the tokens of such a block located with whole-array numpy expressions
@@ -8,13 +11,19 @@
   a small multiple of the arrays read, and a damaged file fails at its first
   inconsistency, not after it has been loaded;
 * the mesh built from the arrays read (:func:`finish`), its errors
-  prefixed with the file name.
+  prefixed with the file name;
+* the error for a coordinate that is not a finite float64
+  (:func:`bad_coordinate`), and arrays of rows a header announces
+  (:class:`Rows`), allocated at once only when the file's size vouches for
+  the count.
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
 import io
+import math
 import os
 import secrets
 import stat
@@ -39,7 +48,14 @@ BLOCK_BYTES = 1 << 20
 #: The longest line a text mesh file may have; longer means a damaged or binary file.
 MAX_LINE_BYTES = 1 << 24
 
-_BOM = b"\xef\xbb\xbf"
+#: The most rows a header may announce for one element (or an OFF count):
+#: more than any file holds, and small enough for exact int64 arithmetic.
+MAX_COUNT = 1 << 48
+
+#: Bytes read at a time from a pipe whose length is not known in advance.
+STREAM_BYTES = 1 << 24
+
+BOM = _BOM = b"\xef\xbb\xbf"
 
 
 class IgnoredDataWarning(UserWarning):
@@ -55,6 +71,157 @@ def as_path(path: Any, caller: str) -> Path:
             f"{caller} expects a file path (str or os.PathLike), got {type(path).__name__}"
         )
     return Path(path)
+
+
+def is_file_object(source: Any) -> bool:
+    """Whether ``source`` is a file object (has ``read``), not a path."""
+    return hasattr(source, "read") and not isinstance(source, (str, bytes, os.PathLike))
+
+
+def name_of(source: Any) -> Path | None:
+    """The path whose suffix tells the format of ``source``: the path itself,
+    or a file object's ``name`` when that is a path (None otherwise)."""
+    if not is_file_object(source):
+        return as_path(source, "read")
+    name = getattr(source, "name", None)
+    if isinstance(name, (str, bytes, os.PathLike)):
+        return Path(os.fsdecode(name))
+    return None
+
+
+@dataclass
+class Source:
+    """An open input: ``fh`` (binary), ``name`` for messages, and ``size``,
+    the bytes from the current position to the end, or None for a pipe."""
+
+    fh: IO[bytes]
+    name: Path
+    size: int | None
+
+
+@contextlib.contextmanager
+def open_source(source: Any, caller: str) -> Iterator[Source]:
+    """Open what a reader is given: a path, or a binary file object.
+
+    * A path to a regular file is read; so is a path to a FIFO (a named
+      pipe, ``/dev/stdin`` under ``cat file |``): it is opened with
+      ``O_NONBLOCK``, which is then cleared, so a FIFO that no process
+      writes to reads as empty instead of blocking forever.
+    * A path to a device (a terminal, ``/dev/zero``, a disk) or a socket is
+      refused with a ValueError before anything is read; a directory raises
+      IsADirectoryError.
+    * A binary file object (``io.BytesIO``, ``open(path, "rb")``,
+      ``sys.stdin.buffer``) is read from its current position and left open.
+
+    Raises
+    ------
+    TypeError
+        ``source`` is neither a path nor a binary file object (a text file
+        object is refused: its bytes are not what is in the file).
+    ValueError
+        A device or socket path.
+    """
+    if is_file_object(source):
+        if isinstance(source, io.TextIOBase) or not isinstance(source.read(0), bytes):
+            raise TypeError(
+                f"{caller} expects a path or a binary file object (open(path, 'rb')), "
+                f"got a text file object ({type(source).__name__})"
+            )
+        name = getattr(source, "name", None)
+        shown = os.fsdecode(name) if isinstance(name, (str, bytes, os.PathLike)) else None
+        yield Source(source, Path(shown or f"<{type(source).__name__}>"), _remaining(source))
+        return
+    path = as_path(source, caller)
+    nonblock = getattr(os, "O_NONBLOCK", 0)  # POSIX: a FIFO opens without waiting
+    fd = os.open(path, os.O_RDONLY | nonblock | getattr(os, "O_BINARY", 0))
+    try:
+        mode = os.fstat(fd).st_mode
+        if stat.S_ISDIR(mode):
+            raise IsADirectoryError(errno.EISDIR, os.strerror(errno.EISDIR), str(path))
+        if not (stat.S_ISREG(mode) or stat.S_ISFIFO(mode)):
+            kind = (
+                "a character device (a terminal or a device such as /dev/zero)"
+                if stat.S_ISCHR(mode)
+                else "a block device"
+                if stat.S_ISBLK(mode)
+                else "a socket or other special file"
+            )
+            raise ValueError(
+                f"{path} is {kind}, not a file: pentanb reads regular files and pipes only"
+            )
+        if nonblock:
+            os.set_blocking(fd, True)  # reads wait for a writer's data again
+        fh = os.fdopen(fd, "rb")
+    except BaseException:
+        os.close(fd)
+        raise
+    with fh:
+        yield Source(fh, path, os.fstat(fd).st_size if stat.S_ISREG(mode) else None)
+
+
+def _remaining(fh: Any) -> int | None:
+    """Bytes from a file object's position to its end, or None (a pipe)."""
+    try:
+        if not fh.seekable():
+            return None
+        at = fh.tell()
+        end = fh.seek(0, os.SEEK_END)
+        fh.seek(at)
+    except (OSError, AttributeError, ValueError):
+        return None
+    return max(0, int(end) - int(at))
+
+
+def read_after(fh: IO[bytes], head: bytes, n: int | None) -> bytes | np.ndarray:
+    """``head`` followed by the next ``n`` bytes of ``fh`` (fewer at its end), or
+    by all the rest for ``n=None``.  A known ``n`` (from the size of a file,
+    never from a header's count) is read into one buffer, a uint8 array."""
+    if n is None:
+        return read_rest(fh, head)
+    out = np.empty(len(head) + n, dtype=np.uint8)  # not zero-filled: read over at once
+    out[: len(head)] = np.frombuffer(head, dtype=np.uint8)
+    view = memoryview(out.data)
+    got = len(head)
+    while got < out.size:
+        k = fh.readinto(view[got:]) if hasattr(fh, "readinto") else None
+        if k is None:  # no readinto, or a non-blocking read without data
+            more = fh.read(out.size - got) or b""
+            k = len(more)
+            out[got : got + k] = np.frombuffer(more, dtype=np.uint8)
+        if not k:
+            return out[:got]
+        got += k
+    return out
+
+
+def read_exactly(fh: IO[bytes], n: int) -> bytes:
+    """``n`` bytes from ``fh``, or fewer at the end of the file.
+
+    Read in pieces of at most :data:`STREAM_BYTES`, so memory grows with the
+    bytes that arrive, never with a count a header claims."""
+    first = fh.read(min(n, STREAM_BYTES)) or b""
+    if len(first) == n or not first:
+        return first
+    parts = [first]
+    got = len(first)
+    while got < n:
+        more = fh.read(min(n - got, STREAM_BYTES))
+        if not more:
+            break
+        parts.append(more)
+        got += len(more)
+    return b"".join(parts)
+
+
+def read_rest(fh: IO[bytes], head: bytes = b"") -> bytes:
+    """``head`` and everything from ``fh`` to its end (a pipe: until its writer
+    closes it), read in pieces as they arrive."""
+    parts = [head]
+    while True:
+        more = fh.read(STREAM_BYTES)
+        if not more:
+            return b"".join(parts)
+        parts.append(more)
 
 
 def format_of(path: Path, format: str | None) -> str:
@@ -155,14 +322,21 @@ def show(line: bytes, limit: int = 60) -> str:
 
 
 def line_blocks(
-    fh: IO[bytes], path: Path, kind: str, block_bytes: int | None = None
+    fh: IO[bytes],
+    path: Path,
+    kind: str,
+    block_bytes: int | None = None,
+    head: bytes = b"",
+    start: bool = True,
 ) -> Iterator[tuple[int, bytes]]:
     """The file as blocks of whole lines: ``(number of the block's first line, bytes)``.
 
     Every block ends with ``b"\\n"``; blocks are about ``block_bytes``
-    long (default :data:`BLOCK_BYTES`).  A UTF-8 byte-order mark at the start
-    is dropped; a file whose lines end in a bare ``\\r`` (old Mac) is read
-    as if they ended in ``\\n``.
+    long (default :data:`BLOCK_BYTES`).  ``head``: bytes already read from
+    ``fh``, which come first.  At the ``start`` of a file a UTF-8
+    byte-order mark is dropped.  Lines may end in ``\\n``, ``\\r\\n`` or a
+    bare ``\\r`` (old Mac), mixed as they come: every one of them is made
+    ``\\n`` (one line break each).
 
     Raises
     ------
@@ -173,21 +347,7 @@ def line_blocks(
     block_bytes = block_bytes or BLOCK_BYTES
     lineno = 1
     rest = b""
-    first = True
-    cr_only = False
-    while True:
-        chunk = fh.read(block_bytes)
-        if first:
-            first = False
-            if chunk.startswith(_BOM):
-                chunk = chunk[len(_BOM) :]
-            cr_only = b"\r" in chunk and b"\n" not in chunk
-        if cr_only:
-            chunk = chunk.replace(b"\r", b"\n")
-        if not chunk:
-            if rest:
-                yield lineno, _checked(rest + b"\n", lineno, path, kind)
-            return
+    for chunk in _text_chunks(fh, block_bytes, head, start):
         data = rest + chunk if rest else chunk
         cut = data.rfind(b"\n")
         if cut < 0:
@@ -202,6 +362,40 @@ def line_blocks(
         block, rest = data[: cut + 1], data[cut + 1 :]
         yield lineno, _checked(block, lineno, path, kind)
         lineno += block.count(b"\n")
+    if rest:
+        yield lineno, _checked(rest + b"\n", lineno, path, kind)
+
+
+def _text_chunks(fh: IO[bytes], block_bytes: int, head: bytes, start: bool) -> Iterator[bytes]:
+    """The bytes of ``fh`` (after ``head``) in pieces, every line break made ``\\n``.
+
+    A ``\\r`` that ends a piece becomes ``\\n`` at once; a ``\\n`` that begins
+    the next piece is then the rest of that ``\\r\\n`` and is dropped.
+    """
+    data = head
+    if start:
+        while len(data) < len(_BOM):  # a short read must not split the mark
+            more = fh.read(block_bytes)
+            if not more:
+                break
+            data += more
+        if data.startswith(_BOM):
+            data = data[len(_BOM) :]
+    after_cr = False
+    while True:
+        if not data:
+            data = fh.read(block_bytes)
+            if not data:
+                return
+        if after_cr and data[:1] == b"\n":
+            data = data[1:]
+        after_cr = False
+        if b"\r" in data:
+            after_cr = data.endswith(b"\r")
+            data = data.replace(b"\r\n", b"\n").replace(b"\r", b"\n")
+        if data:
+            yield data
+        data = b""
 
 
 def _checked(block: bytes, lineno: int, path: Path, kind: str) -> bytes:
@@ -317,6 +511,72 @@ def parse_floats(data: np.ndarray, expected: int, columns: int | None = None) ->
     except ValueError:
         return None
     return values if values.size == expected else None
+
+
+_NON_FINITE = (b"inf", b"infinity", b"nan")
+
+
+def bad_coordinate(where: str, what: str, text: bytes, tokens: list[bytes]) -> MeshError | None:
+    """The error for the first of ``tokens`` (a line's coordinates) that is
+    not a finite float64, or None if all are.
+
+    ``where`` is ``"file:line"``, ``what`` the point (``"vertex 6"``); the
+    message tells a bad number, a non-finite one written as such (``nan``,
+    ``inf``) and one too large for float64 (``1e999``, a 400-digit integer)
+    apart, and shows the line.
+    """
+    for token in tokens:
+        try:
+            value = float(token)
+        except ValueError:
+            return MeshError(f"{where}: {what}: bad number {show(token)} in {show(text)}")
+        if math.isfinite(value):
+            continue
+        if token.lower().lstrip(b"+-") in _NON_FINITE:
+            return MeshError(
+                f"{where}: {what} has a non-finite coordinate ({token.decode()}) in "
+                f"{show(text)}: a mesh's positions must be finite"
+            )
+        return MeshError(
+            f"{where}: {what} has a coordinate {show(token, 30)} that overflows float64 (beyond "
+            f"+-{np.finfo(np.float64).max:.4g}) in {show(text)}"
+        )
+    return None
+
+
+class Rows:
+    """The ``count`` rows of one array a header announces, filled in order.
+
+    With ``allocate`` (the file's size has shown that ``count`` rows fit in
+    it) the array is allocated once and filled in place; without (a pipe,
+    whose length is unknown) the rows are kept as they arrive and joined at
+    the end, so a header cannot make the reader allocate rows that never
+    come.
+    """
+
+    def __init__(self, count: int, shape: tuple[int, ...], dtype: Any, allocate: bool) -> None:
+        self.count, self.shape, self.dtype = count, shape, dtype
+        self.filled = 0
+        self.array = np.empty((count, *shape), dtype=dtype) if allocate else None
+        self.parts: list[np.ndarray] = []
+
+    def put(self, at: int, values: np.ndarray) -> None:
+        """Rows ``at, at + 1, ...`` (``at`` is the next row to fill)."""
+        assert at == self.filled
+        if self.array is not None:
+            self.array[at : at + len(values)] = values
+        else:
+            self.parts.append(np.array(values, dtype=self.dtype))
+        self.filled += len(values)
+
+    def result(self) -> np.ndarray:
+        if self.array is not None:
+            return self.array
+        if not self.parts:
+            return np.empty((0, *self.shape), dtype=self.dtype)
+        out = np.concatenate(self.parts)
+        self.parts.clear()
+        return out
 
 
 def finish(path: Path, vertices: np.ndarray, corners: np.ndarray, offsets: np.ndarray) -> Mesh:

@@ -123,17 +123,24 @@ def from_meshio(mmesh: Any) -> Mesh:
     """
     if not (hasattr(mmesh, "points") and hasattr(mmesh, "cells")):
         raise TypeError(f"from_meshio expects a meshio.Mesh, got {type(mmesh).__name__}")
-    points = np.asarray(mmesh.points, dtype=np.float64)
+    try:
+        points = np.asarray(mmesh.points, dtype=np.float64)
+    except OverflowError:
+        raise MeshError("the meshio mesh has a point coordinate too large for float64") from None
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"the meshio mesh's points must be numbers: {exc}") from None
     if points.ndim != 2 or points.shape[1] != 3:
         raise MeshError(f"the meshio mesh's points must be (n, 3), got shape {points.shape}")
-    blocks, skipped, refused = [], [], []
+    blocks: list[np.ndarray] = []
+    skipped: list[str] = []
+    refused: list[str] = []
     for block in mmesh.cells:
         kind, data = block.type, np.asarray(block.data)
         if kind in MESHIO_POLYGONS:
             k = MESHIO_POLYGONS[kind]
             if data.ndim != 2 or (k is not None and data.shape[1] != k):
                 raise MeshError(f"a meshio {kind!r} block of shape {data.shape}")
-            blocks.append(data)
+            blocks.append(_cell_indices(data, kind, len(blocks)))
         elif kind in MESHIO_SKIPPED:
             skipped.append(kind)
         else:
@@ -160,6 +167,36 @@ def from_meshio(mmesh: Any) -> Mesh:
         return Mesh.from_csr(points, corners, offsets)
     except MeshError as exc:
         raise MeshError(f"the meshio mesh is not a closed, oriented manifold: {exc}") from None
+
+
+def _cell_indices(data: np.ndarray, kind: str, block: int) -> np.ndarray:
+    """A meshio cell block's indices as int64: integers as they are, floats
+    only if every one is a whole number (never truncated)."""
+    if data.dtype.kind in "iu":
+        if data.dtype == np.uint64 and data.size and data.max() >= 1 << 62:
+            raise MeshError(
+                f"meshio cell block {block} ({kind!r}): index {data.max()} out of range"
+            )
+        return data.astype(np.int64)
+    if data.dtype.kind != "f":
+        raise TypeError(
+            f"meshio cell block {block} ({kind!r}) holds {data.dtype} values; cell indices "
+            "must be integers"
+        )
+    with np.errstate(invalid="ignore"):
+        ok = (data == np.floor(data)) & (np.abs(data) < 1 << 62)
+    if not ok.all():
+        at = np.argwhere(~ok)[0]
+        value = float(data[tuple(at)])
+        why = (
+            "out of range"
+            if value == np.floor(value)
+            else "not a whole number (float cell indices are taken only when every one is)"
+        )
+        raise MeshError(
+            f"meshio cell block {block} ({kind!r}), cell {int(at[0])}: index {value!r} is {why}"
+        )
+    return data.astype(np.int64)
 
 
 def to_meshio(mesh: Mesh) -> Any:

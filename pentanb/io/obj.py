@@ -8,6 +8,7 @@ unusual but valid line: ``nan``, ``1_000``) or names the first bad line.
 
 from __future__ import annotations
 
+import math
 import os
 from pathlib import Path
 from typing import IO
@@ -17,12 +18,13 @@ import numpy as np
 from ..mesh import Mesh, MeshError
 from ._common import (
     Scan,
-    as_path,
+    bad_coordinate,
     check_mesh,
     contiguous,
     finish,
     line_blocks,
     offsets_of,
+    open_source,
     parse_floats,
     parse_ints,
     scan,
@@ -51,15 +53,25 @@ class _Part:
         self.first_line = first_line
 
 
-def read_obj(path: str | os.PathLike) -> Mesh:
+def read_obj(path: str | os.PathLike | IO[bytes]) -> Mesh:
     """Read an OBJ file: ``v`` and ``f`` lines.
 
     ``f 1/2/3`` and ``f 1//3`` (the vertex index comes first) and negative
     (relative) indices are understood, as are faces that refer to vertices
     defined further down; extra ``v`` components (``w``, colours) are
     ignored, and so are all other lines.  The file is read as bytes: any
-    encoding of comments and names is fine, and a UTF-8 byte-order mark is
-    skipped.
+    encoding of comments and names is fine, a UTF-8 byte-order mark is
+    skipped, and lines may end in LF, CRLF or CR, mixed.
+
+    Parameters
+    ----------
+    path : str, path-like or binary file object
+        The file to read: a regular file or a pipe (see :func:`pentanb.read`).
+
+    Returns
+    -------
+    Mesh
+        The vertices in the file's order, the faces as written.
 
     Raises
     ------
@@ -69,11 +81,11 @@ def read_obj(path: str | os.PathLike) -> Mesh:
         not a closed manifold raises the mesh's own error, prefixed with the
         file name.
     """
-    path = as_path(path, "read_obj")
     parts: list[_Part] = []
     nv = 0
-    with open(path, "rb") as fh:
-        for lineno, block in line_blocks(fh, path, "OBJ"):
+    with open_source(path, "read_obj") as src:
+        path = src.name
+        for lineno, block in line_blocks(src.fh, path, "OBJ"):
             part = _fast(block, nv, lineno)
             if part is None:
                 part = _slow(block, nv, lineno, path)
@@ -124,6 +136,8 @@ def _fast(block: bytes, nv: int, lineno: int) -> _Part | None:
             first = np.cumsum(count) - count
             vertices = values[first[:, None] + np.arange(3)]
         vertices = np.ascontiguousarray(vertices)
+        if not np.isfinite(vertices).all():
+            return None  # nan, inf or an overflow: the slow path names the line
 
     corners = np.zeros(0, dtype=np.int64)
     sizes = s.ntok[fl] - 1
@@ -181,9 +195,13 @@ def _slow(block: bytes, nv: int, lineno: int, path: Path) -> _Part:
             if len(parts) < 4:
                 raise MeshError(f"{path}:{n}: a 'v' line needs 3 coordinates: {show(line)}")
             try:
-                vertices.append([float(x) for x in parts[1:4]])
+                vertex = [float(x) for x in parts[1:4]]
             except ValueError:
                 raise MeshError(f"{path}:{n}: bad number in {show(line)}") from None
+            if not all(map(math.isfinite, vertex)):
+                what = f"vertex {nv + len(vertices)}"
+                raise bad_coordinate(f"{path}:{n}", what, line, parts[1:4]) or AssertionError
+            vertices.append(vertex)
         elif parts[0] == b"f":
             for token in parts[1:]:
                 try:
@@ -226,6 +244,12 @@ def write_obj(mesh: Mesh, path: str | os.PathLike) -> None:
     Coordinates are written with ``repr`` precision, so reading the file
     back gives the very same numbers.  A name ending in another format's
     suffix (``.off``) is refused (ValueError).
+
+    Parameters
+    ----------
+    mesh : Mesh
+    path : str or path-like
+        The file to write; its name is used as given.
     """
     write_as(mesh, path, "obj", "write_obj", _write)
 

@@ -16,11 +16,14 @@ import numpy as np
 
 from ..mesh import Mesh, MeshError
 from ._common import (
-    as_path,
+    MAX_COUNT,
+    Rows,
+    bad_coordinate,
     check_mesh,
     finish,
     line_blocks,
     offsets_of,
+    open_source,
     parse_floats,
     parse_ints,
     scan,
@@ -32,13 +35,24 @@ from .obj import write_faces, write_vertices
 __all__ = ["read_off", "write_off"]
 
 
-def read_off(path: str | os.PathLike) -> Mesh:
+def read_off(path: str | os.PathLike | IO[bytes]) -> Mesh:
     """Read an OFF file (header ``OFF``, counts, vertices, then ``k i1 .. ik`` faces).
 
     ``COFF``, ``NOFF`` and the like are read too: columns after a vertex's
     three coordinates and after a face's indices (colours, normals) are
     ignored.  Comments (``#``) and blank lines may appear anywhere.  The
-    file is read as bytes, so any encoding of its comments is fine.
+    file is read as bytes, so any encoding of its comments is fine; a UTF-8
+    byte-order mark is skipped, and lines may end in LF, CRLF or CR, mixed.
+
+    Parameters
+    ----------
+    path : str, path-like or binary file object
+        The file to read: a regular file or a pipe (see :func:`pentanb.read`).
+
+    Returns
+    -------
+    Mesh
+        The vertices in the file's order, the faces as written.
 
     Raises
     ------
@@ -48,11 +62,9 @@ def read_off(path: str | os.PathLike) -> Mesh:
         A file whose mesh is not a closed manifold raises the mesh's own
         error, prefixed with the file name.
     """
-    path = as_path(path, "read_off")
-    with open(path, "rb") as fh:
-        size = os.fstat(fh.fileno()).st_size
-        reader = _Reader(path, size)
-        for lineno, block in line_blocks(fh, path, "OFF"):
+    with open_source(path, "read_off") as src:
+        reader = _Reader(src.name, src.size)
+        for lineno, block in line_blocks(src.fh, src.name, "OFF"):
             reader.block(block, lineno)
         return reader.finish()
 
@@ -60,15 +72,15 @@ def read_off(path: str | os.PathLike) -> Mesh:
 class _Reader:
     """The state of an OFF file read block by block."""
 
-    def __init__(self, path: Path, size: int) -> None:
+    def __init__(self, path: Path, size: int | None) -> None:
         self.path = path
         self.size = size
         self.header: list[bytes] | None = None  # tokens after "OFF" until the counts are read
         self.header_line = 0
         self.nv = self.nf = -1
         self.seen = 0  # data lines after the header
-        self.vertices = np.zeros((0, 3))
-        self.sizes = np.zeros(0, dtype=np.int64)
+        self.vertices = Rows(0, (3,), np.float64, True)
+        self.sizes = Rows(0, (), np.int64, True)
         self.corners: list[np.ndarray] = []
 
     # ------------------------------------------------------------------ header
@@ -97,14 +109,20 @@ class _Reader:
             shown = show(b" ".join(head))
             raise MeshError(f"{path}:{self.header_line}: bad counts line {shown}") from None
         # every vertex line takes at least 6 bytes ("0 0 0\n"), every face line 2
-        if 6 * nv + 2 * nf > self.size + 1:
+        if self.size is not None and 6 * nv + 2 * nf > self.size + 1:
             raise MeshError(
                 f"{path}:{self.header_line}: the header says {nv:,} vertices and {nf:,} "
                 f"faces, more than a file of {self.size:,} bytes can hold"
             )
+        if max(nv, nf) >= MAX_COUNT:
+            raise MeshError(
+                f"{path}:{self.header_line}: the header says {nv:,} vertices and {nf:,} "
+                f"faces, more than any file holds (at most {MAX_COUNT:,} each)"
+            )
         self.nv, self.nf = nv, nf
-        self.vertices = np.empty((nv, 3))
-        self.sizes = np.empty(nf, dtype=np.int64)
+        known = self.size is not None  # a pipe: rows kept as they come
+        self.vertices = Rows(nv, (3,), np.float64, known)
+        self.sizes = Rows(nf, (), np.int64, known)
 
     # ------------------------------------------------------------------ body
     def block(self, block: bytes, lineno: int) -> None:
@@ -128,11 +146,11 @@ class _Reader:
         vl, fl = data[is_v], data[is_f]
         if vl.size:
             at = int(g[is_v][0])
-            self.vertices[at : at + vl.size] = self._read_vertices(s, vl, block, lineno)
+            self.vertices.put(at, self._read_vertices(s, vl, block, lineno))
         if fl.size:
             at = int(g[is_f][0]) - nv
             sizes, corners = self._faces(s, fl, block, lineno)
-            self.sizes[at : at + fl.size] = sizes
+            self.sizes.put(at, sizes)
             self.corners.append(corners)
         if data.size > vl.size + fl.size:
             line = int(data[vl.size + fl.size])
@@ -150,9 +168,12 @@ class _Reader:
         )
         if values is not None and count.min() >= 3:
             if uniform:
-                return values.reshape(-1, int(count[0]))[:, :3]
-            first = np.cumsum(count) - count
-            return values[first[:, None] + np.arange(3)]
+                got = values.reshape(-1, int(count[0]))[:, :3]
+            else:
+                first = np.cumsum(count) - count
+                got = values[first[:, None] + np.arange(3)]
+            if np.isfinite(got).all():
+                return got
         out = np.empty((vl.size, 3))
         for i, line in enumerate(vl.tolist()):
             text = _line(block, s, line)
@@ -165,6 +186,10 @@ class _Reader:
                 raise MeshError(
                     f"{self.path}:{lineno + line}: bad vertex line {show(text.split(b'#')[0])}"
                 ) from None
+            what = f"vertex {self.vertices.filled + i}"
+            error = bad_coordinate(f"{self.path}:{lineno + line}", what, text, parts[:3])
+            if error is not None:
+                raise error
         return out
 
     def _faces(self, s, fl: np.ndarray, block: bytes, lineno: int) -> tuple[np.ndarray, np.ndarray]:
@@ -215,7 +240,7 @@ class _Reader:
             )
         corners = np.concatenate(self.corners) if self.corners else np.zeros(0, np.int64)
         self.corners.clear()
-        return finish(path, self.vertices, corners, offsets_of(self.sizes))
+        return finish(path, self.vertices.result(), corners, offsets_of(self.sizes.result()))
 
 
 def _line(block: bytes, s, line: int) -> bytes:
@@ -227,6 +252,12 @@ def write_off(mesh: Mesh, path: str | os.PathLike) -> None:
     """Write an OFF file to exactly ``path`` (coordinates in ``repr`` precision).
 
     A name ending in another format's suffix (``.obj``) is refused (ValueError).
+
+    Parameters
+    ----------
+    mesh : Mesh
+    path : str or path-like
+        The file to write; its name is used as given.
     """
     write_as(mesh, path, "off", "write_off", _write)
 

@@ -15,6 +15,7 @@ layout (faces of one size) at a time; text rows block by block as in
 from __future__ import annotations
 
 import os
+import re
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -24,13 +25,18 @@ import numpy as np
 
 from ..mesh import Mesh, MeshError
 from ._common import (
+    BOM,
+    MAX_COUNT,
     IgnoredDataWarning,
-    as_path,
+    Rows,
+    bad_coordinate,
     check_mesh,
     finish,
     line_blocks,
     offsets_of,
+    open_source,
     parse_floats,
+    read_after,
     scan,
     show,
     write_as,
@@ -61,6 +67,7 @@ TYPES = {
 }
 _ENCODINGS = {"ascii": None, "binary_little_endian": "<", "binary_big_endian": ">"}
 _INDEX_NAMES = ("vertex_indices", "vertex_index")
+_DIGITS = re.compile(r"[0-9]+")  # str.isdigit() takes '²' too
 #: Longest header line, and most header lines, a PLY file may have.
 MAX_HEADER_LINE = 4096
 MAX_HEADER_LINES = 10_000
@@ -97,22 +104,75 @@ class _Element:
         return np.dtype(fields)
 
 
-def _read_header(fh: IO[bytes], path: Path) -> tuple[str | None, list[_Element], int]:
-    """Read the header: (byte order or None for ASCII, elements, lines read)."""
-    first = fh.readline(16)
-    if first.startswith(b"\xef\xbb\xbf"):
-        first = first[3:]
-    if first.rstrip(b"\r\n") != b"ply":
+class _HeaderLines:
+    """The lines of a PLY header, read from the stream without seeking.
+
+    A line ends in ``\\n``, ``\\r\\n`` or a bare ``\\r``.  ``rest`` holds the
+    bytes read past the line last returned (the start of the body).
+    """
+
+    _EOL = re.compile(rb"\r\n?|\n")
+
+    def __init__(self, fh: IO[bytes]) -> None:
+        self.fh = fh
+        self.buf = b""
+        self.pos = 0
+        self.eof = False
+        self.consumed = 0  # bytes of the lines returned, line breaks included
+
+    def next(self, limit: int) -> tuple[bytes, bytes] | None:
+        """The next line and its line break (b"" at the end of the file); a
+        line longer than ``limit`` comes back cut at ``limit + 1`` bytes.
+        None at the end of the file."""
+        while True:
+            m = self._EOL.search(self.buf, self.pos)
+            # a "\r" that ends what was read may be half of a "\r\n"
+            if m and (m.end() < len(self.buf) or m.group() != b"\r" or self.eof):
+                line, self.pos = self.buf[self.pos : m.start()], m.end()
+                self.consumed += m.end() - m.start() + len(line)
+                return line, m.group()
+            if len(self.buf) - self.pos > limit:
+                return self.buf[self.pos : self.pos + limit + 1], b""
+            if self.eof:
+                if self.pos == len(self.buf):
+                    return None
+                line, self.pos = self.buf[self.pos :], len(self.buf)
+                self.consumed += len(line)
+                return line, b""
+            more = self.fh.read(1 << 16)
+            self.eof = not more
+            self.buf = self.buf[self.pos :] + (more or b"")
+            self.pos = 0
+
+    def unread(self, n: int) -> None:
+        """Give back the last ``n`` bytes returned (part of a line break)."""
+        self.pos -= n
+        self.consumed -= n
+
+    @property
+    def rest(self) -> bytes:
+        return self.buf[self.pos :]
+
+
+def _read_header(fh: IO[bytes], path: Path) -> tuple[str | None, list[_Element], int, _HeaderLines]:
+    """Read the header: (byte order or None for ASCII, elements, lines read, the line reader)."""
+    lines = _HeaderLines(fh)
+    got = lines.next(16)
+    first, first_break = got if got else (b"", b"")
+    if first.startswith(BOM):
+        first = first[len(BOM) :]
+    if first.rstrip() != b"ply":
         raise MeshError(f"{path}:1: not a PLY file (the first line is not 'ply')")
     order: str | None = None
     encoding = None
     elements: list[_Element] = []
     n = 1
     while True:
-        raw = fh.readline(MAX_HEADER_LINE + 1)
+        got = lines.next(MAX_HEADER_LINE)
         n += 1
-        if not raw:
+        if got is None:
             raise MeshError(f"{path}:{n}: the file ends inside the header (no 'end_header')")
+        raw, line_break = got
         if len(raw) > MAX_HEADER_LINE or n > MAX_HEADER_LINES:
             raise MeshError(f"{path}:{n}: a damaged PLY header (a line or the header too long)")
         if b"\x00" in raw:
@@ -122,6 +182,8 @@ def _read_header(fh: IO[bytes], path: Path) -> tuple[str | None, list[_Element],
             continue
         key = parts[0]
         if key == "end_header":
+            if line_break == b"\r\n" and first_break == b"\r":
+                lines.unread(1)  # lines end in a bare CR: the LF is the body's first byte
             break
         if key in ("comment", "obj_info"):
             continue
@@ -134,9 +196,17 @@ def _read_header(fh: IO[bytes], path: Path) -> tuple[str | None, list[_Element],
             encoding = parts[1]
             order = _ENCODINGS[encoding]
         elif key == "element":
-            if len(parts) != 3 or not parts[2].isdigit():
-                raise MeshError(f"{bad}: 'element NAME COUNT' with a count >= 0")
-            elements.append(_Element(parts[1], int(parts[2]), n))
+            if len(parts) != 3 or not _DIGITS.fullmatch(parts[2]):
+                raise MeshError(
+                    f"{bad}: 'element NAME COUNT' with a count >= 0 in ASCII digits 0-9"
+                )
+            count = int(parts[2])
+            if count >= MAX_COUNT:
+                raise MeshError(
+                    f"{bad}: a count of {count:,} rows, more than any file holds "
+                    f"(at most {MAX_COUNT:,})"
+                )
+            elements.append(_Element(parts[1], count, n))
         elif key == "property":
             if not elements:
                 raise MeshError(f"{bad}: a property before any element")
@@ -155,7 +225,7 @@ def _read_header(fh: IO[bytes], path: Path) -> tuple[str | None, list[_Element],
             raise MeshError(f"{bad}: unknown keyword {key!r}")
     if encoding is None:
         raise MeshError(f"{path}: the header has no 'format' line")
-    return order, elements, n
+    return order, elements, n, lines
 
 
 def _layout(path: Path, elements: list[_Element]) -> tuple[_Element, _Element, list[int], int]:
@@ -193,12 +263,18 @@ def _layout(path: Path, elements: list[_Element]) -> tuple[_Element, _Element, l
     return vertex, face, xyz, lists[0]
 
 
-def read_ply(path: str | os.PathLike) -> Mesh:
+def read_ply(path: str | os.PathLike | IO[bytes]) -> Mesh:
     """Read a PLY file, ASCII or binary (either byte order).
+
+    The header's lines (and an ASCII file's rows) may end in LF, CRLF or
+    CR, and a UTF-8 byte-order mark before ``ply`` is skipped.  List
+    properties are skipped on any element, ASCII or binary.  Vertex indices
+    of a float type are taken if every one is a whole number.
 
     Parameters
     ----------
-    path : str or path-like
+    path : str, path-like or binary file object
+        The file to read: a regular file or a pipe (see :func:`pentanb.read`).
 
     Returns
     -------
@@ -221,26 +297,35 @@ def read_ply(path: str | os.PathLike) -> Mesh:
         file whose mesh is not a closed manifold raises the mesh's own
         error, prefixed with the file name.
     """
-    path = as_path(path, "read_ply")
-    with open(path, "rb") as fh:
-        size = os.fstat(fh.fileno()).st_size
-        order, elements, header_lines = _read_header(fh, path)
+    with open_source(path, "read_ply") as src:
+        fh, path = src.fh, src.name
+        order, elements, header_lines, lines = _read_header(fh, path)
         vertex, face, xyz, index = _layout(path, elements)
-        body = size - fh.tell()
+        body = None if src.size is None else src.size - lines.consumed
         least = sum(
-            e.count * (e.dtype(order or "<", (0,) * _lists(e)).itemsize if order else 2)
+            e.count
+            * (
+                e.dtype(order, (0,) * _lists(e)).itemsize
+                if order
+                else 2 * max(1, len(e.props))  # "0 " per property
+            )
             for e in elements
-        )
-        if least > body:
+        ) - (order is None)  # the last line may lack its line break
+        if body is not None and least > body:
             rows = ", ".join(f"{e.count:,} {e.name}" for e in elements)
             raise MeshError(
                 f"{path}: the header announces {rows} rows; that needs at least {least:,} "
                 f"bytes but the file has {body:,} after the header"
             )
         if order is None:
-            got = _read_text(fh, path, elements, header_lines + 1, vertex, face, xyz, index)
+            got = _read_text(
+                fh, path, elements, header_lines + 1, vertex, face, xyz, index, lines.rest, body
+            )
         else:
-            got = _read_binary(fh, path, elements, order, vertex, face, xyz, index)
+            rest = lines.rest
+            data = read_after(fh, rest, None if body is None else body - len(rest))
+            got = _read_binary(data, path, elements, order, vertex, face, xyz, index)
+            del data  # not held while the mesh is validated
     vertices, sizes, corners = got
     return finish(path, vertices, corners, offsets_of(sizes))
 
@@ -250,8 +335,7 @@ def _lists(e: _Element) -> int:
 
 
 # ---------------------------------------------------------------------- binary
-def _read_binary(fh, path, elements, order, vertex, face, xyz, index):
-    data = fh.read()
+def _read_binary(data, path, elements, order, vertex, face, xyz, index):
     pos = 0
     vertices = sizes = corners = None
     for e in elements:
@@ -326,7 +410,14 @@ def _binary_lists(data: bytes, pos: int, path: Path, e: _Element, order: str, wa
         if want is not None:
             k = counts[lists.index(want)]
             sizes_parts.append(np.full(run, k, dtype=np.int64))
-            value_parts.append(rows[f"f{want}"].reshape(-1).astype(np.int64))
+            value_parts.append(
+                as_indices(
+                    rows[f"f{want}"].reshape(-1),
+                    lambda i, done=done, k=k: (
+                        f"{path}: row {done + i // k:,} of element {e.name!r} (item {i % k})"
+                    ),
+                )
+            )
         for i in scalars:
             scalars[i].append(rows[f"f{i}"])
         pos += run * dt.itemsize
@@ -342,17 +433,18 @@ def _cat(parts: list[np.ndarray], dtype) -> np.ndarray:
 
 
 # ---------------------------------------------------------------------- text
-def _read_text(fh, path, elements, lineno, vertex, face, xyz, index):
+def _read_text(fh, path, elements, lineno, vertex, face, xyz, index, head, body):
     """Rows as lines: every element's rows parsed block by block (numbers as floats)."""
     bounds = np.cumsum([0] + [e.count for e in elements])
     total = int(bounds[-1])
     seen = 0
     vertex_at = elements.index(vertex)
     face_at = elements.index(face)
-    vertices = np.empty((vertex.count, 3))
-    sizes = np.empty(face.count, dtype=np.int64)
+    known = body is not None  # a pipe: rows kept as they come
+    vertices = Rows(vertex.count, (3,), np.float64, known)
+    sizes = Rows(face.count, (), np.int64, known)
     corners: list[np.ndarray] = []
-    for first_line, block in line_blocks(fh, path, "PLY"):
+    for first_line, block in line_blocks(fh, path, "PLY", head=head, start=False):
         n0 = lineno + first_line - 1
         s = scan(block, comments=False)
         data = np.flatnonzero(s.ntok)
@@ -372,10 +464,10 @@ def _read_text(fh, path, elements, lineno, vertex, face, xyz, index):
             lines = data[sel]
             at = int(g[sel][0] - bounds[k])
             if k == vertex_at:
-                vertices[at : at + lines.size] = _text_vertices(s, lines, block, n0, path, e, xyz)
+                vertices.put(at, _text_vertices(s, lines, block, n0, path, e, xyz, at))
             else:
                 got_sizes, got_corners = _text_faces(s, lines, block, n0, path, e, index)
-                sizes[at : at + lines.size] = got_sizes
+                sizes.put(at, got_sizes)
                 corners.append(got_corners)
         if extra >= 0:
             raise MeshError(
@@ -385,7 +477,7 @@ def _read_text(fh, path, elements, lineno, vertex, face, xyz, index):
     if seen < total:
         have = ", ".join(f"{e.count:,} {e.name}" for e in elements)
         raise MeshError(f"{path}: the header announces {have} rows, the file has {seen:,}")
-    return vertices, sizes, _cat(corners, np.int64)
+    return vertices.result(), sizes.result(), _cat(corners, np.int64)
 
 
 def _text_rows(s, lines, block, n0, path, e):
@@ -409,16 +501,29 @@ def _text_rows(s, lines, block, n0, path, e):
     return values, ntok, first
 
 
-def _text_vertices(s, lines, block, n0, path, e, xyz):
+def _text_vertices(s, lines, block, n0, path, e, xyz, at0):
     values, ntok, first = _text_rows(s, lines, block, n0, path, e)
-    wrong = np.flatnonzero(ntok != len(e.props))
-    if wrong.size:
-        line = int(lines[wrong[0]])
-        raise MeshError(
-            f"{path}:{n0 + line}: a vertex row needs {len(e.props)} numbers, "
-            f"this one has {int(ntok[wrong[0]])}"
-        )
-    return values[first[:, None] + np.asarray(xyz)]
+    if e.fixed:
+        wrong = np.flatnonzero(ntok != len(e.props))
+        if wrong.size:
+            line = int(lines[wrong[0]])
+            raise MeshError(
+                f"{path}:{n0 + line}: a vertex row needs {len(e.props)} numbers, "
+                f"this one has {int(ntok[wrong[0]])}"
+            )
+        at = first[:, None] + np.asarray(xyz)
+    else:  # list properties too (skipped): row by row
+        at = _walk(values, ntok, first, lines, n0, path, e)[0][:, xyz]
+    got = values[at]
+    if not np.isfinite(got).all():  # nan, inf or an overflow: name the line
+        r = int(np.flatnonzero(~np.isfinite(got).all(axis=1))[0])
+        line = int(lines[r])
+        text = block[int(s.start[line]) : int(s.end[line])]
+        tokens = text.split()
+        picked = [tokens[int(t - first[r])] for t in at[r]]
+        error = bad_coordinate(f"{path}:{n0 + line}", f"vertex {at0 + r}", text, picked)
+        raise error or MeshError(f"{path}:{n0 + line}: a non-finite coordinate in {show(text)}")
+    return got
 
 
 def _text_faces(s, lines, block, n0, path, e, index):
@@ -436,41 +541,68 @@ def _text_faces(s, lines, block, n0, path, e, index):
 
 
 def _text_faces_slowly(values, ntok, first, lines, n0, path, e, index):
-    sizes = np.empty(lines.size, dtype=np.int64)
-    out: list[np.ndarray] = []
-    for r in range(lines.size):
-        row = values[first[r] : first[r] + ntok[r]]
-        j = 0
-        for i, p in enumerate(e.props):
-            if j >= row.size or (p.count is not None and (row[j] < 0 or row[j] != int(row[j]))):
-                raise MeshError(
-                    f"{path}:{n0 + int(lines[r])}: a face row that does not match "
-                    "the header's properties"
-                )
-            if p.count is None:
-                j += 1
-                continue
-            c = int(row[j])
-            if i == index:
-                sizes[r] = c
-                out.append(row[j + 1 : j + 1 + c])
-            j += 1 + c
-        if j != row.size or sum(len(x) for x in out[-1:]) != sizes[r]:
-            raise MeshError(
-                f"{path}:{n0 + int(lines[r])}: a face row that does not match "
-                "the header's properties"
-            )
-    flat = _cat(out, np.float64)
+    start, count = _walk(values, ntok, first, lines, n0, path, e)
+    sizes = count[:, index]
+    at = np.repeat(start[:, index] - (np.cumsum(sizes) - sizes), sizes) + np.arange(sizes.sum())
+    flat = values[at]
     return sizes, _whole(flat, path, n0, lines, np.repeat(np.arange(lines.size), sizes))
 
 
+def _walk(values, ntok, first, lines, n0, path, e) -> tuple[np.ndarray, np.ndarray]:
+    """Text rows with list properties, row by row: where every property's
+    values start in ``values`` and how many it has (1 for a scalar)."""
+    start = np.empty((lines.size, len(e.props)), dtype=np.int64)
+    count = np.ones((lines.size, len(e.props)), dtype=np.int64)
+    for r in range(lines.size):
+        j, end = int(first[r]), int(first[r] + ntok[r])
+        for i, p in enumerate(e.props):
+            c = float(values[j]) if j < end else -1.0
+            if p.count is not None and not (0 <= c <= end - j - 1 and c == int(c)):
+                j = -1  # no count, or not one that fits the row (nan, a fraction)
+            if j < 0 or j >= end:
+                raise MeshError(
+                    f"{path}:{n0 + int(lines[r])}: a {e.name} row that does not match "
+                    "the header's properties"
+                )
+            if p.count is None:
+                start[r, i] = j
+                j += 1
+            else:
+                start[r, i], count[r, i] = j + 1, int(c)
+                j += 1 + int(c)
+        if j != end:
+            raise MeshError(
+                f"{path}:{n0 + int(lines[r])}: a {e.name} row that does not match "
+                "the header's properties"
+            )
+    return start, count
+
+
 def _whole(values: np.ndarray, path, n0, lines, row_of) -> np.ndarray:
-    bad = np.flatnonzero(values != np.floor(values))
-    if bad.size:
-        line = int(lines[row_of[bad[0]]])
-        raise MeshError(
-            f"{path}:{n0 + line}: vertex index {float(values[bad[0]])!r} is not an integer"
-        )
+    """Text rows' vertex indices (parsed as floats) as int64, or the line of a bad one."""
+    return as_indices(values, lambda i: f"{path}:{n0 + int(lines[row_of[i]])}")
+
+
+def as_indices(values: np.ndarray, where) -> np.ndarray:
+    """Vertex indices as int64: integers as they are; floats only if every one
+    is a whole number (a MeshError at ``where(i)`` names the first that is
+    not: a fraction, nan, an infinity, or one beyond any vertex count)."""
+    if values.dtype.kind != "f":
+        return values.astype(np.int64)
+    with np.errstate(invalid="ignore"):
+        ok = (values == np.floor(values)) & (np.abs(values) < MAX_COUNT)
+    if not ok.all():
+        i = int(np.argmin(ok))
+        v, shown = float(values[i]), str(values[i])  # as the file's type prints it: 0.7
+        if np.isnan(v):
+            why = "vertex index nan (not a number)"
+        elif np.isinf(v):
+            why = f"vertex index {shown} (an infinity)"
+        elif v == np.floor(v):
+            why = f"vertex index {shown} out of range (far beyond any vertex count)"
+        else:
+            why = f"vertex index {shown} is not an integer (a float index must be a whole number)"
+        raise MeshError(f"{where(i)}: {why}")
     return values.astype(np.int64)
 
 

@@ -12,6 +12,7 @@ manifold (the paper's meshes), or a :class:`~pentanb.MeshError` says why.
 
 from __future__ import annotations
 
+import io
 import os
 from pathlib import Path
 from typing import IO, Any
@@ -20,10 +21,26 @@ import numpy as np
 
 from ..mesh import Mesh, MeshError
 from ..mesh.build import adopted
-from ._common import as_path, check_mesh, line_blocks, parse_floats, scan, show, write_as
+from ._common import (
+    BOM,
+    bad_coordinate,
+    check_mesh,
+    line_blocks,
+    open_source,
+    parse_floats,
+    read_after,
+    read_exactly,
+    scan,
+    show,
+    write_as,
+)
 from .obj import WRITE_ROWS
 
 __all__ = ["read_stl", "write_stl", "weld"]
+
+#: Bytes after the header of a file that starts with 'solid' looked at for a
+#: NUL byte (binary STL has one in nearly every triangle, ASCII STL none).
+PEEK_BYTES = 4096
 
 _BINARY = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)), ("attribute", "<u2")])
 
@@ -33,12 +50,20 @@ SOLID, FACET, OUTER, VERTEX, ENDLOOP, ENDFACET, ENDSOLID = range(7)
 _FACET_PATTERN = np.array([FACET, OUTER, VERTEX, VERTEX, VERTEX, ENDLOOP, ENDFACET])
 
 
-def read_stl(path: str | os.PathLike, tolerance: float = 0.0) -> Mesh:
+def read_stl(path: str | os.PathLike | IO[bytes], tolerance: float = 0.0) -> Mesh:
     """Read an STL file (binary or ASCII) and weld its corners into shared vertices.
+
+    A file is binary when its size is the one its triangle count gives (an
+    80-byte header, a count, 50 bytes a triangle); else it is ASCII if it
+    starts with ``solid`` (after a UTF-8 byte-order mark, if any) and holds
+    no NUL byte.  From a pipe, whose size is not known beforehand, a file
+    that starts with ``solid`` and has no NUL byte in its first kilobytes is
+    ASCII, any other binary.  ASCII lines may end in LF, CRLF or CR, mixed.
 
     Parameters
     ----------
-    path : str or path-like
+    path : str, path-like or binary file object
+        The file to read: a regular file or a pipe (see :func:`pentanb.read`).
     tolerance : float, >= 0
         Corners at exactly equal coordinates are always one vertex.  With
         ``tolerance > 0``, corners closer than ``tolerance`` (Euclidean
@@ -62,30 +87,17 @@ def read_stl(path: str | os.PathLike, tolerance: float = 0.0) -> Mesh:
         that are not a closed manifold (the mesh's message, e.g. the first
         boundary edge and the number of boundary loops).
     """
-    path = as_path(path, "read_stl")
     tolerance = _check_tolerance(tolerance)
-    with open(path, "rb") as fh:
-        size = os.fstat(fh.fileno()).st_size
-        head = fh.read(84)
+    with open_source(path, "read_stl") as src:
+        fh, path, size = src.fh, src.name, src.size
+        head = read_exactly(fh, 84)
         count = int(np.frombuffer(head, "<u4", 1, 80)[0]) if len(head) == 84 else -1
-        if count >= 0 and size == 84 + 50 * count:
+        expected = 84 + 50 * count
+        lines = None
+        if size is not None and count >= 0 and size == expected:
             corners = _read_binary(fh, count)
-            lines = None
-        elif head.lstrip().startswith(b"solid"):
-            fh.seek(0)
-            corners, lines = _read_text(fh, path)
-        elif count >= 0 and all(9 <= b < 127 for b in head):
-            raise MeshError(
-                f"{path}:1: text that does not start with 'solid': not an ASCII STL file (and "
-                "not a binary one: its size does not match)"
-            )
-        elif count >= 0:
-            raise MeshError(
-                f"{path}: a binary STL whose header says {count:,} triangles "
-                f"({84 + 50 * count:,} bytes) but the file has {size:,} bytes"
-            )
         else:
-            raise MeshError(f"{path}: not an STL file (no 'solid' line, too short for binary STL)")
+            corners, lines = _read_other(fh, path, size, head, count)
     if corners.shape[0] == 0:
         raise MeshError(f"{path}: no triangles")
     bad = np.flatnonzero(~np.isfinite(corners).all(axis=1))
@@ -116,6 +128,44 @@ def read_stl(path: str | os.PathLike, tolerance: float = 0.0) -> Mesh:
     return mesh
 
 
+def _read_other(fh, path, size, head, count) -> tuple[np.ndarray, np.ndarray | None]:
+    """An STL file whose size does not show it binary: ASCII, binary from a
+    pipe (whose size is not known beforehand), or an error that says which
+    it looks like and gives the sizes."""
+    expected = 84 + 50 * count
+    solid = head.removeprefix(BOM).lstrip().startswith(b"solid")
+    peek = b""
+    if solid:
+        peek = read_exactly(fh, PEEK_BYTES)
+        if b"\x00" not in head + peek:  # ASCII STL is text: no NUL byte
+            return _read_text(fh, path, head + peek)
+    more = False
+    if size is None and count >= 0:  # a pipe: read what the count says, and a byte more
+        data = peek + read_exactly(fh, max(0, expected - 84 + 1 - len(peek)))
+        if len(data) == expected - 84:
+            return _read_binary(io.BytesIO(data), count), None
+        more = len(data) > expected - 84
+        size = 84 + len(data)
+    has = f"more than {expected:,}" if more else f"{size:,}"
+    if solid:
+        raise MeshError(
+            f"{path}: a binary STL (its header begins with 'solid', but it holds NUL bytes) "
+            f"whose header says {count:,} triangles ({expected:,} bytes) but the file has "
+            f"{has} bytes: a truncated or damaged binary STL (or a damaged ASCII one)"
+        )
+    if count >= 0 and all(9 <= b < 127 for b in head):
+        raise MeshError(
+            f"{path}:1: text that does not start with 'solid': not an ASCII STL file (and "
+            "not a binary one: its size does not match)"
+        )
+    if count >= 0:
+        raise MeshError(
+            f"{path}: a binary STL whose header says {count:,} triangles "
+            f"({expected:,} bytes) but the file has {has} bytes"
+        )
+    raise MeshError(f"{path}: not an STL file (no 'solid' line, too short for binary STL)")
+
+
 def _at(lines: np.ndarray | None, facet: int) -> str:
     return "" if lines is None else f" (line {int(lines[facet])})"
 
@@ -129,16 +179,18 @@ def _check_tolerance(tolerance: Any) -> float:
 
 
 def _read_binary(fh: IO[bytes], count: int) -> np.ndarray:
-    rows = np.fromfile(fh, dtype=_BINARY, count=count)
+    data = read_after(fh, b"", 50 * count)
+    rows = np.frombuffer(data, dtype=_BINARY, count=count)
     return rows["corners"].reshape(-1, 3).astype(np.float64)
 
 
-def _read_text(fh: IO[bytes], path: Path) -> tuple[np.ndarray, np.ndarray]:
-    """ASCII STL: the corners (3 per facet) and the line of every facet."""
+def _read_text(fh: IO[bytes], path: Path, head: bytes) -> tuple[np.ndarray, np.ndarray]:
+    """ASCII STL (``head``: its first bytes, already read): the corners (3 per
+    facet) and the line of every facet."""
     codes: list[np.ndarray] = []
     numbers: list[np.ndarray] = []
     points: list[np.ndarray] = []
-    for lineno, block in line_blocks(fh, path, "STL"):
+    for lineno, block in line_blocks(fh, path, "STL", head=head):
         s = scan(block, comments=False)
         lines = np.flatnonzero(s.ntok)
         key = s.tok[s.first[lines]]
@@ -162,8 +214,8 @@ def _read_text(fh: IO[bytes], path: Path) -> tuple[np.ndarray, np.ndarray]:
             wrong = np.flatnonzero(s.ntok[vl] != 4)
             s.buf[s.tok[s.first[vl]][:, None] + np.arange(6)] = 32
             values = None if wrong.size else parse_floats(s.select(vl, False), 3 * vl.size, 3)
-            if values is None:
-                _bad_vertex(block, s, vl, lineno, path)
+            if values is None or not np.isfinite(values).all():
+                _bad_vertex(block, s, vl, lineno, path, sum(len(p) for p in points))
             points.append(np.asarray(values).reshape(-1, 3))
         codes.append(code)
         numbers.append(lineno + lines)
@@ -193,8 +245,8 @@ def _read_text(fh: IO[bytes], path: Path) -> tuple[np.ndarray, np.ndarray]:
     return corners, n[0::7]
 
 
-def _bad_vertex(block, s, vl, lineno, path):
-    for line in vl.tolist():
+def _bad_vertex(block, s, vl, lineno, path, before):
+    for k, line in enumerate(vl.tolist()):
         text = block[int(s.start[line]) : int(s.end[line])]
         parts = text.split()
         try:
@@ -205,6 +257,10 @@ def _bad_vertex(block, s, vl, lineno, path):
             raise MeshError(
                 f"{path}:{lineno + line}: a vertex line needs 3 numbers: {show(text)}"
             ) from None
+        what = f"facet {(before + k) // 3}"
+        error = bad_coordinate(f"{path}:{lineno + line}", what, text, parts[1:])
+        if error is not None:
+            raise error
     raise MeshError(f"{path}:{lineno}: unreadable vertex lines in this block")
 
 
@@ -305,17 +361,91 @@ def write_stl(mesh: Mesh, path: str | os.PathLike, *, ascii: bool = False) -> No
     coordinates (a round trip is exact only for positions that are float32
     numbers); ASCII STL is written with ``repr`` precision (exact).  Each
     facet's normal is its polygon's unit normal.
+
+    Parameters
+    ----------
+    mesh : Mesh
+    path : str or path-like
+        The file to write; its name is used as given.
+    ascii : bool
+        Write ASCII STL (exact coordinates) instead of binary (float32).
+
+    Raises
+    ------
+    MeshError
+        Binary STL only, before anything is written: a vertex whose
+        coordinates float32 cannot hold (beyond +-3.4e38; the message names
+        it), a face whose fan triangle has two corners at one float32 point
+        (it collapses to a line or a point; the message names the face), or
+        two vertices at one float32 point (reading the file would weld them).
+        Write ``ascii=True`` (exact) or scale the mesh.
     """
-    check_write_options(ascii)
-    write_as(mesh, path, "stl", "write_stl", _write, ascii=ascii)
-
-
-def _write(mesh: Mesh, fh: IO[bytes], ascii: bool = False) -> None:
     check_mesh(mesh, "write_stl")
     check_write_options(ascii)
+    prepared = prepare(mesh, ascii, "write_stl")
+    write_as(mesh, path, "stl", "write_stl", _write, ascii=ascii, prepared=prepared)
+
+
+def prepare(mesh: Mesh, ascii: Any = False, caller: str = "write") -> tuple[np.ndarray, ...]:
+    """The triangles, their polygons, the normals and the coordinates to write
+    (float32 for binary), checked so that the file reads back as these
+    triangles; a MeshError (see :func:`write_stl`) before anything is written."""
     tris, face = mesh.fan_triangles()
     normals = mesh.face_normals
+    normals = np.where(np.isfinite(normals).all(axis=1, keepdims=True), normals, 0.0)
+    if ascii:
+        return tris, face, normals, mesh.vertices
+    if tris.shape[0] >= 1 << 32:
+        raise MeshError(f"{caller}: {tris.shape[0]:,} triangles; binary STL holds fewer than 2**32")
     v = mesh.vertices
+    with np.errstate(over="ignore", under="ignore"):
+        v32 = v.astype(np.float32)
+    bad = np.flatnonzero(~np.isfinite(v32).all(axis=1))
+    if bad.size:
+        i = int(bad[0])
+        raise MeshError(
+            f"{caller}: vertex {i} at {v[i].tolist()} is beyond the range of float32 "
+            f"(+-{np.finfo(np.float32).max:.4g}), which binary STL stores ({bad.size:,} such "
+            "vertices); write ascii=True (exact coordinates) or scale the mesh"
+        )
+    t = v32[tris]
+    same = (t[:, 0] == t[:, 1]).all(axis=1) | (t[:, 1] == t[:, 2]).all(axis=1)
+    same |= (t[:, 0] == t[:, 2]).all(axis=1)
+    del t
+    flat = np.flatnonzero(same)
+    if flat.size:
+        k = int(flat[0])
+        f = int(face[k])
+        ring = mesh.corners[mesh.offsets[f] : mesh.offsets[f + 1]].tolist()
+        raise MeshError(
+            f"{caller}: face {f} (vertices {ring}): its fan triangle "
+            f"{tris[k].tolist()} has two corners at one float32 point (binary STL's "
+            f"precision) and collapses to a line or a point ({flat.size:,} such triangles); "
+            "the file could not be read back: write ascii=True (exact coordinates) or "
+            "scale the mesh"
+        )
+    _, index = weld(v32.astype(np.float64))
+    if index.max() + 1 < v.shape[0]:
+        order = np.argsort(index, kind="stable")
+        dup = np.flatnonzero(index[order][1:] == index[order][:-1])
+        i, j = sorted((int(order[dup[0]]), int(order[dup[0] + 1])))
+        raise MeshError(
+            f"{caller}: vertices {i} and {j} ({v[i].tolist()} and {v[j].tolist()}) are at "
+            "one float32 point (binary STL's precision): reading the file would weld "
+            "them into one; write ascii=True (exact coordinates) or scale the mesh"
+        )
+    return tris, face, normals, v32
+
+
+def _write(
+    mesh: Mesh,
+    fh: IO[bytes],
+    ascii: bool = False,
+    prepared: tuple[np.ndarray, ...] | None = None,
+) -> None:
+    check_mesh(mesh, "write_stl")
+    check_write_options(ascii)
+    tris, face, normals, v = prepared or prepare(mesh, ascii, "write_stl")
     if not ascii:
         fh.write(b"pentanb binary STL".ljust(80, b" "))
         fh.write(np.array([tris.shape[0]], dtype="<u4").tobytes())
