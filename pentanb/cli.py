@@ -217,12 +217,38 @@ def main(argv: Sequence[str] | None = None) -> int:
     int
         Exit status: 0 when every claim's verdict is the recorded one
         (findings included); 1 when one is not (a regression); 2 for an
-        unknown figure or an output folder that cannot be written.
+        unknown figure or an output folder that cannot be written;
+        :data:`PIPE_CLOSED` (141, as a shell reports a program that
+        SIGPIPE ended) when the output's reader went away early
+        (``python -m pentanb demo | head``), without a word on standard error.
     """
-    args = _parser().parse_args(argv)
-    if args.command is None:
-        return _demo(args)
-    return args.func(args)
+    try:
+        args = _parser().parse_args(argv)
+        status = _demo(args) if args.command is None else args.func(args)
+        sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit
+    except BrokenPipeError:
+        _silence()
+        return PIPE_CLOSED
+    return status
+
+
+#: The exit status when the reader of the output closed it early.
+PIPE_CLOSED = 141
+
+
+def _silence() -> None:
+    """Point standard output and error at the null device, so that nothing
+    more is written to a closed pipe (the interpreter flushes both at exit,
+    which would fail again and print "Exception ignored ... BrokenPipeError")."""
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            null = os.open(os.devnull, os.O_WRONLY)
+            try:
+                os.dup2(null, stream.fileno())
+            finally:
+                os.close(null)
+        except (OSError, ValueError, AttributeError):  # no file descriptor (captured)
+            pass
 
 
 if __name__ == "__main__":  # pragma: no cover

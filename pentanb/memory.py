@@ -37,20 +37,24 @@ _NO_CGROUP_LIMIT = 2**60
 
 
 def default_max_bytes(
-    meminfo: str | os.PathLike = "/proc/meminfo", cgroup: str | os.PathLike = "/sys/fs/cgroup"
+    meminfo: str | os.PathLike = "/proc/meminfo",
+    cgroup: str | os.PathLike = "/sys/fs/cgroup",
+    status: str | os.PathLike = "/proc/self/status",
 ) -> int:
     """The memory this process may still take: the default ``max_bytes``.
 
-    The smaller of the memory the kernel says is available (``MemAvailable``
-    in ``meminfo``) and the room left under the container's limit (cgroup
+    The smallest of the memory the kernel says is available (``MemAvailable``
+    in ``meminfo``), the room left under the container's limit (cgroup
     v2: ``memory.max`` minus ``memory.current`` in ``cgroup``; v1:
     ``memory.limit_in_bytes`` minus ``memory.usage_in_bytes``, in ``cgroup``
-    or its ``memory`` directory), whichever can be read; where neither can
-    (not Linux), half of the physical memory, or 4 GiB.
+    or its ``memory`` directory) and the room left under this process's
+    address-space limit (``ulimit -v``, ``RLIMIT_AS``, minus ``VmSize`` in
+    ``status``), whichever can be read; where none can (not Linux), half of
+    the physical memory, or 4 GiB.
 
     Parameters
     ----------
-    meminfo, cgroup : path
+    meminfo, cgroup, status : path
         Where to read them (other paths for tests).
 
     Returns
@@ -58,7 +62,11 @@ def default_max_bytes(
     int
         Bytes, at least 0.
     """
-    found = [x for x in (_meminfo_available(meminfo), _cgroup_room(cgroup)) if x is not None]
+    found = [
+        x
+        for x in (_meminfo_available(meminfo), _cgroup_room(cgroup), _address_space_room(status))
+        if x is not None
+    ]
     return max(min(found), 0) if found else _half_physical()
 
 
@@ -102,6 +110,27 @@ def _cgroup_room(root: str | os.PathLike) -> int | None:
         usage = (_read(where / usage_file) or "0").strip()
         return limit - (int(usage) if usage.isdigit() else 0)
     return None
+
+
+def _address_space_room(status: str | os.PathLike) -> int | None:
+    """Bytes left under this process's address-space limit (``RLIMIT_AS``), or
+    None (no limit, or none readable).  What the process has mapped is
+    ``VmSize`` in ``status`` (/proc/self/status), 0 where it cannot be read."""
+    try:
+        import resource
+
+        soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+    except (ImportError, OSError, ValueError, AttributeError):  # not POSIX
+        return None
+    if soft == resource.RLIM_INFINITY or soft < 0:
+        return None
+    used = 0
+    for line in (_read(status) or "").splitlines():
+        key, _, value = line.partition(":")
+        fields = value.split()
+        if key.strip() == "VmSize" and fields and fields[0].isdigit():
+            used = int(fields[0]) * (1024 if fields[1:] == ["kB"] else 1)
+    return soft - used
 
 
 def _half_physical() -> int:

@@ -14,6 +14,7 @@ from collections.abc import Callable, Iterable
 import numpy as np
 from numpy.typing import ArrayLike
 
+from . import _checks
 from .memory import default_max_bytes, mesh_bytes
 from .mesh import Mesh, MeshError, check_closed
 from .schemes.smoothing import dual
@@ -259,10 +260,7 @@ def _check_size(what: str, V: int, E: int, F: int, extra: int = 0) -> None:
 
 
 def _grid_size(rings, sides):
-    for name, value in (("rings", rings), ("sides", sides)):
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 3:
-            raise ValueError(f"{name} must be an integer >= 3, got {value!r}")
-    return int(rings), int(sides)
+    return _checks.count(rings, "rings", 3), _checks.count(sides, "sides", 3)
 
 
 def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8, sides: int = 6) -> Mesh:
@@ -289,8 +287,7 @@ def genus_surface(genus: int = 2, base: Mesh | None = None, rings: int = 8, side
     Mesh
         One connected surface of genus ``genus``.
     """
-    if isinstance(genus, bool) or not isinstance(genus, (int, np.integer)) or genus < 1:
-        raise ValueError(f"genus must be an integer >= 1, got {genus!r}")
+    genus = _checks.count(genus, "genus", 1)
     if base is not None and not isinstance(base, Mesh):
         raise TypeError(f"base must be a pentanb.Mesh (a torus) or None, got {type(base).__name__}")
     if base is None:
@@ -485,9 +482,7 @@ def box(cells: int = 3) -> Mesh:
     Mesh
         ``6 cells^2`` quads, ``6 cells^2 + 2`` vertices, genus 0.
     """
-    if isinstance(cells, bool) or not isinstance(cells, (int, np.integer)) or cells < 1:
-        raise ValueError(f"cells must be an integer >= 1, got {cells!r}")
-    n = int(cells)
+    n = _checks.count(cells, "cells", 1)
     m = voxels(np.ones((n, n, n), dtype=bool))
     return m.with_vertices(m.vertices * (2.0 / n) - 1.0)
 

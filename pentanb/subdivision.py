@@ -64,6 +64,8 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
+from . import _checks
+from ._checks import MAX_STEPS
 from .memory import default_max_bytes, mesh_bytes, readable
 from .mesh import Mesh, MeshError
 from .notation import as_scheme as get_scheme
@@ -83,11 +85,6 @@ __all__ = [
     "Scheme",
     "get_scheme",
 ]
-
-#: Most steps (remeshings and duals together) one call may take: more would
-#: run for hours without the counts changing (duals, or triangulate after
-#: its first pass, keep them).
-MAX_STEPS = 100_000
 
 #: Above this many bytes no request is possible, whatever ``max_bytes``
 #: (2**62: the index arithmetic of 64-bit integers ends about there).
@@ -234,6 +231,7 @@ def max_iterations(
     if not isinstance(s, Scheme):
         raise ValueError("max_iterations needs a registered scheme")
     duals = check_count(duals, "duals")
+    max_faces = check_count(max_faces, "max_faces")
     cap = check_count(cap, "cap")
     limit = _limit(max_bytes)
     for k in range(cap):
@@ -344,7 +342,7 @@ def _guard(counts: Counts, s: Scheme, iterations: int, duals: int, limit: float)
                 else f"beyond what any computer can index ({readable(_ABSOLUTE)})"
             )
             raise MeshError(
-                f"{s.name} iteration {i + 1} of {iterations:,} would build a mesh of "
+                f"{_label(s.name)} iteration {i + 1} of {iterations:,} would build a mesh of "
                 f"{F2:,} faces ({V2:,} vertices, {E2:,} edges); with {duals} duals it "
                 f"needs about {need:,} bytes ({readable(need)}) at its peak, {over}. "
                 "Lower iterations or raise max_bytes."
@@ -390,7 +388,7 @@ def subdivide(
         "Apply dual operation an even number of times").
     progress : callable, True or None
         ``progress(done, total, message)`` after every step; True prints
-        the steps to standard error.
+        the steps to standard error.  Checked before the first step.
     max_bytes : float, optional
         Refuse (with :class:`MeshError`) a request whose peak memory would
         be more than this many bytes (:func:`estimate_bytes`); default:
@@ -406,12 +404,15 @@ def subdivide(
     Raises
     ------
     ValueError
-        An unknown scheme name (the message lists the known ones), a bad
-        count, an option the scheme does not take, a negative or NaN
-        ``max_bytes``, or more than :data:`MAX_STEPS` steps.
+        An unknown scheme name (the message lists the known ones), a
+        negative count, an option the scheme does not take, a negative or
+        NaN ``max_bytes``, or more than :data:`MAX_STEPS` steps.
     TypeError
-        ``mesh`` is not a Mesh; ``max_bytes`` is not a number; a callable
-        scheme returned something other than a Mesh (the message names it).
+        ``mesh`` is not a Mesh; a scheme that is neither a string, a Scheme
+        nor a callable; a count that is not an integer (``1.5``, ``"2"``,
+        None, True); ``max_bytes`` is not a number; ``progress`` is neither
+        callable, True nor None; a callable scheme returned something other
+        than a Mesh (the message names it).
     MeshError
         Before building anything, when an iteration would not fit in
         ``max_bytes``: the message names the first such iteration, the
@@ -419,29 +420,37 @@ def subdivide(
 
     Notes
     -----
-    A callable scheme's growth is not known in advance: its first
-    iteration runs, and the later ones are predicted from it (each is
-    assumed to grow the mesh as the first did, and to need
-    what a scheme without its own factor does, :data:`UNKNOWN`); a request
-    over ``max_bytes`` is refused before the second.  Its first iteration is
-    refused when its input alone would be over the limit.
+    A callable scheme's growth is not known in advance, so it is guarded
+    at every iteration: its first runs (refused when its input alone would
+    be over the limit), and before each later one, that one and the rest
+    are predicted from the growth of the last (each is assumed to grow the
+    mesh as the last did, and to need what a scheme without its own factor
+    does, :data:`UNKNOWN`); its duals, whose counts are known, are checked
+    before they run.  A request over ``max_bytes`` is refused as soon as
+    the growth seen predicts it, also when a callable hands its input back
+    once and grows later.
     """
     check_mesh(mesh, "subdivide")
     s = get_scheme(scheme)
     iterations = check_count(iterations, "iterations")
     duals = check_count(duals, "duals")
     limit = _limit(max_bytes)
+    progress = _checks.callback(
+        progress,
+        "progress",
+        (None, True, False),
+        "a callable progress(done, total, message), True or None",
+    )
     if isinstance(s, Scheme):
         unknown = set(options) - set(s.options)
         if unknown:
             takes = ", ".join(s.options) or "no options"
-            raise ValueError(f"scheme {s.name!r} takes {takes}; got {sorted(unknown)}")
+            raise ValueError(
+                f"scheme {_label(s.name, quote=True)} takes {takes}; got {sorted(unknown)}"
+            )
         _guard(_vef(mesh), s, iterations, duals, limit)
     else:
-        if iterations * (1 + duals) > MAX_STEPS:
-            raise ValueError(
-                f"{iterations * (1 + duals):,} steps; at most {MAX_STEPS:,} are taken in one call"
-            )
+        _checks.steps(iterations * (1 + duals), f"{iterations:,} iterations with {duals:,} duals")
         if iterations and mesh_bytes(*_vef(mesh)) > limit:
             raise MeshError(
                 f"the input mesh alone ({mesh.n_faces:,} faces) is over the limit of "
@@ -450,19 +459,29 @@ def subdivide(
     report = _progress_printer if progress is True else progress
     total = iterations * (1 + duals)
     done = 0
-    name = getattr(s, "name", getattr(s, "__name__", repr(s)))
+    raw = getattr(s, "name", getattr(s, "__name__", None)) or _checks.shown(s)
+    name = _label(raw)
+    growth: Counts | None = None  # a callable's: the counts' ratios in its last iteration
     for i in range(iterations):
         before = _vef(mesh)
+        if not isinstance(s, Scheme) and i > 0:
+            # a callable, guarded at every iteration: this one and every later
+            # one predicted from the growth of the last (a callable may hand its
+            # input back once and grow the next time)
+            _guard_callable(name, before, growth, i, iterations, duals, limit)
         out = s(mesh, **options)
         if not isinstance(out, Mesh):
             raise TypeError(
-                f"scheme {name!r} returned {type(out).__name__}, not a pentanb.Mesh "
+                f"scheme {_label(raw, quote=True)} returned {type(out).__name__}, not a "
+                "pentanb.Mesh "
                 "(a callable scheme maps a Mesh to a Mesh)"
             )
         mesh = out
         del out  # so that the duals below free it as soon as they are done with it
-        if i == 0 and not isinstance(s, Scheme) and iterations > 1:
-            _guard_callable(name, before, _vef(mesh), iterations, duals, limit)
+        if not isinstance(s, Scheme):
+            after = _vef(mesh)
+            growth = tuple(a / b if b else 1.0 for a, b in zip(after, before))  # type: ignore[assignment]
+            _guard_callable_duals(name, after, i, iterations, duals, limit)
         done += 1
         if report:
             report(done, total, f"{name} {i + 1}/{iterations}: {mesh.n_faces:,} faces")
@@ -475,29 +494,65 @@ def subdivide(
 
 
 def _guard_callable(
-    name: str, before: Counts, after: Counts, iterations: int, duals: int, limit: float
+    name: str,
+    counts: Counts,
+    growth: Counts | None,
+    i: int,
+    iterations: int,
+    duals: int,
+    limit: float,
 ) -> None:
-    """After a callable's first iteration: refuse if a later one would be over the limit.
+    """Before a callable's iteration ``i`` (from 0) on a mesh of ``counts``: refuse
+    (MeshError) if it, or a later one, would be over the limit.
 
-    Each iteration is assumed to multiply the counts as the first did, and
-    to need what a scheme without its own factor needs (:data:`UNKNOWN`).
+    Each iteration is assumed to multiply the counts as the last one did
+    (``growth``; None: not known yet, taken as 1), and to need what a scheme
+    without its own factor needs (:data:`UNKNOWN`) on top of the mesh it
+    reads.  Stops at the first iteration over the limit, or as soon as the
+    counts stop growing: microseconds for any ``iterations``.
     """
-    growth = [a / b if b else 1.0 for a, b in zip(after, before)]
-    V, E, F = (float(x) for x in after)
-    for i in range(1, iterations):
+    g = (1.0, 1.0, 1.0) if growth is None else tuple(float(x) for x in growth)
+    V, E, F = (float(x) for x in counts)
+    for j in range(i, iterations):
         held = mesh_bytes(V, E, F)
-        V, E, F = V * growth[0], E * growth[1], F * growth[2]
-        need = FIXED + held + UNKNOWN * _largest_mesh_bytes(E)
+        V, E, F = V * g[0], E * g[1], F * g[2]
+        need = FIXED + held + UNKNOWN * _largest_mesh_bytes(max(E, counts[1]))
         if need > limit or need > _ABSOLUTE:
             raise MeshError(
-                f"{name} iteration {i + 1} of {iterations:,} would build a mesh of about "
+                f"{name} iteration {j + 1} of {iterations:,} would build a mesh of about "
                 f"{F:,.0f} faces ({V:,.0f} vertices, {E:,.0f} edges), if it grows as its "
-                f"first iteration did; that needs about {need:,.0f} bytes ({readable(need)}), "
+                f"last iteration did; that needs about {need:,.0f} bytes ({readable(need)}), "
                 f"over the limit of {limit:,.0f} bytes ({readable(limit)}). Lower iterations "
                 "or raise max_bytes."
             )
-        if growth == [1.0, 1.0, 1.0]:
-            break
+        if all(x <= 1.0 for x in g):
+            break  # not growing: a later iteration needs no more than this one
+
+
+def _guard_callable_duals(
+    name: str, counts: Counts, i: int, iterations: int, duals: int, limit: float
+) -> None:
+    """Before the duals of a callable's iteration ``i``, on its output of ``counts``:
+    refuse (MeshError) when they would be over the limit (their counts are known)."""
+    if not duals:
+        return
+    V, E, F = counts
+    need = FIXED + DUAL * (mesh_bytes(V, E, F) + mesh_bytes(F, E, V))
+    if need > limit:
+        raise MeshError(
+            f"the duals of {name} iteration {i + 1} of {iterations:,} (a mesh of {F:,} faces, "
+            f"{V:,} vertices, {E:,} edges) need about {need:,} bytes ({readable(need)}), over "
+            f"the limit of {limit:,.0f} bytes ({readable(limit)}). Lower iterations or raise "
+            "max_bytes."
+        )
+
+
+def _label(name: object, quote: bool = False) -> str:
+    """A scheme's name for a message (quoted if ``quote``), cut when long (a Conway string)."""
+    text = str(name)
+    if len(text) > 60:
+        return _checks.shown(text)
+    return repr(text) if quote else text
 
 
 def _progress_printer(done: int, total: int, message: str) -> None:

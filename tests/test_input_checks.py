@@ -256,9 +256,9 @@ def test_max_iterations_takes_the_counts_its_docs_promise():
         (None, TypeError, r"^max_iterations expects a pentanb\.Mesh or its counts \(V, E, F\), "),
         ("cube", TypeError, r"^max_iterations expects a pentanb\.Mesh or its counts"),
         ((8, 12), ValueError, r"^counts must be \(V, E, F\), three numbers; got 2$"),
-        (("a", 12, 6), ValueError, r"^V must be a non-negative integer, got 'a'$"),
-        ((8, -12, 6), ValueError, r"^E must be a non-negative integer, got -12$"),
-        ((8, 12, 6.5), ValueError, r"^F must be a non-negative integer, got 6\.5$"),
+        (("a", 12, 6), TypeError, r"^V must be an integer >= 0, got str 'a'$"),
+        ((8, -12, 6), ValueError, r"^E must be an integer >= 0, got -12$"),
+        ((8, 12, 6.5), TypeError, r"^F must be an integer >= 0, got float 6\.5$"),
     ],
 )
 def test_max_iterations_refuses_bad_counts(counts, error, message):

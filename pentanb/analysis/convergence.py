@@ -34,11 +34,12 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from .. import shapes
-from ..mesh import Mesh
+from .. import _checks, shapes
+from ..mesh import Mesh, check_mesh
 from ..schemes import SCHEMES
+from ..schemes.registry import Scheme
 from ..schemes.smoothing import dual
-from ..subdivision import get_scheme, subdivide
+from ..subdivision import get_scheme, predict_counts, subdivide
 from .measures import angle_spread, crease_angles, edge_length_spread, normal_angles, radius_spread
 from .measures import edge_waviness as edge_waviness  # the old import path
 from .measures import ray_distances as ray_distances  # the old import path
@@ -158,6 +159,11 @@ def _name(scheme) -> str:
     return getattr(s, "name", getattr(s, "__name__", str(scheme)))
 
 
+#: Most measurements one study takes (pairs of duals, or iterations): each is
+#: a mesh built and measured, and a thousand already show any trend.
+MAX_MEASURED = 1000
+
+
 def dual_convergence(mesh: Mesh, scheme="pentagonalize", duals: int = 12, **options) -> Convergence:
     """Remesh once, then apply ``duals`` duals, measuring after the remeshing and after
     every second dual.
@@ -167,7 +173,7 @@ def dual_convergence(mesh: Mesh, scheme="pentagonalize", duals: int = 12, **opti
     mesh : Mesh
     scheme : str, Scheme or callable
         As for :func:`pentanb.subdivide`.
-    duals : int, even, >= 2
+    duals : int, even, in [2, 2 :data:`MAX_MEASURED`]
         Number of dual operations after the remeshing; they are measured in
         pairs (the dual of a dual is a mesh of the remeshing's kind again),
         so the number must be even.
@@ -183,15 +189,16 @@ def dual_convergence(mesh: Mesh, scheme="pentagonalize", duals: int = 12, **opti
     Raises
     ------
     TypeError
-        ``duals`` is not an integer.
+        ``mesh`` is not a Mesh, or ``duals`` not an integer.
     ValueError
-        ``duals`` is odd or < 2.
+        ``duals`` is odd, < 2 or more than ``2 * MAX_MEASURED`` (refused
+        before any work).
     """
-    if isinstance(duals, bool) or not isinstance(duals, (int, np.integer)):
-        raise TypeError(f"duals must be an even integer >= 2, got {duals!r}")
-    if duals < 2 or duals % 2:
+    check_mesh(mesh, "dual_convergence")
+    duals = _checks.count(duals, "duals", 2, 2 * MAX_MEASURED)
+    if duals % 2:
         raise ValueError(f"duals must be an even integer >= 2 (pairs of duals), got {duals}")
-    pairs = int(duals) // 2
+    pairs = duals // 2
     m = subdivide(mesh, scheme, 1, 0, **options)
     rows = [_row(m, None)]
     for _ in range(pairs):
@@ -221,7 +228,7 @@ def subdivision_convergence(
     mesh : Mesh
     scheme : str, Scheme or callable
         As for :func:`pentanb.subdivide`.
-    iterations : int, >= 1
+    iterations : int, in [1, :data:`MAX_MEASURED`]
         Repetitions of the scheme, each followed by ``duals`` duals.
     duals : int, >= 0
         Dual operations after every remeshing.
@@ -238,11 +245,22 @@ def subdivision_convergence(
 
     Raises
     ------
+    TypeError
+        ``mesh`` is not a Mesh, or a count not an integer.
     ValueError
-        ``iterations`` < 1.
+        ``iterations`` < 1 or over :data:`MAX_MEASURED`, ``duals`` < 0.
+    MeshError
+        Before anything is built, when an iteration would not fit in memory
+        (as :func:`pentanb.subdivide` refuses it, for a registered scheme).
     """
-    if iterations < 1:
-        raise ValueError(f"iterations must be >= 1, got {iterations}")
+    check_mesh(mesh, "subdivision_convergence")
+    iterations = _checks.count(iterations, "iterations", 1, MAX_MEASURED)
+    duals = _checks.count(duals, "duals")
+    s = get_scheme(scheme)
+    if isinstance(s, Scheme):  # every level at once: refused before the first is built
+        predict_counts(mesh, s, iterations, duals)
+    else:
+        _checks.steps(iterations * (1 + duals), f"{iterations:,} iterations with {duals:,} duals")
     name = _name(scheme)
     source = mesh if name in ("pentagonalize", "preserve_pentagons") and duals % 2 == 0 else None
     rows = []

@@ -26,10 +26,10 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .. import shapes
+from .. import _checks, shapes
 from ..mesh import Mesh
 from ..schemes import SCHEMES
-from ..subdivision import subdivide
+from ..subdivision import predict_counts, subdivide
 from .measures import edge_profile, lateral_amplitude
 
 __all__ = [
@@ -126,18 +126,21 @@ def study(
     (pentagon preservation of the 10-cell box after 4 iterations) has 1.6 million
     edges; the whole default study takes about 10 s of one core.
     """
-    if isinstance(iterations, bool) or not isinstance(iterations, int) or iterations < 1:
-        raise ValueError(f"iterations must be an integer >= 1, got {iterations!r}")
+    iterations = _checks.count(iterations, "iterations", 1)
     for b in boxes:
         if b not in BOXES:
             raise ValueError(f"unknown box {b!r}; known: {', '.join(BOXES)}")
     for s in schemes:
         if s not in SCHEMES:
             raise ValueError(f"unknown scheme {s!r}; known: {', '.join(SCHEMES)}")
+    starts = {b: BOXES[b][0]() for b in boxes}
+    for b in boxes:  # every request refused before the first is built (MeshError)
+        for s in schemes:
+            predict_counts(starts[b], s, iterations, 2)
     amp, prof, secs = {}, {}, {}
     for b in boxes:
-        build, window, _ = BOXES[b]
-        start = build()
+        _, window, _ = BOXES[b]
+        start = starts[b]
         for s in schemes:
             t = time.perf_counter()
             mesh, rows = start, []
@@ -162,13 +165,15 @@ def wavelength(x: ArrayLike, r: ArrayLike, samples: int = 512) -> float:
     ----------
     x, r : (k,) float
         Sorted by ``x`` (as :func:`~pentanb.analysis.measures.edge_profile` gives them).
-    samples : int
+    samples : int, in [3, 10,000,000]
+        Points of the even resampling.
 
     Returns
     -------
     float
         NaN for a flat profile.
     """
+    samples = _checks.count(samples, "samples", 3, 10_000_000)
     x = np.asarray(x, dtype=float)
     r = np.asarray(r, dtype=float)
     if x.size < 3 or np.ptp(r) < 1e-12:

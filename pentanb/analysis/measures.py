@@ -38,7 +38,7 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..mesh import Mesh
+from ..mesh import Mesh, check_mesh
 from ..notation.positions import best_fit_planes, face_planarity
 
 __all__ = [
@@ -136,6 +136,7 @@ def vertex_configurations(mesh: Mesh) -> list[str]:
     (V,) list of str
         Vertex ``i``'s configuration at position ``i``.
     """
+    check_mesh(mesh, "vertex_configurations")
     ring, ring_off = mesh.vertex_ring
     face_size_of_he = mesh.face_sizes[mesh.halfedge_face]
     return _configurations(face_size_of_he, mesh.valences, ring, ring_off)
@@ -158,6 +159,7 @@ def face_configurations(mesh: Mesh) -> list[str]:
     (F,) list of str
         Face ``i``'s configuration at position ``i``.
     """
+    check_mesh(mesh, "face_configurations")
     order = np.arange(mesh.n_halfedges, dtype=np.int64)
     return _configurations(mesh.valences[mesh.corners], mesh.face_sizes, order, mesh.offsets)
 
@@ -214,6 +216,7 @@ def radius_spread(mesh: Mesh) -> float:
     -------
     float
     """
+    check_mesh(mesh, "radius_spread")
     r = np.linalg.norm(mesh.vertices - mesh.vertices.mean(axis=0), axis=1)
     return float(r.std() / r.mean())
 
@@ -263,6 +266,7 @@ def normal_angles(mesh: Mesh) -> NDArray[np.float64]:
     (E,) float
         Degrees; 0 where the two faces are coplanar, 90 on a cube's edges.
     """
+    check_mesh(mesh, "normal_angles")
     h = mesh.edge_halfedge
     f, g = mesh.halfedge_face[h], mesh.halfedge_face[mesh.twin[h]]
     n = _unit_normals(mesh)
@@ -289,6 +293,7 @@ def ray_distances(mesh: Mesh, origins: ArrayLike, direction: ArrayLike) -> NDArr
     (k,) float
         NaN where a ray misses.
     """
+    check_mesh(mesh, "ray_distances")
     d = np.asarray(direction, dtype=np.float64)
     o = np.atleast_2d(np.asarray(origins, dtype=np.float64))
     a = mesh.face_centroids[mesh.halfedge_face]
@@ -340,6 +345,7 @@ def edge_waviness(
     float
         ``max - min`` of the distances (in the mesh's units).
     """
+    check_mesh(mesh, "edge_waviness")
     s, e = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
     d = np.asarray(direction, dtype=float)
     t = np.linspace(0.0, 1.0, samples)[:, None]
@@ -360,6 +366,7 @@ def edge_lengths(mesh: Mesh) -> NDArray[np.float64]:
     (E,) float
         Edge ``e`` from its half-edge ``edge_halfedge[e]``.
     """
+    check_mesh(mesh, "edge_lengths")
     h = mesh.edge_halfedge
     return np.linalg.norm(mesh.vertices[mesh.head[h]] - mesh.vertices[mesh.corners[h]], axis=1)
 
@@ -404,6 +411,7 @@ def edge_length_spread(mesh: Mesh, faces: ArrayLike | None = None) -> float:
         0 when every edge has the same length (a Platonic solid).  Does not
         change with the mesh's position or scale.
     """
+    check_mesh(mesh, "edge_length_spread")
     return _spread(edge_lengths(mesh)[_face_edges(mesh, faces)])
 
 
@@ -421,6 +429,7 @@ def corner_angles(mesh: Mesh) -> NDArray[np.float64]:
         ``halfedge_face[h]`` between its edges to the next and the previous
         corner.  A planar n-gon's angles add up to ``(n - 2) 180``.
     """
+    check_mesh(mesh, "corner_angles")
     v = mesh.vertices
     e = v[mesh.head] - v[mesh.corners]  # half-edge h, from its corner to the next
     length = np.sqrt(np.einsum("ij,ij->i", e, e))
@@ -453,6 +462,7 @@ def angle_spread(mesh: Mesh, faces: ArrayLike | None = None, by: str = "size") -
     float
         0 when the angles within every group are equal.
     """
+    check_mesh(mesh, "angle_spread")
     if by not in ("size", "valence"):
         raise ValueError(f"by must be 'size' or 'valence', got {by!r}")
     hs = _face_halfedges(mesh, faces)
@@ -483,6 +493,7 @@ def uniformity(mesh: Mesh) -> dict[str, float]:
         :func:`angle_spread` (corners grouped by face size); ``"radius"``:
         :func:`radius_spread`.  Each is 0 on a Platonic solid.
     """
+    check_mesh(mesh, "uniformity")
     return {
         "edge": edge_length_spread(mesh),
         "angle": angle_spread(mesh),
@@ -517,6 +528,7 @@ def planarity(mesh: Mesh) -> float:
     >>> planarity(pentanb.shapes.cube())
     0.0
     """
+    check_mesh(mesh, "planarity")
     return float(face_planarity(mesh).max(initial=0.0))
 
 
@@ -549,6 +561,7 @@ def region_geometry(
         and planarity 0; its edge spread is that of its tile, see
         :func:`pentanb.figures.claim.classical_tile`.)
     """
+    check_mesh(mesh, "region_geometry")
     f = np.asarray(faces, dtype=np.int64).reshape(-1)
     if f.size == 0:
         raise ValueError("region_geometry needs at least one face")
@@ -597,6 +610,7 @@ def flat_region(
         The faces all of whose corners lie within ``tol`` of the plane and
         within ``radius`` of ``centre``, increasing.
     """
+    check_mesh(mesh, "flat_region")
     c = np.asarray(centre, dtype=float)
     n = np.asarray(normal, dtype=float)
     n = n / np.linalg.norm(n)
@@ -690,6 +704,7 @@ def surface_distance(points: ArrayLike, mesh: Mesh, block: int = 256) -> NDArray
     (n,) float
         0 for a point on a face or an edge.
     """
+    check_mesh(mesh, "surface_distance")
     p = np.asarray(points, dtype=float).reshape(-1, 3)
     v = mesh.vertices
     tri = []
@@ -730,6 +745,7 @@ def crease_angles(
         marked vertices, ``"elsewhere"``: of all the other edges (NaN where
         there is no such edge); degrees.
     """
+    check_mesh(mesh, "crease_angles")
     m = np.asarray(marked)
     if m.dtype == bool:
         if m.shape != (mesh.n_vertices,):
@@ -855,6 +871,7 @@ def edge_profile(
         ends (``|x|`` near ``half``) the plane also cuts the box's end faces;
         :func:`lateral_amplitude` measures away from them.
     """
+    check_mesh(mesh, "edge_profile")
     if not 35.0 <= angle <= 55.0:
         raise ValueError(f"angle must be from 35 to 55 degrees, got {angle}")
     if tuple(edge) not in BOX_EDGES:
@@ -894,6 +911,7 @@ def lateral_amplitude(
     (12,) float
         One value per edge of :data:`BOX_EDGES`.
     """
+    check_mesh(mesh, "lateral_amplitude")
     if not 0.0 < window < half:
         raise ValueError(f"window must be in (0, {half}), got {window}")
     for angle in angles:

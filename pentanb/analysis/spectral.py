@@ -96,11 +96,13 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .. import _checks
 from .. import schemes as _schemes
-from ..mesh import Mesh
+from ..memory import default_max_bytes, mesh_bytes, readable
+from ..mesh import Mesh, MeshError
 from ..notation import seeds
 from ..schemes.registry import SCHEMES, Scheme
-from ..subdivision import get_scheme
+from ..subdivision import get_scheme, predict_counts
 from . import _exact
 from .subdivision_matrix import _name, dual_matrix, remesh_matrix
 
@@ -136,6 +138,11 @@ KINDS = ("vertex", "face")
 
 #: Largest mesh (faces) the search for a stationary neighbourhood builds.
 MAX_FACES = 60_000
+#: Most duals after each remeshing (the paper's smoothing takes 2).
+MAX_DUALS = 64
+#: Largest mesh (faces) the characteristic map's levels may reach (the
+#: figure's maps reach 40,000).
+MAP_MAX_FACES = 1_000_000
 #: Relative tolerance of "equal moduli" and of "same matrix".
 TOL = 1e-8
 
@@ -182,9 +189,23 @@ def pyramid(size: int) -> Mesh:
 
 
 def _check_size(size) -> int:
-    if isinstance(size, bool) or not isinstance(size, (int, np.integer)) or size < 3:
-        raise ValueError(f"size must be an integer >= 3, got {size!r}")
-    return int(size)
+    return _checks.count(size, "size", 3)
+
+
+def _refuse_pyramid(size: int, max_faces: int | None = None) -> None:
+    """Refuse, before building it, a pyramid of more than ``max_faces`` faces or
+    more than the memory available (a ValueError naming ``size``)."""
+    if max_faces is not None and size + 1 > max_faces:
+        raise ValueError(
+            f"size={size:,}: the pyramid it is planted in has {size + 1:,} faces, over "
+            f"max_faces={max_faces:,}"
+        )
+    need, limit = mesh_bytes(size + 1, 2 * size, size + 1), default_max_bytes()
+    if need > limit:
+        raise ValueError(
+            f"size={size:,}: the pyramid it is planted in needs {readable(need)}, over the "
+            f"memory available ({readable(limit)})"
+        )
 
 
 def _check_kind(kind) -> str:
@@ -706,20 +727,35 @@ def local_spectrum(
 
     Raises
     ------
+    TypeError
+        A size, count or ``max_faces`` that is not an integer.
     ValueError
-        A bad kind, size, count, scheme or option.
+        A bad kind, size, count, scheme or option; a ``max_faces`` < 1, or
+        smaller than the mesh the element is planted in (refused before
+        that mesh is built).
+    MeshError
+        The first step would not fit in memory (refused before it is built).
     """
     kind = _check_kind(kind)
     size = _check_size(size)
+    max_faces = _checks.count(max_faces, "max_faces", 1)
     s = get_scheme(scheme)
     if isinstance(s, Scheme):
         unknown = set(options) - set(s.options)
         if unknown:
             raise ValueError(f"scheme {s.name!r} takes {', '.join(s.options) or 'no options'}")
-    if isinstance(duals, bool) or not isinstance(duals, (int, np.integer)) or duals < 0:
-        raise ValueError(f"duals must be a non-negative integer, got {duals!r}")
-    duals = int(duals)
+    duals = _checks.count(duals, "duals", 0, MAX_DUALS)
     name = _name(s)
+    if mesh is None:
+        _refuse_pyramid(size, max_faces)
+        start = (size + 1, 2 * size, size + 1)
+    else:
+        _planted(mesh, kind, size, element)
+        if mesh.n_faces > max_faces:
+            raise ValueError(f"the mesh has {mesh.n_faces:,} faces, over max_faces={max_faces:,}")
+        start = (mesh.n_vertices, mesh.n_edges, mesh.n_faces)
+    if isinstance(s, Scheme):
+        predict_counts(start, s, 1, duals)  # the first step is always built: does it fit?
     if mesh is None:
         base = pyramid(size)
         el = ("vertex", 0) if kind == "vertex" else ("face", size)
@@ -1202,6 +1238,24 @@ def extrapolate_ratio(ratios) -> float:
     return c - (c - b) ** 2 / den
 
 
+def _refuse_levels(start, s, iterations: int, duals: int) -> None:
+    """Refuse, before anything is built, ``iterations`` levels of ``s`` from
+    ``start`` counts that are all kept: one too large for memory (as
+    :func:`pentanb.subdivide` refuses it), all together over the memory
+    available (MeshError), or too many steps (ValueError)."""
+    if not isinstance(s, Scheme):  # a callable: subdivide guards every level
+        _checks.steps(iterations * (1 + duals), f"{iterations:,} iterations with {duals:,} duals")
+        return
+    after = predict_counts(start, s, iterations, duals)
+    kept = sum(mesh_bytes(*c) for c in after[duals :: 1 + duals])
+    limit = default_max_bytes()
+    if kept > limit:
+        raise MeshError(
+            f"{iterations:,} iterations of {_name(s)} keep meshes of {readable(kept)} in all, "
+            f"over the memory available ({readable(limit)}); lower iterations"
+        )
+
+
 def ring_contraction(
     scheme="pentagonalize",
     kind: str = "vertex",
@@ -1254,19 +1308,33 @@ def ring_contraction(
 
     Raises
     ------
+    TypeError
+        A size or count that is not an integer.
     ValueError
-        When the element does not keep its index and valence (or size).
+        When the element does not keep its index and valence (or size); a
+        count out of range.
+    MeshError
+        Before anything is built, when the meshes (every level is kept)
+        would not fit in memory.
     """
     kind = _check_kind(kind)
+    iterations = _checks.count(iterations, "iterations", 1)
+    duals = _checks.count(duals, "duals", 0, MAX_DUALS)
+    s = get_scheme(scheme)
     if mesh is None:
         size = _check_size(size)
+        _refuse_pyramid(size)
+        start = (size + 1, 2 * size, size + 1)
+    else:
+        start = (mesh.n_vertices, mesh.n_edges, mesh.n_faces)
+    _refuse_levels(start, s, iterations, duals)
+    if mesh is None:
         mesh = pyramid(size)
         element = 0 if kind == "vertex" else size
     if element is None:
         raise ValueError("give the element to follow when you give a mesh")
     from ..subdivision import subdivide
 
-    s = get_scheme(scheme)
     el = (kind, int(element))
 
     def measure(m: Mesh) -> int:
@@ -1449,19 +1517,15 @@ def characteristic_map(
         a simple ``lambda1``, or three or more eigenvalues of the subdominant
         modulus).
     """
+    iterations = _checks.count(iterations, "iterations", 0, _checks.MAX_STEPS)
     if not isinstance(spectrum, LocalSpectrum):
         spectrum = local_spectrum(spectrum, kind, size, duals, **options)
     if not spectrum.stationary or spectrum._context is None:
         raise ValueError(f"no characteristic map: {spectrum.note or 'no stationary neighbourhood'}")
     if spectrum.map_obstruction:
         raise ValueError(f"no characteristic map: {spectrum.map_obstruction}")
-    if (
-        isinstance(iterations, bool)
-        or not isinstance(iterations, (int, np.integer))
-        or iterations < 0
-    ):
-        raise ValueError(f"iterations must be a non-negative integer, got {iterations!r}")
     ctx: _Context = spectrum._context
+    _refuse_map_levels(ctx, iterations)
     w = spectrum.eigenvalues
     V = ctx.vectors
     complex_pair = spectrum.subdominant_complex
@@ -1520,6 +1584,28 @@ def characteristic_map(
         complex_pair=complex_pair,
         defective=defective,
     )
+
+
+def _refuse_map_levels(ctx: _Context, iterations: int) -> None:
+    """Refuse (MeshError), before building any, levels of the characteristic map
+    with more than :data:`MAP_MAX_FACES` faces at some step; predicted from
+    the counts level by level, stopping at the first too large."""
+    built = len(ctx.steps) - 1
+    s = ctx.scheme
+    if ctx.level + iterations <= built or not isinstance(s, Scheme):
+        return
+    last = ctx.steps[-1].mesh
+    counts = (last.n_vertices, last.n_edges, last.n_faces)
+    for level in range(built + 1, ctx.level + iterations + 1):
+        V, E, F = s.counts(*counts)
+        biggest = max(F, V) if ctx.duals else F  # a dual has a face per vertex
+        if biggest > MAP_MAX_FACES:
+            raise MeshError(
+                f"iterations={iterations:,}: the characteristic map's level {level} would "
+                f"have a mesh of {biggest:,} faces, over MAP_MAX_FACES={MAP_MAX_FACES:,}; "
+                "lower iterations"
+            )
+        counts = (F, E, V) if ctx.duals % 2 else (V, E, F)
 
 
 def _propagate(S, x):

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 
+from .. import _checks
 from ..mesh import Mesh
 from ..schemes.registry import SCHEMES, Counts, Scheme, get_scheme
 from .grammar import Notation, Token, _reduce, parse
@@ -16,6 +17,10 @@ __all__ = ["conway", "resolve", "as_scheme", "MAX_FACES"]
 
 #: Refuse a string whose predicted result has more faces than this.
 MAX_FACES = 1_000_000
+
+#: Counts are not followed beyond this (an upper bound then): no operator string
+#: builds huge integers (3**100,000 after 100,000 truncations).
+_COUNT_CAP = 2**80
 
 
 def _check_options(n: Notation, options: Mapping) -> None:
@@ -45,14 +50,55 @@ def _apply(tokens: Sequence[Token], mesh: Mesh, options: Mapping) -> Mesh:
     return mesh
 
 
+def _capped(counts: Counts) -> Counts:
+    """Each count at most ``_COUNT_CAP`` (numbers only: a formula's symbols pass)."""
+    return tuple(  # type: ignore[return-value]
+        min(x, _COUNT_CAP) if isinstance(x, (int, float)) else x for x in counts
+    )
+
+
 def _steps(tokens: Sequence[Token], counts: Counts) -> list[Counts]:
     """``counts``, then the counts after every operator, right to left (upper
-    bounds after ``kN`` and ``tN``)."""
+    bounds after ``kN`` and ``tN``; each count at most ``2**80``, so that no
+    string builds huge integers)."""
     out = [counts]
     for tok in reversed(tokens):
-        counts = OPERATORS[tok.letter].counts(*counts)
+        counts = _capped(OPERATORS[tok.letter].counts(*counts))
         out.append(counts)
     return out
+
+
+def _check_size(n: Notation, seed: Mesh | None, max_faces: int) -> None:
+    """Refuse (ValueError) before building: the first step, right to left, whose
+    predicted mesh has more than ``max_faces`` faces (or ``2 max_faces``
+    vertices), quoting only that part of the string."""
+
+    def check(counts: Counts, tok: Token | None) -> None:
+        V, E, F = counts
+        if F > max_faces or V > 2 * max_faces:
+            where = (
+                ""
+                if tok is None
+                else " (its seed)"
+                if tok is n.seed
+                else f" after {tok} at position {tok.position:,}"
+            )
+            near = "" if tok is None else _checks.excerpt(n.text, tok.position)
+            raise ValueError(
+                f"{near or _checks.shown(n.text)} would build a mesh of about {F:,} faces "
+                f"({V:,} vertices, {E:,} edges){where}, over max_faces={max_faces:,}"
+            )
+
+    if seed is not None:
+        counts: Counts = (seed.n_vertices, seed.n_edges, seed.n_faces)
+    else:
+        assert n.seed is not None
+        s = SEEDS[n.seed.letter]
+        counts = s.counts(n.seed.number) if s.needs_number else s.counts()
+    check(counts, n.seed)
+    for tok in reversed(n.operators):  # stops at the first too large: no huge integers
+        counts = OPERATORS[tok.letter].counts(*counts)
+        check(counts, tok)
 
 
 def _counts(notation: str | Notation, seed: Mesh | None = None) -> tuple[list[Counts], bool]:
@@ -100,9 +146,10 @@ def conway(
         Apply :data:`REDUCTIONS` first.  Default: only with ``canonical``,
         where it changes nothing but the time (with the package's positions
         ``dd`` is two smoothing steps, Figure 7, not the identity).
-    max_faces : int
+    max_faces : int, >= 1
         Refuse, before building anything, a string whose predicted result
-        (an upper bound with ``kN``/``tN``) has more faces.
+        or any step towards it (an upper bound with ``kN``/``tN``) has more
+        faces (or twice as many vertices).
     **options
         Options of the operators in the string, given to every operator that
         takes them: ``scale`` for ``q`` (default 0.5), ``e`` and ``c`` (0.5).
@@ -115,14 +162,24 @@ def conway(
     Raises
     ------
     NotationError
-        (a ValueError) a malformed string; the message names the character
-        and its position.
+        (a ValueError) a malformed string, or one of more than
+        :data:`~pentanb.notation.grammar.MAX_LENGTH` characters or with a
+        number of more than :data:`~pentanb.notation.grammar.MAX_DIGITS`
+        digits; the message names the character and its position, and
+        quotes only that part of a long string.
     TypeError
-        ``notation`` is not a string, ``seed`` not a Mesh, or an option no
-        operator of the string takes.
+        ``notation`` is not a string, ``seed`` not a Mesh, ``max_faces``
+        not an integer, or an option no operator of the string takes.
     ValueError
-        The predicted result exceeds ``max_faces``; an option's value is
-        out of range.
+        A step exceeds ``max_faces`` (found without building anything, and
+        without huge integers: the message quotes the operator);
+        ``max_faces`` < 1; an option's value is out of range.
+
+    Notes
+    -----
+    The string is checked (its length and numbers, then its options), then
+    reduced when asked (in time linear in its length), then its sizes are
+    predicted, and only then is anything built.
 
     Examples
     --------
@@ -134,19 +191,14 @@ def conway(
     """
     if seed is not None and not isinstance(seed, Mesh):
         raise TypeError(f"seed must be a pentanb.Mesh or None, got {type(seed).__name__}")
+    max_faces = _checks.count(max_faces, "max_faces", 1)
     n = parse(notation, seed_given=seed is not None)
     _check_options(n, options)
     if reduce is None:
         reduce = bool(canonical)
     if reduce:
         n = _reduce(n)
-    steps, _ = _counts(n, seed)
-    for V, E, F in steps:
-        if F > max_faces or V > 2 * max_faces:
-            raise ValueError(
-                f"{notation!r} would build a mesh of about {F:,} faces ({V:,} vertices, "
-                f"{E:,} edges), over max_faces={max_faces:,}"
-            )
+    _check_size(n, seed, max_faces)
     if seed is None:
         assert n.seed is not None
         s = SEEDS[n.seed.letter]
@@ -247,6 +299,6 @@ def as_scheme(scheme: str | Scheme | Callable) -> Scheme | Callable:
     except ValueError as exc:
         why = str(exc).splitlines()[0] if str(exc) else "not Conway notation"
         raise ValueError(
-            f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}, "
+            f"unknown scheme {_checks.shown(scheme)}; known schemes: {', '.join(SCHEMES)}, "
             f"or Conway operators such as 'dg' ({why})"
         ) from None

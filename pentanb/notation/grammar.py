@@ -5,12 +5,18 @@ A string is read right to left: the rightmost letter is the seed
 (:data:`~pentanb.notation.seeds.SEEDS`), every letter to its left an
 operator (:data:`~pentanb.notation.operators.OPERATORS`); ``kN`` and ``tN``
 take a number, and so do the seeds ``Pn An Yn``.
+
+Bounds: a string of at most :data:`MAX_LENGTH` characters, numbers of at
+most :data:`MAX_DIGITS` digits (checked before any is converted); a
+message quotes only the offending part of a long string.  Parsing and
+reducing take time linear in the string's length.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .._checks import excerpt, shown
 from .operators import OPERATORS
 from .seeds import SEEDS
 
@@ -22,7 +28,18 @@ __all__ = [
     "REDUCTIONS",
     "SEED_REDUCTIONS",
     "reduce_notation",
+    "MAX_LENGTH",
+    "MAX_DIGITS",
 ]
+
+#: Longest Conway string read (characters): every letter is an operation,
+#: and :func:`pentanb.conway` applies at most this many.
+MAX_LENGTH = 100_000
+#: Most digits of a number in a string (``k12``, ``P100``): up to 999,999,999.
+MAX_DIGITS = 9
+
+#: Characters of the string shown on each side of the offending one in a message.
+_CONTEXT = 30
 
 
 class NotationError(ValueError):
@@ -37,7 +54,14 @@ class NotationError(ValueError):
     """
 
     def __init__(self, message: str, notation: str, position: int):
-        pointer = f"\n  {notation}\n  {' ' * position}^" if notation else ""
+        pointer = ""
+        if notation:
+            # a window of the string around the position (a long string is not echoed)
+            lo = max(0, position - _CONTEXT)
+            hi = min(len(notation), position + _CONTEXT + 1)
+            lead = "..." if lo > 0 else ""
+            tail = "..." if hi < len(notation) else ""
+            pointer = f"\n  {lead}{notation[lo:hi]}{tail}\n  {' ' * (len(lead) + position - lo)}^"
         super().__init__(message + pointer)
         self.notation = notation
         self.position = position
@@ -95,9 +119,10 @@ def parse(notation: str, *, seed_given: bool = False) -> Notation:
     NotationError
         (a ValueError) naming the character and its 0-based position: an
         empty string, an unknown letter, a number where none may stand or a
-        missing one (``P``), a number out of range (``P2``, ``k2``), no
-        seed, a seed that is not the rightmost letter, a seed both in the
-        string and passed as a mesh.
+        missing one (``P``), a number out of range (``P2``, ``k2``) or of
+        more than :data:`MAX_DIGITS` digits, no seed, a seed that is not the
+        rightmost letter, a seed both in the string and passed as a mesh, a
+        string of more than :data:`MAX_LENGTH` characters.
     """
     if not isinstance(notation, str):
         raise TypeError(f"a Conway notation must be a string, got {type(notation).__name__}")
@@ -105,6 +130,13 @@ def parse(notation: str, *, seed_given: bool = False) -> Notation:
     if not s:
         raise NotationError(
             "empty notation: write operators then a seed, e.g. 'gC' (" + _known() + ")", s, 0
+        )
+    if len(s) > MAX_LENGTH:
+        raise NotationError(
+            f"a Conway string of {len(s):,} characters ({s[:20]!r}...); at most {MAX_LENGTH:,} "
+            "are read (each letter is an operation)",
+            s,
+            MAX_LENGTH,
         )
     tokens: list[Token] = []
     i = 0
@@ -115,13 +147,20 @@ def parse(notation: str, *, seed_given: bool = False) -> Notation:
         op, seed = OPERATORS.get(ch), SEEDS.get(ch)
         if op is None and seed is None:
             raise NotationError(
-                f"unknown letter {ch!r} at position {i} in {s!r}; " + _known(), s, i
+                f"unknown letter {ch!r} at position {i} in {excerpt(s, i)}; " + _known(), s, i
             )
         j = i + 1
         while j < len(s) and s[j] in _DIGITS:
             j += 1
         digits = s[i + 1 : j]
         number = None
+        if j - (i + 1) > MAX_DIGITS:
+            raise NotationError(
+                f"the number after {ch!r} at position {i} has {j - i - 1:,} digits, "
+                f"{excerpt(s, i + 1, j)}; at most {MAX_DIGITS} are read",
+                s,
+                i + 1,
+            )
         if digits:
             takes = op.number if op is not None else (seed is not None and seed.needs_number)
             if not takes:
@@ -163,7 +202,7 @@ def parse(notation: str, *, seed_given: bool = False) -> Notation:
         return Notation(s, tuple(tokens), None)
     if not seeds:
         raise NotationError(
-            f"no seed in {s!r}: end the string with T, C, O, I, D, Pn, An or Yn, "
+            f"no seed in {shown(s)}: end the string with T, C, O, I, D, Pn, An or Yn, "
             "or pass a Mesh as seed",
             s,
             len(s),
@@ -228,33 +267,52 @@ SEED_REDUCTIONS: dict[str, str] = {
 }
 
 
+#: The rewrites by their pattern's length, pattern -> replacement (no two-letter
+#: pattern is the end of a three-letter one, so the order between them is moot).
+_RULES: tuple[dict[str, str], ...] = tuple(
+    {p: r for p, r in REDUCTIONS if len(p) == k} for k in (2, 3)
+)
+
+
 def _reduce(n: Notation) -> Notation:
-    toks = list(n.operators)
-    seed = n.seed
-    changed = True
-    while changed:
-        changed = False
-        for pattern, repl in REDUCTIONS:
-            k = len(pattern)
-            for i in range(len(toks) - k + 1):
-                window = toks[i : i + k]
-                if all(t.number is None and t.letter == c for t, c in zip(window, pattern)):
-                    pos = window[0].position
-                    toks[i : i + k] = [Token(c, None, pos) for c in repl]
-                    changed = True
+    """``n`` with :data:`REDUCTIONS` applied until none applies, then the seed's.
+
+    Linear in the number of operators: the operators are pushed left to
+    right onto a stack kept free of patterns, and after every push the
+    rules whose pattern ends at the top are tried there (a rewrite can only
+    make a pattern that ends at the new top, since the rest of the stack
+    has none).  Every rewrite shortens the stack, so there are fewer
+    rewrites than operators.  Then the seed: ``P4`` is ``C``, and a ``d``
+    left of a seed turns it into its dual seed (``dC`` is ``O``).
+    """
+    stack: list[Token] = []
+    letters: list[str] = []  # the stack's letters ("#" for a letter with a number)
+    for tok in n.operators:
+        stack.append(tok)
+        letters.append(tok.letter if tok.number is None else "#")
+        while len(letters) >= 2:
+            for k, rules in zip((2, 3), _RULES):
+                repl = rules.get("".join(letters[-k:])) if len(letters) >= k else None
+                if repl is not None:
+                    pos = stack[-k].position
+                    del stack[-k:], letters[-k:]
+                    stack.extend(Token(c, None, pos) for c in repl)
+                    letters.extend(repl)
                     break
-            if changed:
+            else:
                 break
-        if not changed and seed is not None:
-            key = str(seed)
-            if key in SEED_REDUCTIONS:
-                seed = Token(SEED_REDUCTIONS[key], None, seed.position)
-                changed = True
-            elif toks and toks[-1].letter == "d" and "d" + key in SEED_REDUCTIONS:
-                seed = Token(SEED_REDUCTIONS["d" + key], None, seed.position)
-                toks.pop()
-                changed = True
-    return Notation(n.text, tuple(toks), seed)
+    seed = n.seed
+    while seed is not None:
+        key = str(seed)
+        if key in SEED_REDUCTIONS:
+            seed = Token(SEED_REDUCTIONS[key], None, seed.position)
+        elif stack and stack[-1].letter == "d" and "d" + key in SEED_REDUCTIONS:
+            seed = Token(SEED_REDUCTIONS["d" + key], None, seed.position)
+            stack.pop()  # (the rest of the stack stays free of patterns)
+            letters.pop()
+        else:
+            break
+    return Notation(n.text, tuple(stack), seed)
 
 
 def reduce_notation(notation: str) -> str:

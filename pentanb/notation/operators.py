@@ -46,6 +46,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import _checks
 from ..mesh import Mesh, check_mesh
 from ..schemes import pentagonal
 from ..schemes._build import (
@@ -79,11 +80,7 @@ def _check_sides(n, what: str) -> int | None:
     """``None`` or an integer >= 3 (a face size or a valence)."""
     if n is None:
         return None
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)):
-        raise TypeError(f"{what} must be an integer or None, got {n!r}")
-    if n < 3:
-        raise ValueError(f"{what} must be at least 3, got {n}")
-    return int(n)
+    return _checks.count(n, what, 3)
 
 
 def ambo(mesh: Mesh) -> Mesh:

@@ -54,6 +54,7 @@ from typing import Literal, overload
 
 import numpy as np
 
+from .. import _checks
 from ..mesh import Mesh, MeshError, check_mesh
 
 __all__ = [
@@ -69,6 +70,10 @@ __all__ = [
 #: Default tolerance: edges tangent, tangency points centred and faces planar
 #: (relative to each face's mean edge length) within this.
 TOLERANCE = 1e-8
+#: Most steps ``max_iterations`` may ask for: a solver that has not
+#: converged in 10,000 Newton steps will not (and each step is a sparse
+#: solve on the whole mesh).
+MAX_ITERATIONS = 10_000
 
 
 @dataclass(frozen=True)
@@ -278,7 +283,7 @@ def canonical(
         Largest accepted ``|distance(edge, origin) - 1|``, norm of the mean
         tangency point, and corner distance from its face's best-fit plane
         relative to that face's mean edge length.
-    max_iterations : int
+    max_iterations : int in [0, :data:`MAX_ITERATIONS`]
         Newton steps (of either method) before giving up.
     method : {"koebe", "newton"}
         ``"koebe"``: from the circle pattern (see the module's notes), then
@@ -297,6 +302,12 @@ def canonical(
 
     Raises
     ------
+    TypeError
+        ``mesh`` is not a Mesh; ``tolerance`` or ``max_iterations`` of a
+        wrong type (the message names it).
+    ValueError
+        ``tolerance`` not positive, ``max_iterations`` out of its range, an
+        unknown method.
     MeshError
         The mesh is not connected or not of genus 0.
     ConvergenceError
@@ -304,13 +315,14 @@ def canonical(
         not convex; the error carries the report and the best positions.
     """
     check_mesh(mesh, "canonical")
+    tolerance = _check_tolerance(tolerance)
+    max_iterations = _checks.count(max_iterations, "max_iterations", 0, MAX_ITERATIONS)
     if mesh.n_components != 1 or mesh.genus != 0:
         raise MeshError(
             f"the canonical form needs a connected genus-0 mesh; this one has "
             f"{mesh.n_components} component(s) and genus {mesh.genus} "
             "(planarize works for any genus)"
         )
-    tolerance = _check_tolerance(tolerance)
     if method not in ("koebe", "newton"):
         raise ValueError(f"method must be 'koebe' or 'newton', got {method!r}")
     start = time.perf_counter()
@@ -364,13 +376,7 @@ def canonical(
 
 
 def _check_tolerance(tolerance) -> float:
-    try:
-        t = float(tolerance)
-    except (TypeError, ValueError):
-        raise ValueError(f"tolerance must be a positive number, got {tolerance!r}") from None
-    if not (t > 0.0 and np.isfinite(t)):
-        raise ValueError(f"tolerance must be a positive number, got {tolerance!r}")
-    return t
+    return _checks.number(tolerance, "tolerance", 0.0, open_low=True)
 
 
 # ---------------------------------------------------------------------- Koebe start
@@ -876,7 +882,8 @@ def planarize(
     tolerance : float
         Largest accepted corner distance from its face's best-fit plane,
         relative to that face's mean edge length.
-    max_iterations : int
+    max_iterations : int in [0, :data:`MAX_ITERATIONS`]
+        Gauss-Newton steps (of each phase) before giving up.
     report : bool
         Return ``(mesh, PlacementReport)`` (whose ``max_move`` is the largest
         vertex displacement over the mean edge length) and do not raise.
@@ -888,11 +895,17 @@ def planarize(
 
     Raises
     ------
+    TypeError
+        ``mesh`` is not a Mesh; ``tolerance`` or ``max_iterations`` of a
+        wrong type (the message names it).
+    ValueError
+        ``tolerance`` not positive, ``max_iterations`` out of its range.
     ConvergenceError
         (unless ``report``) the tolerance was not reached.
     """
     check_mesh(mesh, "planarize")
     tolerance = _check_tolerance(tolerance)
+    max_iterations = _checks.count(max_iterations, "max_iterations", 0, MAX_ITERATIONS)
     start = time.perf_counter()
     scale = _mean_edge_length(mesh)
     origin = mesh.vertices.mean(axis=0)

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import shapes
+from .. import _checks, shapes
 from ..mesh import Mesh
 from ..schemes.registry import Counts
 
@@ -37,11 +37,8 @@ def _regular_polygon(n: int, z: float = 0.0, turn: float = 0.0) -> np.ndarray:
 
 
 def _check_n(n, what: str) -> int:
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)):
-        raise TypeError(f"{what} needs an integer number of sides, got {n!r}")
-    if n < 3:
-        raise ValueError(f"{what} needs at least 3 sides, got {n}")
-    return int(n)
+    """The number of sides of ``what`` (:func:`pentanb._checks.count`, >= 3)."""
+    return _checks.count(n, f"n (the sides of {what})", 3)
 
 
 def prism(n: int) -> Mesh:

@@ -29,7 +29,7 @@ from typing import Any, TypeVar
 
 import numpy as np
 
-from .. import _jit
+from .. import _checks, _jit
 from ..mesh import Mesh, MeshError, Rings, Several, check_mesh
 from ..mesh import build as _mesh
 from ..mesh.coerce import index_dtype as _index_dtype
@@ -336,11 +336,10 @@ def check_scale(scale: float, name: str = "scale") -> float:
     return s
 
 
-def check_count(value: object, name: str) -> int:
-    """``value`` as a non-negative int (numpy integers too; not bool), or a ValueError naming it."""
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
-        raise ValueError(f"{name} must be a non-negative integer, got {value!r}")
-    return int(value)
+def check_count(value: object, name: str, high: int | None = None) -> int:
+    """``value`` as an int in ``[0, high]`` (:func:`pentanb._checks.count`): a TypeError
+    naming it when it is not an integer, a ValueError when out of range."""
+    return _checks.count(value, name, 0, high)
 
 
 def check_vertex_faces(mesh: Mesh, op: str, valence: np.ndarray | None = None) -> None:

@@ -385,9 +385,16 @@ def get_scheme(scheme: str | Scheme | Callable) -> Scheme | Callable:
     ValueError
         For a name that is not in :data:`SCHEMES`; the message lists the
         known names.
+    TypeError
+        For neither a string, a Scheme nor a callable (``5``, None, a list).
     """
     if isinstance(scheme, Scheme) or (callable(scheme) and not isinstance(scheme, str)):
         return scheme
-    if isinstance(scheme, str) and scheme in SCHEMES:
+    if not isinstance(scheme, str):
+        raise TypeError(
+            f"scheme must be a scheme's name ({', '.join(SCHEMES)}), a pentanb.Scheme or a "
+            f"Mesh -> Mesh callable, got {type(scheme).__name__}"
+        )
+    if scheme in SCHEMES:
         return SCHEMES[scheme]
     raise ValueError(f"unknown scheme {scheme!r}; known schemes: {', '.join(SCHEMES)}")

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._checks import MAX_STEPS
 from ..mesh import Mesh
 from ..mesh import build as _mesh
 from ._build import (
@@ -167,15 +168,23 @@ def smooth(mesh: Mesh, duals: int = 2) -> Mesh:
     Parameters
     ----------
     mesh : Mesh
-    duals : int, >= 0
+    duals : int, in [0, :data:`pentanb.subdivision.MAX_STEPS`]
 
     Returns
     -------
     Mesh
         ``mesh`` after ``duals`` duals (``mesh`` itself for 0).
+
+    Raises
+    ------
+    TypeError
+        ``mesh`` is not a Mesh, or ``duals`` not an integer.
+    ValueError
+        ``duals`` is negative or over ``MAX_STEPS`` (100,000 duals: hours
+        of work that no longer changes the counts), refused before the first.
     """
     check_mesh(mesh, "smooth")
-    duals = check_count(duals, "duals")
+    duals = check_count(duals, "duals", MAX_STEPS)
     for _ in range(duals):
         mesh = dual(mesh)
     return mesh

@@ -26,6 +26,7 @@ rows per triangle and an index that counts through them.
 
 from __future__ import annotations
 
+import dataclasses
 import html
 import math
 from dataclasses import dataclass, field
@@ -52,6 +53,12 @@ __all__ = [
     "error_html",
     "camera_fit",
     "look_at_quaternion",
+    "Frame",
+    "IDENTITY",
+    "view_frame",
+    "in_frame",
+    "frame_fits",
+    "framed",
 ]
 
 #: Colour of marked points (the new vertices of a step-through).
@@ -408,6 +415,137 @@ def error_html(message: str, note: str = "") -> str:
     """A refusal or error message as HTML (escaped, in red), with an optional note."""
     text = f'<span style="color:#b00020">{html.escape(message)}</span>'
     return text + (f"<br>{html.escape(note)}" if note else "")
+
+
+#: How a 3D view draws its coordinates: ``(offset, exponent)``, a point ``p``
+#: drawn at ``(p - offset) * 2**-exponent`` (exact scaling by a power of two).
+Frame = tuple[NDArray[np.float64], int]
+
+#: The coordinates as they are.
+IDENTITY: Frame = (np.zeros(3), 0)
+
+#: Drawn coordinates stay within ``2**±32``: WebGL's float32 holds ``2**±126``,
+#: and the camera's matrices multiply distances.
+_FRAME_LIMIT = 2.0**32
+#: A drawing smaller than this fraction of its distance from the origin is
+#: moved to the origin (float32 keeps 24 bits: it would be drawn as a blob).
+_FRAME_DETAIL = 2.0**-12
+
+
+def _bounds(points: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]] | None:
+    p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    if len(p) == 0:
+        return None
+    return p.min(axis=0), p.max(axis=0)
+
+
+def view_frame(*points: ArrayLike) -> Frame:
+    """The frame in which a 3D view draws these points (all arrays together).
+
+    :data:`IDENTITY` when float32 holds the coordinates well: within
+    ``2**32`` of the origin, the drawing no smaller than ``2**-32`` and
+    than ``2**-12`` of its distance from the origin (every mesh of the
+    package's shapes and schemes).  Otherwise the centre of the bounding
+    box and the power of two that brings its half-size into [0.5, 1): so
+    any finite coordinates are framed, near ``1e300`` as near ``1e-300``,
+    or a small drawing far from the origin.
+
+    Parameters
+    ----------
+    *points : (k, 3) float
+        Finite coordinates.
+
+    Returns
+    -------
+    Frame
+        ``(offset, exponent)``: a point ``p`` is drawn at
+        ``(p - offset) * 2**-exponent`` (:func:`in_frame`).
+
+    Raises
+    ------
+    ValueError
+        A coordinate that is not finite.
+    """
+    found = [b for b in (_bounds(p) for p in points) if b is not None]
+    if not found:
+        return IDENTITY
+    lo = np.min([b[0] for b in found], axis=0)
+    hi = np.max([b[1] for b in found], axis=0)
+    if not (np.isfinite(lo).all() and np.isfinite(hi).all()):
+        raise ValueError("a view needs finite coordinates")
+    far = float(max(np.abs(lo).max(), np.abs(hi).max()))  # from the origin
+    centre = lo * 0.5 + hi * 0.5  # (no sum that could overflow)
+    half = float((hi * 0.5 - lo * 0.5).max())
+    if half == 0.0:  # one point
+        return IDENTITY if far <= _FRAME_LIMIT else (centre, 0)
+    if far <= _FRAME_LIMIT and half >= 1.0 / _FRAME_LIMIT and half >= far * _FRAME_DETAIL:
+        return IDENTITY
+    return centre, int(np.frexp(half)[1])
+
+
+def in_frame(points: ArrayLike, frame: Frame) -> NDArray[np.float64]:
+    """``points`` as drawn in ``frame``: ``(p - offset) * 2**-exponent`` (exact scaling).
+
+    Parameters
+    ----------
+    points : (..., 3) float
+    frame : Frame
+
+    Returns
+    -------
+    (..., 3) float
+        ``points`` itself in :data:`IDENTITY`.
+    """
+    p = np.asarray(points, dtype=np.float64)
+    offset, exponent = frame
+    if exponent == 0 and not offset.any():
+        return p
+    return np.ldexp(p - offset, -exponent)
+
+
+def frame_fits(frame: Frame, *points: ArrayLike) -> bool:
+    """Whether ``frame`` draws these points well (their frame within it is the identity).
+
+    Parameters
+    ----------
+    frame : Frame
+    *points : (k, 3) float
+
+    Returns
+    -------
+    bool
+    """
+    drawn = [in_frame(p, frame) for p in points]
+    if not all(np.isfinite(d).all() for d in drawn):
+        return False
+    found = view_frame(*drawn)
+    return found[1] == 0 and not found[0].any()
+
+
+def framed(obj: Mesh | Drawing, frame: Frame) -> Mesh | Drawing:
+    """``obj`` with its coordinates in ``frame``.
+
+    Parameters
+    ----------
+    obj : Mesh or Drawing
+    frame : Frame
+
+    Returns
+    -------
+    Mesh or Drawing
+        ``obj`` itself in :data:`IDENTITY`; else a copy with new positions
+        (a mesh's connectivity shared).
+    """
+    if frame[1] == 0 and not frame[0].any():
+        return obj
+    if isinstance(obj, Mesh):
+        return obj.with_vertices(in_frame(obj.vertices, frame))
+    return dataclasses.replace(
+        obj,
+        vertices=in_frame(obj.vertices, frame),
+        segments=in_frame(obj.segments, frame),
+        points=None if obj.points is None else in_frame(obj.points, frame),
+    )
 
 
 def camera_fit(

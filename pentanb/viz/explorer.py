@@ -23,13 +23,19 @@ from ..mesh import Mesh, MeshError
 from ..schemes.registry import SCHEMES, Scheme
 from ..subdivision import get_scheme, predict_counts, subdivide
 from .drawing import counts_text, error_html
-from .three import MeshView, close_tree, slider_stack
+from .three import MAX_PIXELS, MeshView, close_tree, slider_stack
 from .widgets import integer_argument, number_argument
 
-__all__ = ["Explorer", "explore", "MAX_DUALS", "SCALE_RANGE"]
+__all__ = ["Explorer", "explore", "MAX_DUALS", "MAX_ITERATIONS", "SCALE_RANGE"]
 
 #: Largest value of the duals slider.
 MAX_DUALS = 4
+#: Largest ``max_iterations`` (the iterations slider's top).  The explorer
+#: builds one level at a time, so this bounds its steps, as
+#: :data:`pentanb.subdivision.MAX_STEPS` bounds :func:`pentanb.subdivide`'s:
+#: every scheme passes ``max_faces`` within a few levels, but one that keeps
+#: the counts (triangulate on triangles) never does.
+MAX_ITERATIONS = 1000
 #: Range of the scale slider (the scheme's ``scale`` option).
 SCALE_RANGE = (0.05, 0.95)
 
@@ -107,7 +113,7 @@ class Explorer(W.HBox):
                 f"got {type(mesh).__name__}"
             )
         s = _scheme_argument(scheme)
-        top = integer_argument(max_iterations, "max_iterations", 0)
+        top = integer_argument(max_iterations, "max_iterations", 0, MAX_ITERATIONS)
         iterations = integer_argument(iterations, "iterations", 0, top)
         duals = integer_argument(duals, "duals", 0, MAX_DUALS)
         low, high = SCALE_RANGE
@@ -118,8 +124,8 @@ class Explorer(W.HBox):
         )
         self.max_faces = integer_argument(max_faces, "max_faces", 1)
         self.max_bytes = None if max_bytes is None else integer_argument(max_bytes, "max_bytes", 1)
-        width = integer_argument(width, "width", 1)
-        height = integer_argument(height, "height", 1)
+        width = integer_argument(width, "width", 1, MAX_PIXELS)
+        height = integer_argument(height, "height", 1, MAX_PIXELS)
         self._cache: OrderedDict[Key, Mesh] = OrderedDict()
         self._cache_corners = 0
         self.cache_limit = 12_000_000
@@ -240,12 +246,15 @@ class Explorer(W.HBox):
 
     # -- work ---------------------------------------------------------------
     def _largest_steps(self, base: Mesh, iterations: int):
-        """(level, (V, E, F)) of the largest step of every level up to ``iterations``."""
+        """(level, (V, E, F)) of the largest step of every level up to ``iterations``,
+        stopping at a level that keeps the counts (every later one is the same)."""
         scheme, duals = self.scheme.value, self.duals.value
         counts = (base.n_vertices, base.n_edges, base.n_faces)
         for level in range(1, iterations + 1):
             steps = predict_counts(counts, scheme, 1, duals)
             yield level, max(steps, key=lambda c: c[2])
+            if steps[-1] == counts:
+                return
             counts = steps[-1]
 
     def _builds_at_least(self, faces: int) -> bool:
@@ -469,15 +478,15 @@ def explore(
     scale : float in :data:`SCALE_RANGE`, optional
         First value of the scale slider (default: the scheme's scale, or
         0.75); used by the schemes that take one.
-    max_iterations : int >= 0
+    max_iterations : int in [0, :data:`MAX_ITERATIONS`]
         Largest value of the iterations slider.
     max_faces : int >= 1
         Largest mesh (faces, at every step) that the view builds; the
         default, 100,000, is the limit of the notebooks' sliders too.
     max_bytes : int, optional
         Passed to :func:`pentanb.subdivide`.
-    width, height : int
-        Size of the picture.
+    width, height : int in [1, :data:`pentanb.viz.three.MAX_PIXELS`]
+        Size of the picture, in pixels.
 
     Returns
     -------

@@ -36,6 +36,7 @@ from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from numpy.typing import ArrayLike
 
+from .. import _checks
 from ..mesh import Mesh
 from .colors import EDGE_COLOR, face_color, face_label, face_rgb
 
@@ -346,6 +347,10 @@ def draw_segments(ax, segments: ArrayLike, **kwargs) -> LineCollection:
     return coll
 
 
+#: Largest size (width of a panel, spaces) a figure takes, in inches.
+MAX_INCHES = 100.0
+
+
 def panel_figure(
     n_panels: int,
     ncols: int | None = None,
@@ -379,7 +384,21 @@ def panel_figure(
     -------
     fig : Figure
     axes : list of axes, row by row
+
+    Raises
+    ------
+    TypeError, ValueError
+        A count that is not an integer in range (``n_panels`` in [1, 1,000],
+        ``ncols`` in [1, 1,000]) or a size that is not a number in (0,
+        :data:`MAX_INCHES`] (the spaces may be 0); the message names it.
     """
+    n_panels = _checks.count(n_panels, "n_panels", 1, 1000)
+    if ncols is not None:
+        ncols = _checks.count(ncols, "ncols", 1, 1000)
+    panel_size = _checks.number(panel_size, "panel_size", 0.0, MAX_INCHES, open_low=True)
+    aspect = _checks.number(aspect, "aspect", 0.0, MAX_INCHES, open_low=True)
+    legend_space = _checks.number(legend_space, "legend_space", 0.0, MAX_INCHES)
+    label_space = _checks.number(label_space, "label_space", 0.0, MAX_INCHES)
     ncols = min(n_panels, 3) if ncols is None else ncols
     nrows = -(-n_panels // ncols)
     top = 0.42 if suptitle else 0.08
@@ -476,8 +495,10 @@ def plot_mesh(
 ) -> Figure:
     """One mesh in a figure of its own, with a face-size legend.
 
+    ``size`` is the panel's width in inches, in (0, :data:`MAX_INCHES`].
     Keyword arguments go to :func:`draw_mesh`.
     """
+    size = _checks.number(size, "size", 0.0, MAX_INCHES, open_low=True)
     with style():
         fig, (ax,) = panel_figure(
             1,

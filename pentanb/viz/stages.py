@@ -23,6 +23,7 @@ from collections.abc import Callable, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
+from .. import _checks
 from ..mesh import Mesh
 from ..schemes.registry import Scheme
 from ..schemes.smoothing import dual
@@ -76,12 +77,7 @@ def check_stage_arguments(
     s = get_scheme(scheme)  # type: ignore[arg-type]
     if not isinstance(s, Scheme):
         raise TypeError("scheme must be the name of a scheme of pentanb.SCHEMES, not a function")
-    if isinstance(duals, bool) or not isinstance(duals, (int, np.integer)):
-        raise TypeError(
-            f"duals must be an integer in [0, {MAX_DUALS}], got {type(duals).__name__} {duals!r}"
-        )
-    if not 0 <= duals <= MAX_DUALS:
-        raise ValueError(f"duals must be an integer in [0, {MAX_DUALS}], got {duals!r}")
+    duals = _checks.count(duals, "duals", 0, MAX_DUALS)
     given = {k: v for k, v in options.items() if v is not None}
     unknown = sorted(set(given) - set(s.options))
     if unknown:

@@ -15,7 +15,7 @@ from ..mesh import Mesh
 from ..schemes.registry import Scheme
 from .drawing import Drawing
 from .stages import check_stage_arguments, stages
-from .three import MeshView, close_tree, slider_stack
+from .three import MAX_PIXELS, MeshView, close_tree, slider_stack
 from .widgets import integer_argument
 
 __all__ = ["StepThrough", "step_through"]
@@ -46,8 +46,8 @@ class StepThrough(W.VBox):
         height: int = 450,
     ):
         self.scheme, _, _ = check_stage_arguments(mesh, scheme, duals, {"scale": scale})
-        width = integer_argument(width, "width", 1)
-        height = integer_argument(height, "height", 1)
+        width = integer_argument(width, "width", 1, MAX_PIXELS)
+        height = integer_argument(height, "height", 1, MAX_PIXELS)
         self.stages: list[tuple[str, Drawing | Mesh]] = stages(
             mesh, self.scheme, duals=duals, scale=scale
         )

@@ -52,19 +52,29 @@ import ipywidgets as W
 import numpy as np
 import pythreejs as P3
 
+from .. import _checks
 from ..mesh import Mesh
 from .drawing import (
+    IDENTITY,
     Buffers,
     Drawing,
+    Frame,
     as_drawing,
     buffers,
     camera_fit,
+    frame_fits,
+    framed,
+    in_frame,
     legend_html,
     look_at_quaternion,
     mesh_buffers,
+    view_frame,
 )
 
-__all__ = ["MeshView", "view", "slider_stack", "close_tree"]
+__all__ = ["MeshView", "view", "slider_stack", "close_tree", "MAX_PIXELS"]
+
+#: Largest width or height of a view, in pixels (browsers' largest WebGL canvas).
+MAX_PIXELS = 16_384
 
 
 _VERSIONS = itertools.count(1)
@@ -211,6 +221,20 @@ class MeshView(W.VBox):
         Shows or hides the edges (linked in the browser, so it works in an
         exported page too).
     legend : ipywidgets.HTML
+    frame : Frame
+        How the coordinates are drawn (:func:`pentanb.viz.drawing.view_frame`):
+        as they are, or, for coordinates float32 would not draw well (near
+        ``1e300``, or a small mesh far from the origin), moved and scaled by
+        a power of two, the camera fitted to them there.
+
+    Raises
+    ------
+    TypeError
+        ``width`` or ``height`` not an integer, ``fov`` or ``point_size`` not
+        a number (the message names it).
+    ValueError
+        ``width`` or ``height`` outside ``[1, MAX_PIXELS]``, ``fov`` outside
+        (0, 180), ``point_size`` not positive.
     """
 
     def __init__(
@@ -227,10 +251,17 @@ class MeshView(W.VBox):
         point_size: float | None = None,
         camera: P3.PerspectiveCamera | None = None,
         target: tuple | None = None,
+        frame: Frame | None = None,
     ):
+        width = _checks.count(width, "width", 1, MAX_PIXELS)
+        height = _checks.count(height, "height", 1, MAX_PIXELS)
+        fov = _checks.number(fov, "fov", 0.0, 180.0, open_low=True, open_high=True)
+        if point_size is not None:
+            point_size = _checks.number(point_size, "point_size", 0.0, open_low=True)
         self._mesh: Mesh | None = None
         self._drawing: Drawing | None = None
-        b = self._show(mesh)
+        self.frame: Frame = IDENTITY if frame is None else frame
+        b, _ = self._show(mesh, refit=frame is None)
         self._point_size = point_size
 
         def attr(a):
@@ -366,14 +397,23 @@ class MeshView(W.VBox):
             self._drawing = as_drawing(self._mesh)
         return self._drawing
 
-    def _show(self, obj: Mesh | Drawing) -> Buffers:
-        """Remember what is shown; its buffers (a mesh's by the fast path)."""
+    def _show(self, obj: Mesh | Drawing, refit: bool = False) -> tuple[Buffers, bool]:
+        """Remember what is shown; its buffers (a mesh's by the fast path), and
+        whether the frame changed (``refit``: always choose it anew; else only
+        when the current one does not draw ``obj`` well)."""
         if isinstance(obj, Mesh):
             self._mesh, self._drawing = obj, None
-            return mesh_buffers(obj)
-        d = as_drawing(obj)
-        self._mesh, self._drawing = None, d
-        return buffers(d)
+        else:
+            self._mesh, self._drawing = None, as_drawing(obj)
+        points = self._raw_points()
+        changed = False
+        if refit or not frame_fits(self.frame, *points):
+            new = view_frame(*points)
+            changed = not (new[1] == self.frame[1] and np.array_equal(new[0], self.frame[0]))
+            self.frame = new
+        if self._mesh is not None:
+            return mesh_buffers(framed(self._mesh, self.frame)), changed  # type: ignore[arg-type]
+        return buffers(framed(self.drawing, self.frame)), changed  # type: ignore[arg-type]
 
     def _legend(self) -> str:
         m = self._mesh
@@ -381,8 +421,17 @@ class MeshView(W.VBox):
             return legend_html(m.face_size_histogram(), (m.n_vertices, m.n_edges, m.n_faces))
         return legend_html(self.drawing.legend, self.drawing.counts)
 
+    def _raw_points(self) -> list[np.ndarray]:
+        """The coordinates shown, as given (a drawing's segments and points too)."""
+        if self._mesh is not None:
+            return [self._mesh.vertices]
+        d = self.drawing
+        return [d.vertices, d.segments] + ([] if d.points is None else [d.points])
+
     def _points(self) -> np.ndarray:
-        return self._mesh.vertices if self._mesh is not None else self.drawing.vertices
+        """The vertices as drawn (in :attr:`frame`): what the camera is fitted to."""
+        raw = self._mesh.vertices if self._mesh is not None else self.drawing.vertices
+        return in_frame(raw, self.frame)
 
     def update(self, mesh: Mesh | Drawing, *, fit: bool = False) -> None:
         """Show another mesh (or :class:`Drawing`) in the same geometry.
@@ -391,14 +440,17 @@ class MeshView(W.VBox):
         the geometry objects, renderer, camera and controls are kept, so the
         viewpoint stays where the reader left it (unless ``fit``).
         """
-        b = self._show(mesh)  # as_drawing refuses anything but a Mesh or a Drawing
+        # (as_drawing refuses anything but a Mesh or a Drawing); a mesh whose
+        # coordinates the current frame does not draw well gets its own, and
+        # the camera is fitted to it there
+        b, moved = self._show(mesh, refit=fit)
         # no frame is drawn half-updated: the browser waits for the last array
         with self.renderer.hold():
             self._write(b)
         self._redraw()
         if self._show_legend:
             self.legend.value = self._legend()
-        if fit:
+        if fit or moved:
             self.fit_camera()
 
     def _redraw(self) -> None:
@@ -455,7 +507,8 @@ class MeshView(W.VBox):
 
     # -- embedding ----------------------------------------------------------
     def copy(self, mesh: Mesh | Drawing | None = None, **kwargs) -> MeshView:
-        """A new, independent view of ``mesh`` (default: the one shown)."""
+        """A new, independent view of ``mesh`` (default: the one shown), in its own frame
+        unless ``frame=`` is given."""
         r = self.renderer
         opts = dict(
             width=r.width,
@@ -514,6 +567,13 @@ def view(
     )
 
 
+def _coordinates(item: Mesh | Drawing) -> list[np.ndarray]:
+    if isinstance(item, Mesh):
+        return [item.vertices]
+    d = as_drawing(item)
+    return [d.vertices, d.segments] + ([] if d.points is None else [d.points])
+
+
 def slider_stack(
     items: Sequence[Mesh | Drawing],
     captions: Sequence[str],
@@ -559,7 +619,20 @@ def slider_stack(
         near=cam.near,
         far=cam.far,
     )
-    views = [like.copy(item, camera=camera, target=tuple(like.controls.target)) for item in items]
+    # one frame for all the views, as they share the camera: like's when it
+    # draws every item well (always for the package's meshes), else one for
+    # all the items, the camera fitted to all of them there
+    points = [p for item in items for p in _coordinates(item)]
+    frame = like.frame if frame_fits(like.frame, *points) else view_frame(*points)
+    target = tuple(like.controls.target)
+    if frame is not like.frame:
+        drawn = np.concatenate([in_frame(p, frame).reshape(-1, 3) for p in points])
+        centre, radius, eye = camera_fit(drawn, cam.fov, cam.aspect)
+        target = tuple(float(c) for c in centre)
+        camera.position = tuple(float(c) for c in eye)
+        camera.quaternion = look_at_quaternion(eye, centre)
+        camera.near, camera.far = radius / 100, radius * 100
+    views = [like.copy(item, camera=camera, target=target, frame=frame) for item in items]
     for v in views:
         v.point_material.size = like.point_material.size
         v.wireframe.value = like.wireframe.value

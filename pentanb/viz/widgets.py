@@ -29,14 +29,17 @@ from typing import Any
 import ipywidgets as W
 from IPython.display import clear_output
 
+from .. import _checks
 from ..mesh import Mesh
-from .three import MeshView, close_tree
+from .three import MAX_PIXELS, MeshView, close_tree
 
 __all__ = ["Panel", "panel", "control", "integer_argument", "number_argument"]
 
 
 def integer_argument(value: object, name: str, low: int, high: int | None = None) -> int:
     """``value`` as an int, checked to lie in ``[low, high]`` (``high`` None: no bound).
+
+    The package's one check of counts, :func:`pentanb._checks.count`.
 
     Raises
     ------
@@ -46,13 +49,7 @@ def integer_argument(value: object, name: str, low: int, high: int | None = None
     ValueError
         ``value`` is out of range; the message names ``name`` and the range.
     """
-    span = f"in [{low}, {high}]" if high is not None else f">= {low}"
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
-        raise TypeError(f"{name} must be an integer {span}, got {type(value).__name__} {value!r}")
-    number = int(value)
-    if number < low or (high is not None and number > high):
-        raise ValueError(f"{name} must be an integer {span}, got {value!r}")
-    return number
+    return _checks.count(value, name, low, high)
 
 
 def number_argument(value: object, name: str, low: float, high: float) -> float:
@@ -67,13 +64,7 @@ def number_argument(value: object, name: str, low: float, high: float) -> float:
         ``value`` is out of range (or not finite); the message names
         ``name`` and the range.
     """
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise TypeError(
-            f"{name} must be a number in [{low:g}, {high:g}], got {type(value).__name__} {value!r}"
-        )
-    if not low <= float(value) <= high:
-        raise ValueError(f"{name} must be a number in [{low:g}, {high:g}], got {value!r}")
-    return float(value)
+    return _checks.number(value, name, low, high)
 
 
 def _label(name: str) -> str:
@@ -216,7 +207,10 @@ class Panel(W.VBox):
         self._limits = dict(limits or {})
         self._active = dict(active or {})
         self._refit = refit if isinstance(refit, bool) else set(refit)
-        self._size = (width, height)
+        self._size = (
+            _checks.count(width, "width", 1, MAX_PIXELS),
+            _checks.count(height, "height", 1, MAX_PIXELS),
+        )
         self._busy = False
         self.output = W.Output()
         self.view: MeshView | None = None
