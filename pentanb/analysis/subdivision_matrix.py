@@ -51,6 +51,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import _checks
 from .. import schemes as _schemes
 from ..mesh import Mesh, MeshError, check_mesh
 from ..schemes.registry import Scheme, get_scheme
@@ -711,9 +712,7 @@ def subdivision_matrix(
 
 
 def _count(value, name: str) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
-        raise ValueError(f"{name} must be a non-negative integer, got {value!r}")
-    return int(value)
+    return _checks.count(value, name)
 
 
 def _default_limit() -> int:
