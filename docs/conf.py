@@ -180,13 +180,14 @@ html_title = "pentanb"
 html_css_files = ["pentanb.css"]
 html_theme_options = {
     "navigation_with_keys": False,
+    "header_links_before_dropdown": 5,
     "show_toc_level": 2,
     "footer_start": ["copyright"],
     "footer_end": ["sphinx-version"],
     "secondary_sidebar_items": ["page-toc"],
 }
 html_context = {"default_mode": "auto"}  # (unset, the theme logs an error on a first visit)
-html_sidebars = {"**": ["sidebar-nav-bs"]}
+html_sidebars = {"**": ["pentanb-nav.html"]}  # docs/_templates: the whole site
 html_show_sourcelink = False
 html_copy_source = False
 
@@ -653,6 +654,12 @@ def _notebooks_of_figures() -> dict[str, list[str]]:
     return out
 
 
+def _gallery_title(key: str, title: str) -> str:
+    """``"Figure 7: Tetrahedron to dodecahedron"`` for the paper's figures, else the title."""
+    number = re.fullmatch(r"fig(\d+)", key)
+    return f"Figure {int(number.group(1))}: {title}" if number else title
+
+
 class GalleryDirective(SphinxDirective):
     """``.. pentanb-gallery::``: every image of ``figures/`` (the registry's order),
     its caption, and its claims with their verdicts, measured now."""
@@ -694,7 +701,11 @@ class GalleryDirective(SphinxDirective):
         ]
         for key in [*names, "schemes"]:
             claims = results[key]
-            title = figures.FIGURES[key].title if key in figures.FIGURES else "The schemes"
+            title = (
+                _gallery_title(key, figures.FIGURES[key].title)
+                if key in figures.FIGURES
+                else "The schemes"
+            )
             counts = [sum(c.verdict == v for c in claims) for v in figures.VERDICTS]
             rst += [
                 f"   * - :ref:`{_esc(title)} <gallery-{key}>`",
@@ -714,7 +725,7 @@ class GalleryDirective(SphinxDirective):
 
         if key in figures.FIGURES:
             spec = figures.FIGURES[key]
-            title, caption = spec.title, spec.caption
+            title, caption = _gallery_title(key, spec.title), spec.caption
         else:
             from pentanb.figures import formulas
 
