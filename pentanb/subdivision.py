@@ -181,6 +181,14 @@ def predict_counts(
     iterations = check_count(iterations, "iterations")
     duals = check_count(duals, "duals")
     _guard(counts, s, iterations, duals, _limit(max_bytes))
+    if isinstance(mesh_or_counts, Mesh) and not mesh_or_counts.is_closed:
+        # an open mesh: the counts with its boundary edges and corners
+        from .schemes import boundary_corners
+        from .schemes.registry import open_counts_after
+
+        m = mesh_or_counts
+        start = (*counts, m.n_boundary_edges, len(boundary_corners(m)))
+        return [c[:3] for c in open_counts_after(start, s, iterations, duals)]
     V, E, F = counts
     out = []
     for _ in range(iterations):

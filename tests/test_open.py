@@ -923,3 +923,36 @@ def test_open_meshes_are_the_same_by_the_numpy_path_and_the_kernels(scheme, monk
             assert a.dtype == b.dtype and a.tobytes() == b.tobytes()
     finally:
         _jit.use_jit(before)
+
+
+@pytest.mark.parametrize(
+    "name", ["pentagonalize", "preserve_pentagons", "loop_remesh", "corner_cutting"]
+)
+def test_predict_counts_of_an_open_mesh_are_the_built_ones(name):
+    disk = shapes.open_disk()
+    predicted = pb.predict_counts(disk, name, iterations=2, duals=2)[-1]
+    built = pb.subdivide(disk, name, iterations=2, duals=2)
+    assert predicted == (built.n_vertices, built.n_edges, built.n_faces)
+    counts = (disk.n_vertices, disk.n_edges, disk.n_faces)
+    closed_formula = pb.predict_counts(counts, name, iterations=2, duals=2)[-1]
+    assert closed_formula != predicted  # the boundary terms matter here
+
+
+def _subdivision_matrix(m):
+    from pentanb.analysis import subdivision_matrix
+
+    return subdivision_matrix(m, "pentagonalize")
+
+
+def _vertex_configurations(m):
+    from pentanb.analysis.measures import vertex_configurations
+
+    return vertex_configurations(m)
+
+
+@pytest.mark.parametrize(
+    "call", [pb.canonical, pb.notation.ambo, _subdivision_matrix, _vertex_configurations]
+)
+def test_closed_only_code_refuses_an_open_mesh(call):
+    with pytest.raises(MeshError, match="needs a closed mesh; this one is open"):
+        call(shapes.open_disk())

@@ -38,7 +38,7 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..mesh import Mesh, check_mesh
+from ..mesh import Mesh, check_closed, check_mesh
 from ..notation.positions import best_fit_planes, face_planarity
 
 __all__ = [
@@ -136,7 +136,7 @@ def vertex_configurations(mesh: Mesh) -> list[str]:
     (V,) list of str
         Vertex ``i``'s configuration at position ``i``.
     """
-    check_mesh(mesh, "vertex_configurations")
+    check_closed(mesh, "vertex_configurations")
     ring, ring_off = mesh.vertex_ring
     face_size_of_he = mesh.face_sizes[mesh.halfedge_face]
     return _configurations(face_size_of_he, mesh.valences, ring, ring_off)
@@ -216,7 +216,7 @@ def radius_spread(mesh: Mesh) -> float:
     -------
     float
     """
-    check_mesh(mesh, "radius_spread")
+    check_closed(mesh, "radius_spread")
     r = np.linalg.norm(mesh.vertices - mesh.vertices.mean(axis=0), axis=1)
     return float(r.std() / r.mean())
 
@@ -266,7 +266,7 @@ def normal_angles(mesh: Mesh) -> NDArray[np.float64]:
     (E,) float
         Degrees; 0 where the two faces are coplanar, 90 on a cube's edges.
     """
-    check_mesh(mesh, "normal_angles")
+    check_closed(mesh, "normal_angles")
     h = mesh.edge_halfedge
     f, g = mesh.halfedge_face[h], mesh.halfedge_face[mesh.twin[h]]
     n = _unit_normals(mesh)

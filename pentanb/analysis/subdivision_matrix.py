@@ -53,9 +53,9 @@ import numpy as np
 
 from .. import _checks
 from .. import schemes as _schemes
-from ..mesh import Mesh, MeshError, check_mesh
-from ..schemes.registry import Scheme, get_scheme
-from ..subdivision import estimate_bytes, predict_counts, subdivide
+from ..mesh import Mesh, MeshError, check_closed
+from ..schemes.registry import Scheme
+from ..subdivision import estimate_bytes, get_scheme, predict_counts, subdivide
 
 __all__ = [
     "subdivision_matrix",
@@ -672,7 +672,7 @@ def subdivision_matrix(
     >>> S.shape
     (38, 8)
     """
-    check_mesh(mesh, "subdivision_matrix")
+    check_closed(mesh, "subdivision_matrix")
     s = get_scheme(scheme)
     # subdivide's own checks: counts, options, memory (nothing is built here)
     subdivide(mesh, s, 0, duals, max_bytes=max_bytes, **options)

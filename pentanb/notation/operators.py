@@ -47,7 +47,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _checks
-from ..mesh import Mesh, check_mesh
+from ..mesh import Mesh, check_closed, check_mesh
 from ..schemes import pentagonal
 from ..schemes._build import (
     concat_faces,
@@ -102,7 +102,7 @@ def ambo(mesh: Mesh) -> Mesh:
         F + V faces: the face copies in the input's order, then one face per
         vertex (its outgoing edges counter-clockwise).
     """
-    check_mesh(mesh, "ambo")
+    check_closed(mesh, "ambo")
     e = mesh.halfedge_edge
     ring, ring_off = mesh.vertex_ring
     corners, offsets = concat_faces((e, mesh.offsets), (e[ring], ring_off))
@@ -135,7 +135,7 @@ def truncate(mesh: Mesh, n: int | None = None, ratio: float = 1.0 / 3.0) -> Mesh
         vertices in order, then one point per half-edge leaving a cut
         vertex; faces: the old faces in order, then one per cut vertex.
     """
-    check_mesh(mesh, "truncate")
+    check_closed(mesh, "truncate")
     n = _check_sides(n, "truncate's valence n")
     r = _check_ratio(ratio)
     cut = np.ones(mesh.n_vertices, dtype=bool) if n is None else mesh.valences == n
@@ -201,7 +201,7 @@ def kis(mesh: Mesh, n: int | None = None) -> Mesh:
         the other faces in order, then one triangle ``(u, w, c_f)`` per
         half-edge of each chosen face.
     """
-    check_mesh(mesh, "kis")
+    check_closed(mesh, "kis")
     n = _check_sides(n, "kis's face size n")
     chosen = np.ones(mesh.n_faces, dtype=bool) if n is None else mesh.face_sizes == n
     if not chosen.any():
@@ -239,7 +239,7 @@ def join(mesh: Mesh) -> Mesh:
         ``e`` with ends ``u < w`` gives ``(u, c_g, w, c_f)`` where f lies to
         the left of ``u -> w``.
     """
-    check_mesh(mesh, "join")
+    check_closed(mesh, "join")
     h = mesh.edge_halfedge
     c = mesh.n_vertices + mesh.halfedge_face
     quads = np.stack([mesh.corners[h], c[mesh.twin[h]], mesh.head[h], c[h]], axis=1)
@@ -266,7 +266,7 @@ def snub(mesh: Mesh) -> Mesh:
     Mesh
         2E vertices, 5E edges, V + 2E + F faces.
     """
-    check_mesh(mesh, "snub")
+    check_closed(mesh, "snub")
     return dual(pentagonal.pentagonalize(mesh))
 
 
@@ -301,7 +301,7 @@ def propeller(mesh: Mesh) -> Mesh:
         quad per half-edge.  With the package's positions every new face
         lies in its old face's plane.
     """
-    check_mesh(mesh, "propeller")
+    check_closed(mesh, "propeller")
     t1, t2 = _thirds(mesh)
     quads = np.stack([t1, t2, mesh.head, t1[mesh.next]], axis=1)
     corners, offsets = concat_faces((t1, mesh.offsets), fixed_size(quads))
@@ -332,7 +332,7 @@ def whirl(mesh: Mesh) -> Mesh:
         F + 2E faces: the inner faces in the input's order, then one
         hexagon per half-edge.
     """
-    check_mesh(mesh, "whirl")
+    check_closed(mesh, "whirl")
     t1, t2 = _thirds(mesh)
     thirds = edge_points(mesh, 2)
     q = mesh.n_vertices + thirds.shape[0] + np.arange(mesh.n_halfedges, dtype=np.int64)
@@ -363,7 +363,7 @@ def meta(mesh: Mesh) -> Mesh:
         triangles: ``(u, m_h, c_f)`` and ``(m_h, w, c_f)`` for every
         half-edge ``h = (u, w)`` of face f.
     """
-    check_mesh(mesh, "meta")
+    check_closed(mesh, "meta")
     n, E = mesh.n_vertices, mesh.n_edges
     mid = n + mesh.halfedge_edge
     c = n + E + mesh.halfedge_face
@@ -397,7 +397,7 @@ def bevel(mesh: Mesh) -> Mesh:
         2k-gons, then E quads, the order :func:`truncate` gives the faces
         of :func:`ambo`).
     """
-    check_mesh(mesh, "bevel")
+    check_closed(mesh, "bevel")
     return truncate(ambo(mesh))
 
 

@@ -55,7 +55,7 @@ from typing import Literal, overload
 import numpy as np
 
 from .. import _checks
-from ..mesh import Mesh, MeshError, check_mesh
+from ..mesh import Mesh, MeshError, check_closed, check_mesh
 
 __all__ = [
     "canonical",
@@ -314,7 +314,7 @@ def canonical(
         (unless ``report``) the tolerance was not reached or the result is
         not convex; the error carries the report and the best positions.
     """
-    check_mesh(mesh, "canonical")
+    check_closed(mesh, "canonical")
     tolerance = _check_tolerance(tolerance)
     max_iterations = _checks.count(max_iterations, "max_iterations", 0, MAX_ITERATIONS)
     if mesh.n_components != 1 or mesh.genus != 0:
