@@ -1,4 +1,4 @@
-"""The one check of every count, number and callback an argument gives (issue 24).
+"""The one check of every count, number and callback an argument gives.
 
 Every public function checks its arguments here before any work starts:
 

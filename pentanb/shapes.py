@@ -469,7 +469,7 @@ def hard_edged_cube(inset: float = 0.8) -> Mesh:
 def box(cells: int = 3) -> Mesh:
     """The cube ``[-1, 1]^3`` with every face an even ``cells x cells`` grid of quads.
 
-    The boxes of the lateral-artifact study (Section 1; issue 8): their 12
+    The boxes of the lateral-artifact study (Section 1): their 12
     edges are straight and every grid line meets them at the same spacing
     ``2 / cells``.  ``box(1)`` is :func:`cube` (numbered differently).
 

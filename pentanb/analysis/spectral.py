@@ -2297,7 +2297,7 @@ def _rational_value(p, w, m1: float) -> Fraction | None:
 
 
 # ---------------------------------------------------------------------------
-# the scale of pentagon preservation (issue 22, item 4)
+# the scale of pentagon preservation
 # ---------------------------------------------------------------------------
 
 #: The scheme whose scale :func:`scale_family` and :func:`scale_map` study.
@@ -2895,7 +2895,7 @@ def _simplest_fraction(x: float, within: float) -> Fraction:
 
 
 # ---------------------------------------------------------------------------
-# the results table (issue 9, item 4)
+# the results table
 # ---------------------------------------------------------------------------
 
 #: (label, scheme, options) analysed by :func:`continuity_table`: the paper's

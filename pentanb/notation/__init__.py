@@ -1,4 +1,4 @@
-"""Conway polyhedron notation: strings such as ``"gC"`` or ``"ddgT"`` (issue 10).
+"""Conway polyhedron notation: strings such as ``"gC"`` or ``"ddgT"``.
 
 A string is read right to left, as in the literature (Hart, "Conway
 notation for polyhedra"; polyHedronisme; Antiprism's ``conway``): the

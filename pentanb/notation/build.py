@@ -129,7 +129,7 @@ def conway(
     max_faces: int = MAX_FACES,
     **options,
 ) -> Mesh:
-    """Build the polyhedron a Conway string names (issue 10).
+    """Build the polyhedron a Conway string names.
 
     Parameters
     ----------
@@ -256,7 +256,7 @@ def resolve(text: str) -> Scheme:
         name=text,
         func=func,
         label=f"Conway {text} ({names})",
-        paper="issue 10: Conway notation",
+        paper="Conway notation (beyond the paper)",
         conway=text,
         counts=counts,
         options=opts,

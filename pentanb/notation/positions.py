@@ -1,4 +1,4 @@
-"""Canonical and planar positions (issue 10).
+"""Canonical and planar positions.
 
 * :func:`canonical` moves a genus-0 mesh to its *canonical form* (Hart,
   "Calculating canonical polyhedra", Mathematica in Education and Research
