@@ -613,3 +613,14 @@ def test_good_files_round_trip(tmp_path, variant):
         assert np.array_equal(back.vertices[back.corners], m.vertices[triangles.ravel()])
     else:
         assert same_mesh(back, m)
+
+
+def test_binary_stl_write_checks_exactly_when_the_quick_check_is_unsure(tmp_path, monkeypatch):
+    # a hash collision in the quick distinctness check sends the write to the exact checks,
+    # which let a good mesh through
+    monkeypatch.setattr(pentanb.io.stl, "_distinct", lambda points: False)
+    m = float32_mesh()
+    write(m, tmp_path / "m.stl")
+    triangles, _ = m.fan_triangles()
+    back = read(tmp_path / "m.stl")
+    assert np.array_equal(back.vertices[back.corners], m.vertices[triangles.ravel()])

@@ -392,7 +392,8 @@ def prepare(mesh: Mesh, ascii: Any = False, caller: str = "write") -> tuple[np.n
     triangles; a MeshError (see :func:`write_stl`) before anything is written."""
     tris, face = mesh.fan_triangles()
     normals = mesh.face_normals
-    normals = np.where(np.isfinite(normals).all(axis=1, keepdims=True), normals, 0.0)
+    if not np.isfinite(normals).all():  # (never, for a Mesh: zero for a degenerate face)
+        normals = np.where(np.isfinite(normals).all(axis=1, keepdims=True), normals, 0.0)
     if ascii:
         return tris, face, normals, mesh.vertices
     if tris.shape[0] >= 1 << 32:
@@ -408,6 +409,9 @@ def prepare(mesh: Mesh, ascii: Any = False, caller: str = "write") -> tuple[np.n
             f"(+-{np.finfo(np.float32).max:.4g}), which binary STL stores ({bad.size:,} such "
             "vertices); write ascii=True (exact coordinates) or scale the mesh"
         )
+    if _distinct(v32):  # the common case, at the cost of one sort of 64-bit keys
+        return tris, face, normals, v32
+    # some vertices share a float32 point: a face that collapses, or two vertices
     t = v32[tris]
     same = (t[:, 0] == t[:, 1]).all(axis=1) | (t[:, 1] == t[:, 2]).all(axis=1)
     same |= (t[:, 0] == t[:, 2]).all(axis=1)
@@ -435,6 +439,17 @@ def prepare(mesh: Mesh, ascii: Any = False, caller: str = "write") -> tuple[np.n
             "them into one; write ascii=True (exact coordinates) or scale the mesh"
         )
     return tris, face, normals, v32
+
+
+def _distinct(points: np.ndarray) -> bool:
+    """Whether the rows of ``points`` ((n, 3) float32) are at distinct points
+    (``-0.0`` is ``0.0``).  False may be a hash collision: the caller then
+    compares the coordinates themselves."""
+    bits = (points + np.float32(0.0)).view(np.uint32).astype(np.uint64)
+    key = (bits[:, 0] << np.uint64(32)) | bits[:, 1]
+    key ^= bits[:, 2] * np.uint64(0x9E3779B97F4A7C15)
+    key.sort()
+    return not np.any(key[1:] == key[:-1])
 
 
 def _write(
