@@ -45,14 +45,15 @@ fi
 
 # "name@version" for every package of the js_versions.json files not yet in
 # the cache at that version
-mapfile -t packages < <("${PY:-python3}" - "$JS_DIR" "$JS_VERSIONS" "$DOCS_JS_VERSIONS" <<'PYTHON'
+# (arguments: a versions file, the cache, then any further versions files)
+mapfile -t packages < <("${PY:-python3}" - "$JS_VERSIONS" "$JS_DIR" "$DOCS_JS_VERSIONS" <<'PYTHON'
 import json, pathlib, sys
 wanted = {}
-for path in sys.argv[2:]:
+for path in [sys.argv[1], *sys.argv[3:]]:
     if pathlib.Path(path).is_file():
         wanted.update(json.loads(pathlib.Path(path).read_text()))
 for name, version in wanted.items():
-    installed = pathlib.Path(sys.argv[1], "node_modules", name, "package.json")
+    installed = pathlib.Path(sys.argv[2], "node_modules", name, "package.json")
     if not installed.is_file() or json.loads(installed.read_text()).get("version") != version:
         print(f"{name}@{version}")
 PYTHON

@@ -20,8 +20,8 @@ The tools, and why:
   saves their widget state (the 3D views and the sliders' first positions), and
   keeps executed notebooks in a jupyter-cache (``docs/_build/.jupyter_cache``),
   so a rebuild re-executes only the notebooks whose code changed.  nbsphinx
-  needs pandoc (not on PyPI) for Markdown cells and cannot read notebooks
-  outside the source folder without nbsphinx-link.
+  needs the pandoc program for Markdown cells, and reads the Markdown pages
+  with another parser than the notebooks.
 * **numpydoc** renders the package's docstrings, which are written in its
   format (``tests/test_api_docs.py`` checks their sections).
 * **autodoc + autosummary** make the API reference from ``__all__``: each page
@@ -46,6 +46,15 @@ Two directives are defined here (``setup``): ``pentanb-module`` (an API page)
 and ``pentanb-gallery`` (every image of ``figures/`` with its claims and
 verdicts, measured when the site is built by
 :func:`pentanb.figures.check_all`).
+
+Executing the notebooks: myst-nb runs them one at a time; before Sphinx reads
+them, :func:`_execute_notebooks` runs the ones missing from the cache several at
+a time (``$PENTANB_DOCS_JOBS``, default the number of cores, at least 2), while
+another process measures the gallery's claims.  A notebook that raises fails the
+build, and so does one that writes to standard error (a warning shows there).
+``$PENTANB_DOCS_EXECUTE`` chooses myst-nb's mode: ``cache`` (the default),
+``force`` (re-execute every notebook, one at a time) or ``off`` (no outputs: a
+quick look at the text).
 """
 
 from __future__ import annotations
