@@ -938,21 +938,13 @@ def test_predict_counts_of_an_open_mesh_are_the_built_ones(name):
     assert closed_formula != predicted  # the boundary terms matter here
 
 
-def _subdivision_matrix(m):
-    from pentanb.analysis import subdivision_matrix
-
-    return subdivision_matrix(m, "pentagonalize")
-
-
 def _vertex_configurations(m):
     from pentanb.analysis.measures import vertex_configurations
 
     return vertex_configurations(m)
 
 
-@pytest.mark.parametrize(
-    "call", [pb.canonical, pb.notation.ambo, _subdivision_matrix, _vertex_configurations]
-)
+@pytest.mark.parametrize("call", [pb.canonical, pb.notation.ambo, _vertex_configurations])
 def test_closed_only_code_refuses_an_open_mesh(call):
     with pytest.raises(MeshError, match="needs a closed mesh; this one is open"):
         call(shapes.open_disk())

@@ -25,6 +25,15 @@ Two ways to build ``S``:
 Every row of ``S`` sums to 1 (affine invariance: translating the mesh
 translates the result).
 
+Open meshes (surfaces with boundary) too: the rules add the rows of the
+points an operator puts on the boundary (the midpoints of the boundary
+edges for the dual and honeycomb, two points per boundary edge for corner
+cutting and hexagon preservation) and of the boundary's corners, kept
+(:func:`pentanb.schemes.boundary_corners`; which vertices are corners
+depends on the positions, so ``S`` is the matrix of the connectivity the
+positions give).  :func:`pentanb.analysis.boundary_spectrum` reads the
+boundary curve's own rule from it.
+
 The weights of every registered scheme are rational (edge points at 1/2
 or 1/3, centroids 1/n, the scale of pentagon preservation and of the
 hexagonal and corner-cutting rules), so ``S`` is also available exactly:
@@ -53,7 +62,7 @@ import numpy as np
 
 from .. import _checks
 from .. import schemes as _schemes
-from ..mesh import Mesh, MeshError, check_closed
+from ..mesh import Mesh, MeshError
 from ..schemes.registry import Scheme
 from ..subdivision import estimate_bytes, get_scheme, predict_counts, subdivide
 
@@ -275,6 +284,38 @@ class _Rows:
             H,
         )
 
+    def boundary_points(self, mesh: Mesh, weights) -> None:
+        """``len(weights)`` rows per boundary edge ``bh[j]`` (rows ``k j + i``):
+        ``weights[i] = (w_tail, w_head)`` on its tail and head.  None when closed."""
+        bh = mesh.boundary_halfedges
+        B, k = bh.size, len(weights)
+        if not B:
+            return
+        tail = np.asarray(mesh.corners[bh], dtype=np.int64)
+        head = np.asarray(mesh.head[bh], dtype=np.int64)
+        dtype = object if self.exact else np.float64
+        wt = np.array([self.weight(w) for w, _ in weights], dtype=dtype)
+        wh = np.array([self.weight(w) for _, w in weights], dtype=dtype)
+        rows = np.arange(B * k, dtype=np.int64)
+        self.add(
+            np.concatenate([rows, rows]),
+            np.concatenate([np.repeat(tail, k), np.repeat(head, k)]),
+            np.concatenate([np.tile(wt, B), np.tile(wh, B)]),
+            B * k,
+        )
+
+    def kept_corners(self, mesh: Mesh) -> None:
+        """One row per corner of the boundary (:func:`pentanb.schemes.boundary_corners`,
+        in vertex order): the corner itself.  None when closed."""
+        at = _schemes.boundary_corners(mesh)
+        if at.size:
+            self.add(
+                np.arange(at.size),
+                at,
+                np.full(at.size, self.weight(1), dtype=object if self.exact else np.float64),
+                at.size,
+            )
+
     def matrix(self):
         rows = np.concatenate(self.rows)
         cols = np.concatenate(self.cols)
@@ -295,12 +336,15 @@ def dual_matrix(mesh: Mesh):
     Parameters
     ----------
     mesh : Mesh
-        V vertices, F faces.
+        V vertices, F faces; open meshes too (B boundary edges, C corners).
 
     Returns
     -------
-    scipy.sparse.csr_matrix, shape (F, V)
-        ``dual_matrix(m) @ m.vertices == pentanb.dual(m).vertices``.
+    scipy.sparse.csr_matrix, shape (F, V), or (F + B + C, V) when open
+        ``dual_matrix(m) @ m.vertices == pentanb.dual(m).vertices``; on an
+        open mesh the centroids are followed by the midpoints of the
+        boundary edges (in the order of ``m.boundary_halfedges``) and the
+        corners, kept (:func:`pentanb.schemes.boundary_corners`).
     """
     return _dual(mesh)
 
@@ -308,6 +352,10 @@ def dual_matrix(mesh: Mesh):
 def _dual(mesh: Mesh, out: Mesh | None = None, *, exact: bool = False):
     rows = _Rows(mesh.n_vertices, exact)
     rows.centroids(mesh)
+    if not mesh.is_closed:  # the midpoints of the boundary edges, then the corners, kept
+        half = Fraction(1, 2)
+        rows.boundary_points(mesh, [(half, half)])
+        rows.kept_corners(mesh)
     return rows.matrix()
 
 
@@ -365,6 +413,9 @@ def _corner_cutting(mesh: Mesh, out: Mesh, scale: float = 0.5, *, exact: bool = 
     r = _Rows(mesh.n_vertices, exact)
     s = r.weight(scale)
     r.per_halfedge(mesh, s, r.weight(0), 1 - s)
+    if not mesh.is_closed:  # two points per boundary edge at scale about its midpoint; corners
+        r.boundary_points(mesh, [((1 + s) / 2, (1 - s) / 2), ((1 - s) / 2, (1 + s) / 2)])
+        r.kept_corners(mesh)
     return r.matrix()
 
 
@@ -373,6 +424,9 @@ def _preserve_hexagons(mesh: Mesh, out: Mesh, scale: float = 0.5, *, exact: bool
     s = r.weight(scale)
     r.identity()
     r.per_halfedge(mesh, s, r.weight(0), 1 - s)
+    if not mesh.is_closed:  # the trisection points of every boundary edge
+        third = Fraction(1, 3)
+        r.boundary_points(mesh, [(2 * third, third), (third, 2 * third)])
     return r.matrix()
 
 
@@ -380,6 +434,10 @@ def _honeycomb(mesh: Mesh, out: Mesh, *, exact: bool = False):
     r = _Rows(mesh.n_vertices, exact)
     third = Fraction(1, 3) if exact else 1.0 / 3.0
     r.per_halfedge(mesh, third, third, third)
+    if not mesh.is_closed:  # the midpoints of the boundary edges, then the corners, kept
+        half = Fraction(1, 2)
+        r.boundary_points(mesh, [(half, half)])
+        r.kept_corners(mesh)
     return r.matrix()
 
 
@@ -637,7 +695,9 @@ def subdivision_matrix(
     Parameters
     ----------
     mesh : Mesh
-        n vertices.
+        n vertices; closed or open (the rows of the boundary's points are
+        written from the operators' boundary rules; probing an open mesh
+        may fail where moving a vertex makes or unmakes a corner).
     scheme, iterations, duals, **options
         As for :func:`pentanb.subdivide`.
     probe : bool, optional
@@ -672,7 +732,6 @@ def subdivision_matrix(
     >>> S.shape
     (38, 8)
     """
-    check_closed(mesh, "subdivision_matrix")
     s = get_scheme(scheme)
     # subdivide's own checks: counts, options, memory (nothing is built here)
     subdivide(mesh, s, 0, duals, max_bytes=max_bytes, **options)

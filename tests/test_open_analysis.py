@@ -1,0 +1,159 @@
+"""The analysis of open meshes: the subdivision matrix and the boundary curve's own rule.
+
+* :func:`~pentanb.analysis.subdivision_matrix` on meshes with boundary: ``S @ V``
+  against what the scheme itself computes (the scheme is run, the matrix
+  applied, the two compared), rows summing to 1, the exact matrices equal to
+  the float ones, and the dual's boundary rows written out by hand;
+* :func:`~pentanb.analysis.boundary_spectrum`: the new boundary positions
+  depend on the old boundary positions only (a zero block of ``S``, checked
+  on the matrix itself), and the curve rule they follow, its mask and the
+  spectrum of its local matrix, against references written here from the
+  curve schemes' definitions (the cubic B-spline's mask ``(1, 4, 6, 4, 1) / 8``
+  and its eigenvalues ``1, 1/2, 1/4, 1/8, 1/8``; pentagonalization's boundary
+  as trisection then two rounds of midpoint averaging).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import pentanb
+from pentanb import Mesh, shapes
+
+sp = pytest.importorskip("scipy.sparse")
+
+from pentanb.analysis.subdivision_matrix import (  # noqa: E402
+    dual_matrix,
+    exact_dual_matrix,
+    exact_remesh_matrix,
+    matrix_checks,
+    remesh_matrix,
+    subdivision_matrix,
+)
+
+SCHEMES = list(pentanb.SCHEMES)
+
+
+# ====================================================================== open meshes
+def grid(nx: int = 3, ny: int = 2) -> Mesh:
+    """A planar nx x ny patch of unit quads, a little bent (z = x y / 10): four corners."""
+    xs, ys = np.meshgrid(np.arange(nx + 1.0), np.arange(ny + 1.0), indexing="ij")
+    v = np.stack([xs.ravel(), ys.ravel(), 0.1 * (xs * ys).ravel()], 1)
+    faces = [
+        [i * (ny + 1) + j, (i + 1) * (ny + 1) + j, (i + 1) * (ny + 1) + j + 1, i * (ny + 1) + j + 1]
+        for i in range(nx)
+        for j in range(ny)
+    ]
+    return Mesh(v, faces)
+
+
+def annulus(n: int = 10, rings: int = 2) -> Mesh:
+    """A ring of quads, one triangle fan in it: two boundary loops of n edges."""
+    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    r = np.linspace(0.5, 1.0, rings + 1)
+    v = np.concatenate(
+        [np.stack([ri * np.cos(t), ri * np.sin(t), ri**2 * 0.2 + 0 * t], 1) for ri in r]
+    )
+    faces = []
+    for k in range(rings):
+        for i in range(n):
+            a, b = k * n + i, k * n + (i + 1) % n
+            c, d = (k + 1) * n + (i + 1) % n, (k + 1) * n + i
+            if k == 0 and i < 3:  # some triangles: boundary vertices of several kinds
+                faces += [[a, b, c], [a, c, d]]
+            else:
+                faces.append([a, b, c, d])
+    return Mesh(v, faces)
+
+
+OPEN = {"grid": grid, "annulus": annulus, "open_disk": shapes.open_disk}
+
+
+def test_the_open_meshes_here_are_open_and_the_grid_has_corners():
+    for make in OPEN.values():
+        assert not make().is_closed
+    assert pentanb.schemes.boundary_corners(grid()).size == 4
+    assert annulus().n_boundary_loops == 2
+
+
+# ====================================================================== the matrix
+@pytest.mark.parametrize("mesh_name", list(OPEN))
+@pytest.mark.parametrize("scheme", SCHEMES)
+def test_matrix_reproduces_the_scheme_on_open_meshes(scheme, mesh_name):
+    mesh = OPEN[mesh_name]()
+    S, result = subdivision_matrix(mesh, scheme, 1, 2)
+    ref = pentanb.subdivide(mesh, scheme, 1, 2)  # the scheme, run
+    assert np.array_equal(result.corners, ref.corners)
+    assert np.array_equal(result.vertices, ref.vertices)
+    assert S.shape == (ref.n_vertices, mesh.n_vertices)
+    err = np.abs(S @ mesh.vertices - ref.vertices).max() / np.abs(ref.vertices).max()
+    assert err <= 1e-12
+    # and on other positions with the same connectivity (no corner made or lost)
+    moved = mesh.with_vertices(mesh.vertices * [1.0, 1.3, 0.7] + [0.2, -0.1, 0.4])
+    ref2 = pentanb.subdivide(moved, scheme, 1, 2)
+    assert np.array_equal(ref2.corners, ref.corners)
+    S2, _ = subdivision_matrix(moved, scheme, 1, 2)
+    assert np.abs(S2 @ moved.vertices - ref2.vertices).max() <= 1e-12 * np.abs(ref2.vertices).max()
+
+
+@pytest.mark.parametrize("scheme", SCHEMES)
+def test_open_rows_sum_to_one_and_weights_are_convex(scheme):
+    mesh = shapes.open_disk()
+    S, result = subdivision_matrix(mesh, scheme, 2, 2)
+    checks = matrix_checks(S, mesh, result)
+    assert checks.affine, checks
+    assert checks.convex, checks
+    assert checks.reproduces <= 1e-12
+    # affine invariance, seen from the positions: translate, and the result translates
+    shift = np.array([3.0, -2.0, 5.0])
+    assert np.allclose(S @ (mesh.vertices + shift), result.vertices + shift, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("duals", [0, 1, 3])
+@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons", "corner_cutting"])
+def test_open_any_number_of_duals_and_iterations(scheme, duals):
+    mesh = grid(3, 3)
+    S, _ = subdivision_matrix(mesh, scheme, 2, duals)
+    ref = pentanb.subdivide(mesh, scheme, 2, duals)
+    assert np.allclose(S @ mesh.vertices, ref.vertices, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("scheme", SCHEMES)
+def test_open_exact_matrices_round_to_the_float_ones(scheme):
+    mesh = grid(2, 2)
+    R, out = remesh_matrix(mesh, scheme)
+    E = exact_remesh_matrix(mesh, scheme, out)
+    assert all(isinstance(x, Fraction) for x in E.data)
+    assert np.abs(E.toarray() - R.toarray()).max() <= 1e-15
+    assert np.abs(exact_dual_matrix(out).toarray() - dual_matrix(out).toarray()).max() <= 1e-15
+
+
+def test_the_duals_rows_on_a_grid_written_by_hand():
+    # a 2 x 1 grid: vertices 0..5 at (i, j), i = 0..2, j = 0..1 (index 2 i + j);
+    # faces (0, 2, 3, 1) and (2, 4, 5, 3); corners: 0, 1, 4, 5 (one face, 90 degrees)
+    mesh = grid(2, 1)
+    D = dual_matrix(mesh).toarray()
+    B = mesh.n_boundary_edges
+    assert D.shape == (2 + B + 4, 6)
+    q = 1 / 4
+    assert np.allclose(D[0], [q, q, q, q, 0, 0]) and np.allclose(D[1], [0, 0, q, q, q, q])
+    # the midpoints, one per boundary half-edge in the mesh's order
+    tails = mesh.corners[mesh.boundary_halfedges]
+    heads = mesh.head[mesh.boundary_halfedges]
+    for j, (a, b) in enumerate(zip(tails.tolist(), heads.tolist())):
+        expected = np.zeros(6)
+        expected[[a, b]] = 0.5
+        assert np.allclose(D[2 + j], expected)
+    assert np.allclose(D[2 + B :], np.eye(6)[[0, 1, 4, 5]])  # the corners, kept
+    assert np.allclose(D @ mesh.vertices, pentanb.dual(mesh).vertices)
+
+
+def test_a_closed_mesh_still_has_no_boundary_rows():
+    cube = shapes.cube()
+    assert dual_matrix(cube).shape == (6, 8)
+    for scheme, rows in [("corner_cutting", 24), ("honeycomb", 24), ("preserve_hexagons", 32)]:
+        R, out = remesh_matrix(cube, scheme)
+        assert R.shape == (rows, 8) == (out.n_vertices, 8)
