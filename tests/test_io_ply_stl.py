@@ -340,7 +340,8 @@ def test_stl_tolerance_welds_near_corners(tmp_path):
     noisy = (np.array(corners) + rng.uniform(-1e-9, 1e-9, (4, 3, 3))).tolist()
     path = tmp_path / "t.stl"
     path.write_text(_tetra_stl(noisy))
-    apart = read(path)  # not welded: four separate triangles, each with its boundary
+    with pytest.warns(UserWarning, match="no two of the 4 facets share a corner"):
+        apart = read(path)  # not welded: four separate triangles, each with its boundary
     assert (apart.n_vertices, apart.n_components, apart.n_boundary_loops) == (12, 4, 4)
     m = read(path, tolerance=1e-6)
     assert (m.n_vertices, m.n_faces) == (4, 4)
@@ -382,6 +383,36 @@ def test_stl_open_surface_is_read_with_its_boundary_loop(tmp_path):
     m = read(path)
     assert (m.n_vertices, m.n_faces) == (14, 23)
     assert [len(loop) for loop in m.boundary_loops] == [3]
+
+
+def test_stl_of_loose_facets_warns_and_reads_as_loose_triangles(tmp_path):
+    # two triangles whose shared edge was written with rounded coordinates
+    path = tmp_path / "soup.stl"
+    path.write_text(
+        "solid s\n"
+        "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+        "endloop\nendfacet\n"
+        "facet normal 0 0 1\nouter loop\nvertex 1.0000001 0 0\nvertex 1 1 0\n"
+        "vertex 0 1.0000001 0\nendloop\nendfacet\nendsolid s\n"
+    )
+    with pytest.warns(UserWarning, match=r"no two of the 2 facets share a corner.*tolerance="):
+        m = read(path)
+    assert (m.n_vertices, m.n_faces, m.n_boundary_loops) == (6, 2, 2)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        welded = read(path, tolerance=1e-5)
+    assert (welded.n_vertices, welded.n_faces, welded.n_boundary_loops) == (4, 2, 1)
+
+
+def test_stl_of_one_facet_does_not_warn(tmp_path):
+    path = tmp_path / "one.stl"
+    path.write_text(
+        "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+        "vertex 0 1 0\nendloop\nendfacet\nendsolid s\n"
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert read(path).n_faces == 1
 
 
 def test_stl_degenerate_facet(tmp_path):

@@ -126,7 +126,8 @@ def read(path: str | os.PathLike | IO[bytes], format: str | None = None, **optio
     MeshError
         A malformed file (a bad number, a face index out of range, counts
         that do not match); the message names the file and line.  A file
-        whose mesh is not a closed manifold raises the mesh's own error,
+        whose faces are not an oriented 2-manifold (closed, or open with
+        boundary loops) raises the mesh's own error,
         prefixed with the file name.
     ValueError
         An unknown suffix (without ``format``) or format; a path to a

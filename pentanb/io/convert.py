@@ -41,9 +41,10 @@ def from_trimesh(tmesh: Any) -> Mesh:
 
     The vertices and triangles are taken as they are (no merging): a
     trimesh loaded with ``process=False`` from a file with duplicated
-    corners is refused, as is any triangle soup that is not a closed,
-    oriented manifold; ``trimesh.Trimesh(..., process=True)`` (trimesh's
-    default) merges coincident vertices first.
+    corners is refused, as is any triangle soup that is not an oriented
+    2-manifold (closed, or open with boundary loops);
+    ``trimesh.Trimesh(..., process=True)`` (trimesh's default) merges
+    coincident vertices first.
 
     Parameters
     ----------
@@ -60,14 +61,15 @@ def from_trimesh(tmesh: Any) -> Mesh:
         ``tmesh`` is not a trimesh.Trimesh (or anything with ``vertices`` and
         ``faces``).
     MeshError
-        The triangles are not a closed, oriented manifold (the mesh's message).
+        The triangles are not an oriented 2-manifold, closed or with boundary
+        (the mesh's message).
     """
     if not (hasattr(tmesh, "vertices") and hasattr(tmesh, "faces")) or isinstance(tmesh, Mesh):
         raise TypeError(f"from_trimesh expects a trimesh.Trimesh, got {type(tmesh).__name__}")
     try:
         return Mesh(np.asarray(tmesh.vertices), np.asarray(tmesh.faces))
     except MeshError as exc:
-        raise MeshError(f"the trimesh is not a closed, oriented manifold: {exc}") from None
+        raise MeshError(f"the trimesh is not an oriented 2-manifold: {exc}") from None
 
 
 def to_trimesh(mesh: Mesh) -> Any:
@@ -119,7 +121,8 @@ def from_meshio(mmesh: Any) -> Mesh:
         ``mmesh`` is not a meshio.Mesh (anything with ``points`` and ``cells``).
     MeshError
         Points that are not 3-D, cells that are not polygons, no faces, or
-        faces that are not a closed, oriented manifold (the mesh's message).
+        faces that are not an oriented 2-manifold, closed or with boundary
+        (the mesh's message).
     """
     if not (hasattr(mmesh, "points") and hasattr(mmesh, "cells")):
         raise TypeError(f"from_meshio expects a meshio.Mesh, got {type(mmesh).__name__}")
@@ -166,7 +169,7 @@ def from_meshio(mmesh: Any) -> Mesh:
     try:
         return Mesh.from_csr(points, corners, offsets)
     except MeshError as exc:
-        raise MeshError(f"the meshio mesh is not a closed, oriented manifold: {exc}") from None
+        raise MeshError(f"the meshio mesh is not an oriented 2-manifold: {exc}") from None
 
 
 def _cell_indices(data: np.ndarray, kind: str, block: int) -> np.ndarray:

@@ -78,8 +78,8 @@ def read_obj(path: str | os.PathLike | IO[bytes]) -> Mesh:
     MeshError
         A malformed file (a bad number, a face index out of range, a NUL
         byte); the message names the file and line.  A file whose mesh is
-        not a closed manifold raises the mesh's own error, prefixed with the
-        file name.
+        not an oriented 2-manifold (closed or with boundary) raises the
+        mesh's own error, prefixed with the file name.
     """
     parts: list[_Part] = []
     nv = 0

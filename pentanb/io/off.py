@@ -59,7 +59,8 @@ def read_off(path: str | os.PathLike | IO[bytes]) -> Mesh:
     MeshError
         A missing header, bad counts, a bad number or index, or counts that
         do not match the data lines; the message names the file and line.
-        A file whose mesh is not a closed manifold raises the mesh's own
+        A file whose mesh is not an oriented 2-manifold (closed or with
+        boundary) raises the mesh's own
         error, prefixed with the file name.
     """
     with open_source(path, "read_off") as src:

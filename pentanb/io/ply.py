@@ -294,7 +294,8 @@ def read_ply(path: str | os.PathLike | IO[bytes]) -> Mesh:
     MeshError
         A damaged header, a file shorter than its header says, a bad number;
         the message names the file and the line (or the element and row).  A
-        file whose mesh is not a closed manifold raises the mesh's own
+        file whose mesh is not an oriented 2-manifold (closed or with
+        boundary) raises the mesh's own
         error, prefixed with the file name.
     """
     with open_source(path, "read_ply") as src:

@@ -6,14 +6,18 @@ ignored here); a corner shared by six triangles is written six times.
 vertex.  By default "the same point" means equal coordinates (after
 ``-0.0`` is taken as ``0.0``), which is what every STL writer produces for a
 shared corner; with ``tolerance > 0`` corners closer than that are merged
-too.  The welded triangles must form a closed, consistently oriented
-manifold (the paper's meshes), or a :class:`~pentanb.MeshError` says why.
+too.  The welded triangles must form a consistently oriented 2-manifold, closed
+(the paper's meshes) or open with boundary loops, or a
+:class:`~pentanb.MeshError` says why.  Facets that share no corner with
+their neighbours (an unwelded soup) read as an open mesh of loose
+triangles: ``mesh.n_boundary_loops`` tells.
 """
 
 from __future__ import annotations
 
 import io
 import os
+import warnings
 from pathlib import Path
 from typing import IO, Any
 
@@ -84,8 +88,14 @@ def read_stl(path: str | os.PathLike | IO[bytes], tolerance: float = 0.0) -> Mes
         A damaged file (a size that does not match a binary file's count, a
         bad ASCII line, a facet that is not a triangle), a facet whose
         corners weld into fewer than three vertices, or welded triangles
-        that are not a closed manifold (the mesh's message, e.g. the first
-        boundary edge and the number of boundary loops).
+        that are not an oriented 2-manifold (the mesh's message, e.g. the
+        first non-manifold edge).
+
+    Warns
+    -----
+    UserWarning
+        No two of several facets share a corner: the file reads as loose
+        triangles (an open mesh), usually a sign that ``tolerance`` is needed.
     """
     tolerance = _check_tolerance(tolerance)
     with open_source(path, "read_stl") as src:
@@ -116,14 +126,22 @@ def read_stl(path: str | os.PathLike | IO[bytes], tolerance: float = 0.0) -> Mes
         raise MeshError(
             f"{path}: facet {f}{_at(lines, f)} has two corners at the same point after welding "
             f"{corners[3 * f : 3 * f + 3].tolist()} ({flat.size:,} such facets): a facet of no "
-            "area cannot be part of a closed manifold"
+            "area cannot be part of a manifold"
+        )
+    if tri.shape[0] > 1 and vertices.shape[0] == index.size:
+        warnings.warn(
+            f"{path}: no two of the {tri.shape[0]:,} facets share a corner, so the mesh is "
+            f"{tri.shape[0]:,} loose triangles (an open mesh with as many boundary loops); "
+            "if corners differ by rounding, pass tolerance= to weld them",
+            UserWarning,
+            stacklevel=2,
         )
     try:
         mesh = adopted(vertices, index, np.arange(0, index.size + 1, 3, dtype=np.int64))
     except MeshError as exc:
         raise MeshError(
             f"{path}: the {tri.shape[0]:,} facets, welded into {vertices.shape[0]:,} vertices "
-            f"(tolerance {tolerance}), are not a closed manifold: {exc}"
+            f"(tolerance {tolerance}), are not an oriented 2-manifold: {exc}"
         ) from None
     return mesh
 
