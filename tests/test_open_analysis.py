@@ -157,3 +157,145 @@ def test_a_closed_mesh_still_has_no_boundary_rows():
     for scheme, rows in [("corner_cutting", 24), ("honeycomb", 24), ("preserve_hexagons", 32)]:
         R, out = remesh_matrix(cube, scheme)
         assert R.shape == (rows, 8) == (out.n_vertices, 8)
+
+
+# ====================================================================== the boundary's own rule
+from pentanb.analysis import boundary_spectrum, boundary_test_mesh  # noqa: E402
+
+REFINING = ["pentagonalize", "preserve_pentagons", "loop_remesh", "vertex_insertion"]
+REFINING += ["corner_cutting", "preserve_hexagons"]
+
+
+def boundary_vertices(m: Mesh) -> np.ndarray:
+    return np.unique(m.corners[m.boundary_halfedges])
+
+
+@pytest.mark.parametrize("mesh_name", ["annulus", "open_disk", "grid"])
+@pytest.mark.parametrize("scheme", SCHEMES)
+def test_new_boundary_points_lean_on_old_boundary_points_only(scheme, mesh_name):
+    mesh = OPEN[mesh_name]()
+    S, out = subdivision_matrix(mesh, scheme, 1, 2)
+    old_b = np.zeros(mesh.n_vertices, dtype=bool)
+    old_b[boundary_vertices(mesh)] = True
+    new_b = boundary_vertices(out)
+    assert S[new_b][:, ~old_b].nnz == 0  # the zero block: the boundary decouples
+    assert S[new_b][:, old_b].nnz > 0
+    inner = np.setdiff1d(np.arange(out.n_vertices), new_b)
+    assert S[inner][:, ~old_b].nnz > 0  # (the interior does lean on the interior)
+
+
+def conv(*masks) -> list[Fraction]:
+    out = [Fraction(1)]
+    for m in masks:
+        out = [
+            sum((out[i] * m[k - i] for i in range(len(out)) if 0 <= k - i < len(m)), Fraction(0))
+            for k in range(len(out) + len(m) - 1)
+        ]
+    return out
+
+
+def upsampled(mask, r: int) -> list[Fraction]:
+    """The mask of "refine by r (linear interpolation), then apply ``mask`` at the fine level"."""
+    hat = [Fraction(r - abs(k), r) for k in range(-r + 1, r)]
+    return conv(hat, mask)
+
+
+F = Fraction
+AVERAGE = [F(1, 2), F(1, 2)]  # one dual: the midpoints of the boundary's edges
+
+
+def test_reference_masks_written_from_the_rules():
+    # pentagonalization trisects every boundary edge; two duals average twice
+    assert upsampled(conv(AVERAGE, AVERAGE), 3) == [F(x, 12) for x in (1, 4, 8, 10, 8, 4, 1)]
+    # midpoint insertion, then twice averaging: Lane and Riesenfeld's cubic B-spline
+    assert upsampled(conv(AVERAGE, AVERAGE), 2) == [F(x, 8) for x in (1, 4, 6, 4, 1)]
+
+
+@pytest.mark.parametrize(
+    "scheme, r, mask, den",
+    [
+        ("pentagonalize", 3, (1, 4, 8, 10, 8, 4, 1), 12),
+        ("preserve_hexagons", 3, (1, 4, 8, 10, 8, 4, 1), 12),
+        ("preserve_pentagons", 2, (1, 4, 6, 4, 1), 8),
+        ("loop_remesh", 2, (1, 4, 6, 4, 1), 8),
+        ("vertex_insertion", 2, (1, 4, 6, 4, 1), 8),
+        ("corner_cutting", 2, (1, 5, 10, 10, 5, 1), 16),  # Chaikin, then twice averaging
+    ],
+)
+def test_the_boundary_rule_read_from_the_matrix(scheme, r, mask, den):
+    b = boundary_spectrum(scheme, 2)
+    assert b.decoupled and b.uniform and b.arity == r
+    assert b.mask == tuple(F(x, den) for x in mask)
+    assert b.mask_start == -((len(mask) - 1) // 2)  # centred: first + last index is 0 or 1
+    # the same rule read on other meshes: the rule is the boundary's, not the mesh's
+    for mesh in (annulus(16), boundary_test_mesh(15)):
+        assert boundary_spectrum(scheme, 2, mesh=mesh).mask == b.mask
+
+
+def test_cubic_bspline_boundary_has_the_known_spectrum():
+    b = boundary_spectrum("preserve_pentagons", 2)
+    # the 5 x 5 local matrix of (1, 4, 6, 4, 1) / 8 around a vertex, by hand:
+    # L[i][j] = a[i - 2 j], i, j = -2..2
+    a = {-2: 1, -1: 4, 0: 6, 1: 4, 2: 1}
+    L = [[F(a.get(i - 2 * j, 0), 8) for j in range(-2, 3)] for i in range(-2, 3)]
+    assert b.window == (-2, -1, 0, 1, 2) and b.local_matrix == L
+    assert b.centre == "vertex"
+    assert np.allclose(np.sort(b.eigenvalues.real)[::-1], [1, 1 / 2, 1 / 4, 1 / 8, 1 / 8])
+    assert np.allclose(b.eigenvalues.imag, 0)
+    assert b.exact["lambda1"] == F(1, 2) and b.exact["others_below"] is True
+    assert np.allclose(b.eigenvector / b.eigenvector[-1], [-1, -1 / 2, 0, 1 / 2, 1])  # linear
+    assert b.is_c1 and b.difference_steps == 1
+    assert b.eigenvalue_text == "1, 1/2, 1/4, 1/8, 1/8"
+
+
+def test_pentagonalization_boundary_is_a_c1_ternary_curve():
+    b = boundary_spectrum("pentagonalize", 2)
+    # the 3 x 3 local matrix of (1, 4, 8, 10, 8, 4, 1) / 12 around a vertex, by hand
+    L = [[F(4, 12), F(8, 12), F(0)], [F(1, 12), F(10, 12), F(1, 12)], [F(0), F(8, 12), F(4, 12)]]
+    assert b.local_matrix == L and b.centre == "vertex"
+    # (1, 1, 1) -> 1; (-1, 0, 1) -> 1/3; the trace 3/2 leaves 1/6
+    assert np.allclose(np.sort(b.eigenvalues.real)[::-1], [1, 1 / 3, 1 / 6])
+    assert b.exact["lambda1"] == F(1, 3)
+    assert np.allclose(b.eigenvector / b.eigenvector[-1], [-1, 0, 1])
+    assert b.is_c1 and b.arity == 3
+
+
+def test_the_c1_verdict_fails_on_piecewise_linear_boundaries():
+    # no duals: the boundary is the refined polygon itself, C0 and not C1
+    for scheme, r in [("pentagonalize", 3), ("loop_remesh", 2)]:
+        b = boundary_spectrum(scheme, 0)
+        assert b.arity == r and b.mask == tuple(upsampled([F(1)], r))
+        assert not b.is_c1
+        assert b.exact["others_below"] is False  # lambda1 = 1/r is double
+        assert b.difference_steps is None
+    # and Chaikin's corner cutting alone is C1 (quadratic B-spline, around an edge midpoint)
+    chaikin = boundary_spectrum("corner_cutting", 0)
+    assert chaikin.mask == (F(1, 4), F(3, 4), F(3, 4), F(1, 4))
+    assert chaikin.is_c1 and chaikin.centre == "edge midpoint"
+
+
+@pytest.mark.parametrize("scheme", ["triangulate", "sqrt3_remesh", "honeycomb"])
+def test_schemes_that_do_not_refine_the_boundary_say_so(scheme):
+    b = boundary_spectrum(scheme, 2)
+    assert b.decoupled and b.arity == 1 and b.mask == () and not b.is_c1
+    assert "not refined" in b.reason and "not refined" in b.summary()
+
+
+def test_a_rule_that_does_not_decouple_says_so():
+    def smooth_all(m: Mesh) -> Mesh:  # every vertex to the mean of its faces' centroids
+        acc = np.zeros_like(m.vertices)
+        count = np.zeros(m.n_vertices)
+        np.add.at(acc, m.corners, m.face_centroids[m.halfedge_face])
+        np.add.at(count, m.corners, 1)
+        return m.with_vertices(acc / count[:, None])
+
+    b = boundary_spectrum(smooth_all, 0, mesh=annulus())  # (its middle circle is inside)
+    assert not b.decoupled and b.mask == () and not b.is_c1
+    assert "does not decouple" in b.reason
+
+
+def test_boundary_spectrum_refuses_a_closed_mesh():
+    with pytest.raises(pentanb.MeshError, match="needs an open mesh"):
+        boundary_spectrum("pentagonalize", mesh=shapes.cube())
+    with pytest.raises(TypeError, match=r"pentanb\.Mesh"):
+        boundary_spectrum("pentagonalize", mesh="cube")

@@ -9,6 +9,9 @@
   (Section 7's "visually confirmed" G1 continuity, measured).
 * :mod:`~pentanb.analysis.subdivision_matrix`: one step of "remesh, then k
   duals" as a sparse linear map of positions, ``S @ V``.
+* :mod:`~pentanb.analysis.boundary`: the boundary curve of an open mesh:
+  its own subdivision rule (mask), the spectrum of its local matrix, C1 or
+  not.
 * :mod:`~pentanb.analysis.spectral`: Section 7's open question answered with
   subdivision theory: local subdivision matrices around extraordinary
   vertices and faces, their spectra, characteristic maps, the results table.
@@ -21,6 +24,14 @@ stays numpy-only.)
 from __future__ import annotations
 
 from . import measures
+from .boundary import (
+    BoundaryRow,
+    BoundarySpectrum,
+    boundary_markdown,
+    boundary_spectrum,
+    boundary_table,
+    boundary_test_mesh,
+)
 from .measures import *  # noqa: F403  (the names of measures.__all__)
 from .spectral import (
     CharacteristicMap,
@@ -44,5 +55,11 @@ __all__ = [
     "ContinuityRow",
     "table_markdown",
     "ring_contraction",
+    "boundary_spectrum",
+    "BoundarySpectrum",
+    "boundary_table",
+    "BoundaryRow",
+    "boundary_markdown",
+    "boundary_test_mesh",
     *(name for name in measures.__all__ if name != "BOX_EDGES"),
 ]
