@@ -63,6 +63,23 @@ def fan(mesh):
     return np.array(tris), np.array(owner)
 
 
+def newell(mesh):
+    """Unit normal of every face by Newell's formula over its edges (no triangles)."""
+    out = []
+    for face in face_lists(mesh):
+        p = mesh.vertices[face]
+        q = np.roll(p, -1, axis=0)
+        n = np.array(
+            [
+                ((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])).sum(),
+                ((p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0])).sum(),
+                ((p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])).sum(),
+            ]
+        )
+        out.append(n / np.linalg.norm(n))
+    return np.array(out)
+
+
 def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
     fa = v.face_geometry.attributes
     pos, idx = arr(fa["position"]), arr(fa["index"])
@@ -78,8 +95,12 @@ def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
     # each triangle has the colour of its face's size, on its three corners
     sizes = np.array([len(f) for f in face_lists(mesh)])
     np.testing.assert_array_equal(col[idx], np.repeat(face_rgb(sizes[owner]), 3, axis=0))  # exact
-    # indexed: the vertices once per face size present, not three rows per triangle
-    assert len(pos) == len(set(sizes.tolist())) * mesh.n_vertices
+    # indexed: a row per face corner (a polygon's normal of its own), not three per triangle
+    assert len(pos) == len(mesh.corners)
+    # every triangle's corners carry its polygon's normal (Newell's, worked out here)
+    nor = arr(fa["normal"])
+    assert nor.dtype == np.float32 and len(nor) == len(pos)
+    np.testing.assert_allclose(nor[idx], np.repeat(newell(mesh)[owner], 3, axis=0), atol=1e-6)
     # edges: both ends of every edge, in the edge colour
     ea = v.edge_geometry.attributes
     eidx = arr(ea["index"])
@@ -107,7 +128,8 @@ def test_view_buffers_match_mesh(name):
     v = pentanb.view(mesh)
     check_buffers(v, mesh)
     assert v.renderer in v.children
-    assert v.faces.material.flatShading
+    # a normal per polygon, not flat shading (which shows every fan triangle)
+    assert not v.faces.material.flatShading
     assert v.faces.material.vertexColors == "VertexColors"
     assert v.edges.visible and v.wireframe.value
 
@@ -1025,7 +1047,9 @@ def _same_buffers(a, b):
     drawn = {
         "triangles": lambda x: x.triangles(),
         "triangle colors": lambda x: x.triangle_colors(),
+        "triangle normals": lambda x: x.triangle_normals(),
         "segments": lambda x: x.segments(),
+        "boundary": lambda x: x.boundary(),
         "segment colors": lambda x: x.edge_color[x.edge_index][: 2 * x.edge_count],
         "point_position": lambda x: x.point_position,
         "point_color": lambda x: x.point_color,
@@ -1034,7 +1058,7 @@ def _same_buffers(a, b):
         x, y = what(a), what(b)
         assert x.dtype == y.dtype and x.shape == y.shape, name
         assert np.array_equal(x, y), name
-    for name in ("edge_count", "point_count"):
+    for name in ("edge_count", "point_count", "boundary_count"):
         assert getattr(a, name) == getattr(b, name), name
     for name in ("position", "color", "index", "edge_position", "edge_color", "edge_index"):
         x, y = getattr(a, name), getattr(b, name)
@@ -1058,24 +1082,27 @@ def test_mesh_buffers_of_mixed_and_uniform_faces(text):
     _same_buffers(drawing_module.buffers(drawing_module.drawing(m)), drawing_module.mesh_buffers(m))
 
 
-def test_mesh_buffers_hold_the_vertices_once_per_face_size():
+def test_mesh_buffers_hold_a_row_per_face_corner():
     m = pentanb.conway("dgC")  # 32 triangles and 6 squares on 24 vertices
     b = drawing_module.mesh_buffers(m)
-    assert b.position.shape == (2 * 24, 3) and b.index.shape == (3 * (32 + 2 * 6),)
+    rows = 3 * 32 + 4 * 6
+    assert b.position.shape == (rows, 3) and b.index.shape == (3 * (32 + 2 * 6),)
     v = m.vertices.astype(np.float32)
-    assert np.array_equal(b.position, np.concatenate([v, v]))
+    corners = np.concatenate(face_lists(m))
+    assert np.array_equal(b.position, v[corners])
+    sizes = np.repeat(m.face_sizes, m.face_sizes)
     triangle, square = (drawing_module._bytes(face_rgb(k)) for k in (3, 4))
-    assert (b.color[:24] == triangle).all() and (b.color[24:] == square).all()
+    assert (b.color[sizes == 3] == triangle).all() and (b.color[sizes == 4] == square).all()
+    # every row of a face carries the face's normal (Newell's, worked out in the test)
+    np.testing.assert_allclose(b.normal, np.repeat(newell(m), m.face_sizes, axis=0), atol=1e-6)
     assert b.edge_position.shape == (24, 3) and b.edge_index.shape == (2 * 60,)
-    one = drawing_module.mesh_buffers(shapes.dodecahedron())  # one size: one copy
-    assert one.position.shape == (20, 3)
-    # six face sizes on 360 vertices: six copies would be more rows than three
-    # per triangle corner (716 triangles), so the rows are per corner
+    one = drawing_module.mesh_buffers(shapes.dodecahedron())
+    assert one.position.shape == (60, 3) and one.normal.shape == (60, 3)
+    # fewer rows than three per triangle corner whatever the face sizes
     many = pentanb.conway("bbP5")
-    assert len(set(many.face_sizes.tolist())) == 6 and many.n_vertices == 360
-    fallback = drawing_module.mesh_buffers(many)
-    assert fallback.position.shape == (3 * 716, 3)
-    assert np.array_equal(fallback.index, np.arange(3 * 716))
+    assert len(set(many.face_sizes.tolist())) == 6
+    assert drawing_module.mesh_buffers(many).position.shape == (len(many.corners), 3)
+    assert len(many.corners) < 3 * (len(many.corners) - 2 * many.n_faces)
 
 
 def test_mesh_buffers_comparison_fails_on_a_moved_vertex_or_other_faces():
@@ -1096,6 +1123,7 @@ def test_a_view_updated_with_a_mesh_carries_its_drawing_and_legend():
     assert np.array_equal(v.drawing.vertices, n.vertices)
     assert "32 triangles" in v.legend.value and "V = 24, E = 60, F = 38" in v.legend.value
     assert arr(v.face_geometry.attributes["index"]).shape == (3 * (32 + 12),)
-    assert arr(v.face_geometry.attributes["position"]).shape == (2 * 24, 3)  # two face sizes
+    assert arr(v.face_geometry.attributes["position"]).shape == (3 * 32 + 4 * 6, 3)  # corners
+    assert arr(v.face_geometry.attributes["normal"]).shape == (3 * 32 + 4 * 6, 3)
     with pytest.raises(TypeError, match=r"expected a pentanb\.Mesh or a Drawing, got str"):
         v.update("cube")

@@ -14,6 +14,7 @@ __all__ = [
     "FACE_COLORS",
     "LARGE_FACE_COLOR",
     "EDGE_COLOR",
+    "BOUNDARY_COLOR",
     "face_color",
     "face_label",
     "face_rgb",
@@ -35,6 +36,10 @@ LARGE_FACE_COLOR = "#999999"
 
 #: Colour of the wireframe.
 EDGE_COLOR = "#222222"
+
+#: Colour of the boundary of an open mesh, drawn heavier than the wireframe
+#: (wider lines, in every picture of an open mesh).
+BOUNDARY_COLOR = "#000000"
 
 
 def face_color(n: int) -> str:

@@ -9,19 +9,30 @@ How a mesh becomes WebGL buffers
 --------------------------------
 A polygon face is drawn as the fan of triangles from its first corner,
 :meth:`pentanb.Mesh.fan_triangles`, in one flat colour: the colour of its
-number of sides.  The buffers are *indexed*: ``position`` holds the
-vertices and ``index`` three rows of it per triangle.  A vertex has one
-colour in WebGL, so a vertex shared by faces of S different sizes is held S
-times: ``position`` is the vertex array once per face size present (S
-copies, S = 1 for a mesh of one face size) with ``color`` that size's colour
-on its copy, and a triangle's corners point into the copy of its face's
-size.  For the meshes of the explorer's slider (a few face sizes) that is
-1.3-2.3x fewer bytes to compute and to send to the browser than three rows
-per triangle (``benchmarks/bench_pipeline.py`` measures it).
-Flat shading (``MeshPhongMaterial`` with ``flatShading``) needs no normals.
-Edges are one indexed ``LineSegments`` over the vertices; marked points are
-one ``Points``.  A general :class:`Drawing` (any colour per face) gets three
-rows per triangle and an index that counts through them.
+number of sides.  A face is lit as one polygon, not as its triangles: every
+row carries the polygon's normal (the direction of its vector area, the sum
+of its fan triangles' cross products; :func:`polygon_normals`), so a curved
+pentagon is shaded evenly and shows no seam along its fan diagonals (flat
+shading, which lights every triangle by its own plane, would).  The buffers
+are *indexed*: ``position`` holds one row per face corner (the vertex cast
+to float32), ``color`` and ``normal`` the face's colour and normal on every
+one of its rows, and ``index`` three rows per triangle.  That is the fewest
+rows with which every polygon has a normal of its own: a row per face corner
+(``H``, twice the edges of a closed mesh) against three per triangle
+(``3 (H - 2F)``).  Edges are one indexed ``LineSegments`` over the vertices
+(drawn fainter on large meshes: :func:`edge_opacity`); the edges of an open
+mesh's boundary are a second line set, drawn wide and dark
+(:data:`pentanb.viz.colors.BOUNDARY_COLOR`, :data:`BOUNDARY_WIDTH` pixels);
+marked points are one ``Points``.  A general :class:`Drawing` (any colour per
+face) gets three rows per triangle and an index that counts through them.
+
+The camera
+----------
+A view looks at a model from the direction of the matplotlib figures'
+default camera (elevation :data:`VIEW_ELEV`, azimuth :data:`VIEW_AZIM`,
+with +z up: :func:`eye_direction`), so the package's models, which stand
+on the xy plane and face +x (the rabbit's snout), are seen from the front
+and a little above, as in the figures.
 """
 
 from __future__ import annotations
@@ -35,12 +46,21 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import _jit
-from ..mesh import Mesh, check_mesh
+from ..mesh import Mesh, check_mesh, fan_triangle_corners
 from ..mesh import build as _mesh
 from .colors import EDGE_COLOR, face_color, face_label, face_rgb, hex_to_rgb
 
 __all__ = [
     "POINT_COLOR",
+    "BOUNDARY_WIDTH",
+    "EDGE_FADE_FACES",
+    "EDGE_MIN_OPACITY",
+    "VIEW_ELEV",
+    "VIEW_AZIM",
+    "edge_opacity",
+    "eye_direction",
+    "polygon_normals",
+    "boundary_segments",
     "Drawing",
     "drawing",
     "as_drawing",
@@ -63,6 +83,118 @@ __all__ = [
 
 #: Colour of marked points (the new vertices of a step-through).
 POINT_COLOR = "#000000"
+
+#: Width of a drawn boundary, in pixels (the edges are 1 pixel wide).
+BOUNDARY_WIDTH = 3.0
+
+#: Up to this many faces the edges are drawn fully opaque; beyond it they fade
+#: (:func:`edge_opacity`), so that a large mesh is not drawn black.
+EDGE_FADE_FACES = 2_000
+#: The faintest the edges get (on the largest meshes).
+EDGE_MIN_OPACITY = 0.12
+
+#: The camera of a 3D view: elevation and azimuth in degrees, +z up, as the
+#: matplotlib figures' default (:data:`pentanb.viz.mpl.ELEV`, ``AZIM``).
+VIEW_ELEV, VIEW_AZIM = 22.0, -58.0
+
+
+def edge_opacity(n_faces: int) -> float:
+    """How opaque a view draws the edges of a mesh of ``n_faces`` faces.
+
+    1 up to :data:`EDGE_FADE_FACES` faces; then ``sqrt(EDGE_FADE_FACES /
+    n_faces)`` (the edges per pixel grow as the faces, their spacing on the
+    screen shrinks as its square root), never below :data:`EDGE_MIN_OPACITY`:
+    about 0.32 at 20,000 faces, 0.14 at 100,000.
+
+    Parameters
+    ----------
+    n_faces : int
+        Number of faces drawn (>= 0).
+
+    Returns
+    -------
+    float
+        In [:data:`EDGE_MIN_OPACITY`, 1].
+    """
+    n = int(n_faces)
+    if n <= EDGE_FADE_FACES:
+        return 1.0
+    return max(math.sqrt(EDGE_FADE_FACES / n), EDGE_MIN_OPACITY)
+
+
+def eye_direction(elev: float = VIEW_ELEV, azim: float = VIEW_AZIM) -> NDArray[np.float64]:
+    """The unit vector from a model towards the camera, +z up.
+
+    Parameters
+    ----------
+    elev, azim : float
+        Elevation above the xy plane and azimuth from +x towards +y, in
+        degrees (the conventions of matplotlib's ``view_init``).
+
+    Returns
+    -------
+    (3,) float
+        ``(cos e cos a, cos e sin a, sin e)``.
+    """
+    e, a = math.radians(float(elev)), math.radians(float(azim))
+    return np.array([math.cos(e) * math.cos(a), math.cos(e) * math.sin(a), math.sin(e)])
+
+
+def polygon_normals(
+    vertices: ArrayLike, triangles: ArrayLike, triangle_face: ArrayLike, n_faces: int
+) -> NDArray[np.float64]:
+    """The unit normal of every polygon, from its fan triangles.
+
+    The direction of the polygon's vector area: the sum of its triangles'
+    cross products ``(b - a) x (c - a)``, which for a polygon that is not
+    flat is the same from any fan (Newell's normal), and for a flat one its
+    plane's normal.  A polygon of no area gets ``(0, 0, 1)``.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    triangles : (T, 3) int
+        Vertex indices of the triangles.
+    triangle_face : (T,) int
+        The polygon of every triangle, in ``[0, n_faces)``.
+    n_faces : int
+
+    Returns
+    -------
+    (n_faces, 3) float
+    """
+    v = np.asarray(vertices, dtype=np.float64).reshape(-1, 3)
+    t = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
+    owner = np.asarray(triangle_face, dtype=np.int64).reshape(-1)
+    a = v[t[:, 0]]
+    cross = np.cross(v[t[:, 1]] - a, v[t[:, 2]] - a)
+    area = np.stack(
+        [np.bincount(owner, weights=cross[:, k], minlength=n_faces) for k in range(3)], axis=1
+    )
+    length = np.sqrt((area * area).sum(axis=1))
+    flat = ~(length > 0)
+    out = area / np.where(flat, 1.0, length)[:, None]
+    out[flat] = (0.0, 0.0, 1.0)
+    return out
+
+
+def boundary_segments(mesh: Mesh) -> NDArray[np.float64]:
+    """The edges of a mesh's boundary, loop after loop, as segments.
+
+    Parameters
+    ----------
+    mesh : Mesh
+
+    Returns
+    -------
+    (B, 2, 3) float
+        Segment ``j`` runs from the tail to the head of
+        ``mesh.boundary_halfedges[j]`` (B = 0 for a closed mesh).
+    """
+    check_mesh(mesh, "boundary_segments()")
+    bh = mesh.boundary_halfedges
+    v = np.asarray(mesh.vertices, dtype=np.float64)
+    return np.stack([v[mesh.corners[bh]], v[mesh.head[bh]]], axis=1).reshape(-1, 2, 3)
 
 
 @dataclass(frozen=True)
@@ -96,6 +228,8 @@ class Drawing:
         Number of faces per face size, for the legend.
     counts : (V, E, F) or None
         The mesh's counts, shown under the legend.
+    boundary : (B, 2, 3) float, optional
+        The boundary's edges, drawn heavier (none: nothing drawn heavier).
     """
 
     vertices: NDArray[np.float64]
@@ -108,6 +242,7 @@ class Drawing:
     point_colors: NDArray[np.float64] | None = None
     legend: dict[int, int] = field(default_factory=dict)
     counts: tuple[int, int, int] | None = None
+    boundary: NDArray[np.float64] | None = None
 
     @property
     def n_faces(self) -> int:
@@ -142,6 +277,7 @@ def drawing(
     point_colors: ArrayLike | None = None,
     legend: dict[int, int] | None = None,
     show_counts: bool = True,
+    boundary: ArrayLike | None = None,
 ) -> Drawing:
     """The :class:`Drawing` of a mesh: its faces and edges, or what you give instead.
 
@@ -159,6 +295,9 @@ def drawing(
         Default: the mesh's face-size histogram.
     show_counts : bool
         Put the mesh's V, E, F under the legend.
+    boundary : (B, 2, 3) float, optional
+        Segments drawn heavier; default: the mesh's boundary
+        (:func:`boundary_segments`; none for a closed mesh).
 
     Returns
     -------
@@ -182,6 +321,11 @@ def drawing(
         point_colors=None if point_colors is None else np.asarray(point_colors, np.float64),
         legend=mesh.face_size_histogram() if legend is None else dict(legend),
         counts=(mesh.n_vertices, mesh.n_edges, mesh.n_faces) if show_counts else None,
+        boundary=(
+            boundary_segments(mesh)
+            if boundary is None
+            else np.asarray(boundary, dtype=np.float64).reshape(-1, 2, 3)
+        ),
     )
 
 
@@ -214,9 +358,9 @@ def _rows(colors: ArrayLike | None, default: str, n: int, repeat: int) -> NDArra
 class Buffers:
     """The arrays WebGL draws a :class:`Drawing` from (indexed: see the module notes).
 
-    Positions are float32; colours are bytes (uint8, 0 .. 255), drawn as
-    normalized attributes, a quarter of the bytes of float colours; indices
-    are uint32 (one dtype always: WebGL keeps a buffer's index type).
+    Positions and normals are float32; colours are bytes (uint8, 0 .. 255),
+    drawn as normalized attributes, a quarter of the bytes of float colours;
+    indices are uint32 (one dtype always: WebGL keeps a buffer's index type).
 
     Attributes
     ----------
@@ -236,6 +380,14 @@ class Buffers:
         S and k.  WebGL buffers are never empty: no triangle, segment or
         point becomes one hidden point (and a degenerate triangle or
         segment on it), and these counts say how many there really are.
+    normal : (P, 3) float32
+        The normal of every row: the unit normal of its face's polygon
+        (:func:`polygon_normals`), the same on every row of a face.
+    boundary_position : (max(B, 1), 2, 3) float32
+        The two ends of every boundary segment (one degenerate placeholder
+        when there is none).
+    boundary_count : int
+        B.
     """
 
     position: NDArray[np.float32]
@@ -248,6 +400,11 @@ class Buffers:
     point_color: NDArray[np.uint8]
     edge_count: int
     point_count: int
+    normal: NDArray[np.float32] = field(default_factory=lambda: np.zeros((1, 3), np.float32))
+    boundary_position: NDArray[np.float32] = field(
+        default_factory=lambda: np.zeros((1, 2, 3), np.float32)
+    )
+    boundary_count: int = 0
 
     def triangles(self) -> NDArray[np.float32]:
         """(T, 3, 3) float32: the corners of every triangle drawn."""
@@ -257,9 +414,17 @@ class Buffers:
         """(T, 3, 3) uint8: the colour of every triangle's corners."""
         return self.color[self.index].reshape(-1, 3, 3)
 
+    def triangle_normals(self) -> NDArray[np.float32]:
+        """(T, 3, 3) float32: the normal at every triangle's corners."""
+        return self.normal[self.index].reshape(-1, 3, 3)
+
     def segments(self) -> NDArray[np.float32]:
         """(S, 2, 3) float32: the ends of every segment drawn (no placeholder)."""
         return self.edge_position[self.edge_index].reshape(-1, 2, 3)[: self.edge_count]
+
+    def boundary(self) -> NDArray[np.float32]:
+        """(B, 2, 3) float32: the ends of every boundary segment drawn (no placeholder)."""
+        return self.boundary_position[: self.boundary_count]
 
 
 def _counting(n: int, width: int) -> NDArray[np.uint32]:
@@ -273,10 +438,35 @@ def _addressable(rows: int) -> None:
         raise ValueError(f"{rows:,} rows are more than a WebGL index can address")
 
 
+def _boundary_rows(segments: ArrayLike | None, centre: NDArray[np.float32]):
+    """The boundary's (max(B, 1), 2, 3) float32 rows and B (a placeholder on ``centre``)."""
+    seg = (
+        np.zeros((0, 2, 3), np.float32)
+        if segments is None
+        else np.asarray(segments, dtype=np.float32).reshape(-1, 2, 3)
+    )
+    if len(seg):
+        return np.ascontiguousarray(seg), len(seg)
+    return np.repeat(centre.reshape(1, 1, 3), 2, axis=1).astype(np.float32), 0
+
+
 def buffers(d: Drawing) -> Buffers:
-    """The WebGL arrays of a drawing (see :class:`Buffers`): three rows per triangle."""
+    """The WebGL arrays of a drawing (see :class:`Buffers`): three rows per triangle.
+
+    Parameters
+    ----------
+    d : Drawing
+
+    Returns
+    -------
+    Buffers
+        Every triangle's corners, colour and polygon normal on rows of its
+        own; the segments, points and boundary as given.
+    """
     position = np.asarray(d.vertices, dtype=np.float32)[d.triangles].reshape(-1, 3)
     color = _rows(np.asarray(d.face_colors)[d.triangle_face], "#000000", 0, 3)
+    normals = polygon_normals(d.vertices, d.triangles, d.triangle_face, d.n_faces)
+    normal = np.repeat(normals.astype(np.float32)[np.asarray(d.triangle_face)], 3, axis=0)
     seg = np.asarray(d.segments, dtype=np.float32).reshape(-1, 3)
     seg_color = _rows(d.segment_colors, EDGE_COLOR, len(seg) // 2, 2)
     pts = (
@@ -288,6 +478,7 @@ def buffers(d: Drawing) -> Buffers:
     vertices = np.asarray(d.vertices, dtype=np.float32).reshape(-1, 3)
     centre = vertices[:1] if len(vertices) else np.zeros((1, 3), np.float32)
     hidden = np.zeros((1, 3), np.uint8)
+    boundary, n_boundary = _boundary_rows(d.boundary, centre)
     return Buffers(
         position=np.ascontiguousarray(position) if len(position) else centre.copy(),
         color=np.ascontiguousarray(color) if len(position) else hidden.copy(),
@@ -299,78 +490,76 @@ def buffers(d: Drawing) -> Buffers:
         point_color=pt_color if len(pts) else hidden.copy(),
         edge_count=len(seg) // 2,
         point_count=len(pts),
+        normal=normal if len(position) else np.array([[0.0, 0.0, 1.0]], np.float32),
+        boundary_position=boundary,
+        boundary_count=n_boundary,
     )
 
 
 def mesh_buffers(mesh: Mesh) -> Buffers:
     """The explorer's buffers of a mesh: what ``buffers(drawing(mesh))`` draws, indexed.
 
-    The same triangles with the same colours, in the same order
-    (``triangles()`` and ``triangle_colors()`` of both are equal bit for
-    bit), and the same segments in the same order; but ``position`` is the
-    vertices cast to float32 once per face size present, not three rows per
-    triangle.  When that would be more rows than three per triangle (a mesh
-    with very many face sizes), the rows are per triangle corner as in
-    :func:`buffers`.  The fan triangles and edges come from the mesh's
-    connectivity caches, which the dual of a dual shares with the mesh it
-    came from; with the optional compiled kernels (:mod:`pentanb._jit`), on
-    a large mesh, they are written from the faces straight into uint32.
+    Parameters
+    ----------
+    mesh : Mesh
+
+    Returns
+    -------
+    Buffers
+        The same triangles with the same colours and normals, in the same
+        order (``triangles()``, ``triangle_colors()`` and
+        ``triangle_normals()`` of both are equal bit for bit), the same
+        segments in the same order and the same boundary; but ``position``
+        is one row per face corner (the vertices cast to float32 once, then
+        taken), not three rows per triangle, and the edges index the
+        vertices themselves.  The fan triangles and edges come from the
+        mesh's connectivity caches, which the dual of a dual shares with
+        the mesh it came from; with the optional compiled kernels
+        (:mod:`pentanb._jit`), on a large mesh, the edges are written from
+        the faces straight into uint32.
     """
     check_mesh(mesh, "mesh_buffers()")
     counts = _mesh.size_counts(mesh)  # (size, faces) by size, counted once per connectivity
     if not counts or counts[0][0] < 3:
         return buffers(drawing(mesh))
     sizes = mesh.face_sizes
-    n = mesh.n_vertices
+    corners = mesh.corners
+    _addressable(len(corners))
     low, high = counts[0][0], counts[-1][0]
     table = _bytes(face_rgb(np.arange(low, high + 1)))
-    present = np.array([size - low for size, _ in counts])  # ascending
-    copies = len(present)
-    triangles = len(mesh.corners) - 2 * mesh.n_faces
-    jit = _jit.kernels(len(mesh.corners))
-    if copies * n > 3 * triangles:  # more copies than triangle corners: rows per corner
-        v = mesh.vertices.astype(np.float32)  # a copy: the view's array, writeable
-        tri, tri_face = mesh.fan_triangles()
-        position = v.take(tri.reshape(-1), axis=0)
-        color = np.repeat(table[sizes[tri_face] - low], 3, axis=0)
-        index = _counting(len(position), 3)
+    v = mesh.vertices.astype(np.float32)  # a copy: the edges' array, writeable
+    position = v.take(corners, axis=0)  # a row per face corner
+    if len(counts) == 1:  # one size, one colour
+        color = _same_rows(table[0], len(corners))
     else:
-        # the vertices cast to float32 straight into every copy (the first
-        # copy is also the edges' array): the view's arrays, writeable
-        position = np.empty((copies, n, 3), np.float32)
-        position[:] = mesh.vertices  # (broadcast: every copy)
-        position = position.reshape(-1, 3)
-        v = position[:n]
-        if copies == 1:  # one size, one copy of the vertices
-            color = _same_rows(table[present[0]], n)
-        else:
-            rows = b"".join(table[p].tobytes() * n for p in present)
-            color = np.frombuffer(bytearray(rows), dtype=np.uint8).reshape(-1, 3)
-        _addressable(len(position))
-        slot = np.zeros(high - low + 1, np.int64)
-        slot[present] = np.arange(copies) * n
-        if jit is not None:  # (a k-gon's rows are shifted by slot[k - low])
-            index = jit.fan_index(mesh.corners, mesh.offsets, slot if copies > 1 else slot[:0], low)
-        else:
-            tri, tri_face = mesh.fan_triangles()
-            if copies > 1:
-                tri = tri + slot[sizes[tri_face] - low][:, None]
-            index = tri.astype(np.uint32).reshape(-1)
+        color = np.repeat(table[sizes - low], sizes, axis=0)
+    tri, tri_face = mesh.fan_triangles()
+    normals = polygon_normals(mesh.vertices, tri, tri_face, mesh.n_faces).astype(np.float32)
+    normal = np.repeat(normals, sizes, axis=0)
+    rows, _ = fan_triangle_corners(mesh.offsets)  # the same fan, as corner rows
+    index = rows.astype(np.uint32).reshape(-1)
+    jit = _jit.kernels(len(corners))
     if jit is not None:
         edge_index = jit.edge_index(mesh.corners, mesh.offsets)
     else:
         edge_index = mesh.edges.astype(np.uint32).reshape(-1)
+    boundary, n_boundary = _boundary_rows(
+        boundary_segments(mesh) if not mesh.is_closed else None, v[:1]
+    )
     return Buffers(
         position=position,
         color=color,
         index=index,
         edge_position=v,
-        edge_color=_rows(None, EDGE_COLOR, n, 1),
+        edge_color=_rows(None, EDGE_COLOR, mesh.n_vertices, 1),
         edge_index=edge_index,
         point_position=v[:1].copy(),
         point_color=np.zeros((1, 3), np.uint8),
         edge_count=len(edge_index) // 2,
         point_count=0,
+        normal=normal,
+        boundary_position=boundary,
+        boundary_count=n_boundary,
     )
 
 
@@ -545,11 +734,12 @@ def framed(obj: Mesh | Drawing, frame: Frame) -> Mesh | Drawing:
         vertices=in_frame(obj.vertices, frame),
         segments=in_frame(obj.segments, frame),
         points=None if obj.points is None else in_frame(obj.points, frame),
+        boundary=None if obj.boundary is None else in_frame(obj.boundary, frame),
     )
 
 
 def camera_fit(
-    points: ArrayLike, fov: float, aspect: float
+    points: ArrayLike, fov: float, aspect: float, direction: ArrayLike | None = None
 ) -> tuple[NDArray[np.float64], float, NDArray[np.float64]]:
     """A camera that shows every point.
 
@@ -560,6 +750,10 @@ def camera_fit(
         Vertical field of view, degrees.
     aspect : float
         Width / height of the picture.
+    direction : (3,) float, optional
+        From the model towards the camera (any length but 0); default
+        :func:`eye_direction` of :data:`VIEW_ELEV`, :data:`VIEW_AZIM`: from
+        the front (+x), a little to the right (-y) and above (+z).
 
     Returns
     -------
@@ -568,12 +762,24 @@ def camera_fit(
     radius : float
         Radius of the bounding sphere about ``centre``.
     eye : (3,) float
-        Camera position: from the side (0.9, 0.6, 1.1), far enough for the
+        Camera position: ``centre`` plus ``direction``, far enough for the
         sphere to fit in both fields of view, with a 15 % margin.
+
+    Raises
+    ------
+    ValueError
+        A ``direction`` that is not three finite numbers, not all 0.
     """
+    toward = eye_direction() if direction is None else np.asarray(direction, dtype=np.float64)
+    size = float(np.linalg.norm(toward)) if toward.shape == (3,) else 0.0
+    if not (math.isfinite(size) and size > 0):
+        raise ValueError(
+            f"a camera direction is three finite numbers, not all 0, got {direction!r}"
+        )
+    toward = toward / size
     p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     if len(p) == 0:
-        return np.zeros(3), 1.0, np.array([0.0, 0.0, 4.0])
+        return np.zeros(3), 1.0, 4.0 * toward
     lo, hi = p.min(axis=0), p.max(axis=0)
     centre = (lo + hi) / 2
     radius = float(np.sqrt(((p - centre) ** 2).sum(axis=1).max())) or 1.0
@@ -581,9 +787,7 @@ def camera_fit(
     if aspect < 1:  # narrow view: the horizontal field of view limits
         half = math.atan(math.tan(half) * aspect)
     distance = radius / math.sin(half) * 1.15
-    direction = np.array([0.9, 0.6, 1.1])
-    direction /= np.linalg.norm(direction)
-    return centre, radius, centre + distance * direction
+    return centre, radius, centre + distance * toward
 
 
 def look_at_quaternion(

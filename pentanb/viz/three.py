@@ -54,14 +54,20 @@ import pythreejs as P3
 
 from .. import _checks
 from ..mesh import Mesh
+from .colors import BOUNDARY_COLOR
 from .drawing import (
+    BOUNDARY_WIDTH,
     IDENTITY,
+    VIEW_AZIM,
+    VIEW_ELEV,
     Buffers,
     Drawing,
     Frame,
     as_drawing,
     buffers,
     camera_fit,
+    edge_opacity,
+    eye_direction,
     frame_fits,
     framed,
     in_frame,
@@ -186,15 +192,27 @@ def _set_array(attribute, array) -> None:
         attribute.version = next(_VERSIONS) << 20
 
 
-def _replace(position, new_position, color, new_color, index=None, new_index=None) -> None:
+def _replace(
+    position,
+    new_position,
+    color,
+    new_color,
+    index=None,
+    new_index=None,
+    normal=None,
+    new_normal=None,
+) -> None:
     """Replace a geometry's arrays so that nothing drawn outruns the rows it reads.
 
-    Growing, the colours go first, then the positions, then the index (if
-    the geometry has one); shrinking, the index first, then the positions,
-    then the colours: at no moment does the index point past the rows of
-    either attribute, nor the position buffer outrun the colour buffer.
+    Growing, the colours (and normals) go first, then the positions, then
+    the index (if the geometry has one); shrinking, the index first, then
+    the positions, then the colours: at no moment does the index point past
+    the rows of any attribute, nor the position buffer outrun another.
     """
-    steps = [(color, new_color), (position, new_position)]
+    steps = [(color, new_color)]
+    if normal is not None:
+        steps.append((normal, new_normal))
+    steps.append((position, new_position))
     if index is not None:
         steps.append((index, new_index))
     if len(new_position) < len(position.array):
@@ -205,6 +223,15 @@ def _replace(position, new_position, color, new_color, index=None, new_index=Non
 
 class MeshView(W.VBox):
     """A pythreejs view of a polygon mesh with a legend and an edge switch.
+
+    Every face is lit as one polygon (one normal per face, so a curved
+    pentagon shows no seams along its fan triangles); the edges fade on
+    large meshes (:func:`pentanb.viz.drawing.edge_opacity`: fully drawn up
+    to 2,000 faces, about a third as opaque at 20,000); the boundary of an
+    open mesh is drawn in :data:`pentanb.viz.colors.BOUNDARY_COLOR`, 3
+    pixels wide, whether the edges are shown or not; the camera looks from
+    ``elev``, ``azim`` (default: the matplotlib figures' view, from the
+    front and a little above, +z up).
 
     Build it with :func:`view`.  Attributes give the widgets inside, for
     tests and for building larger panels:
@@ -217,6 +244,14 @@ class MeshView(W.VBox):
     face_geometry, edge_geometry, point_geometry : pythreejs.BufferGeometry
         Their ``attributes`` are updated in place.
     faces, edges, points : pythreejs.Mesh, LineSegments, Points
+    edge_material : pythreejs.LineBasicMaterial
+        Its ``opacity`` is :func:`pentanb.viz.drawing.edge_opacity` of the
+        number of faces shown.
+    boundary_geometry : pythreejs.LineSegmentsGeometry
+    boundary : pythreejs.LineSegments2
+        The boundary's edges, wide (hidden for a closed mesh).
+    elev, azim : float
+        Where the camera looks from when fitted (degrees, +z up).
     wireframe : ipywidgets.Checkbox
         Shows or hides the edges (linked in the browser, so it works in an
         exported page too).
@@ -230,11 +265,12 @@ class MeshView(W.VBox):
     Raises
     ------
     TypeError
-        ``width`` or ``height`` not an integer, ``fov`` or ``point_size`` not
-        a number (the message names it).
+        ``width`` or ``height`` not an integer, ``fov``, ``point_size``,
+        ``elev`` or ``azim`` not a number (the message names it).
     ValueError
         ``width`` or ``height`` outside ``[1, MAX_PIXELS]``, ``fov`` outside
-        (0, 180), ``point_size`` not positive.
+        (0, 180), ``point_size`` not positive, ``elev`` outside [-90, 90],
+        ``azim`` outside [-360, 360].
     """
 
     def __init__(
@@ -252,10 +288,14 @@ class MeshView(W.VBox):
         camera: P3.PerspectiveCamera | None = None,
         target: tuple | None = None,
         frame: Frame | None = None,
+        elev: float = VIEW_ELEV,
+        azim: float = VIEW_AZIM,
     ):
         width = _checks.count(width, "width", 1, MAX_PIXELS)
         height = _checks.count(height, "height", 1, MAX_PIXELS)
         fov = _checks.number(fov, "fov", 0.0, 180.0, open_low=True, open_high=True)
+        self.elev = _checks.number(elev, "elev", -90.0, 90.0)
+        self.azim = _checks.number(azim, "azim", -360.0, 360.0)
         if point_size is not None:
             point_size = _checks.number(point_size, "point_size", 0.0, open_low=True)
         self._mesh: Mesh | None = None
@@ -273,12 +313,15 @@ class MeshView(W.VBox):
             attributes={
                 "position": attr(b.position),
                 "color": attr(b.color),
+                "normal": attr(b.normal),
                 "index": attr(b.index),
             },
         )
+        # one normal per polygon on all its rows (not flatShading, which lights
+        # every fan triangle by its own plane: seams across a curved pentagon)
         self.face_material = P3.MeshPhongMaterial(
             vertexColors="VertexColors",
-            flatShading=True,
+            flatShading=False,
             side="DoubleSide",
             shininess=1,
             specular="#000000",
@@ -298,11 +341,26 @@ class MeshView(W.VBox):
                 "index": attr(b.edge_index),
             }
         )
+        opacity = edge_opacity(self._n_faces())
+        self.edge_material = P3.LineBasicMaterial(
+            vertexColors="VertexColors", transparent=opacity < 1.0, opacity=opacity
+        )
         self.edges = P3.LineSegments(
             self.edge_geometry,
-            P3.LineBasicMaterial(vertexColors="VertexColors"),
+            self.edge_material,
             frustumCulled=False,
             visible=bool(edges and b.edge_count),
+        )
+
+        # WebGL draws lines 1 pixel wide: the boundary is a LineSegments2 (quads
+        # facing the camera), BOUNDARY_WIDTH pixels wide
+        self.boundary_geometry = P3.LineSegmentsGeometry(positions=b.boundary_position)
+        self.boundary_material = P3.LineMaterial(color=BOUNDARY_COLOR, linewidth=BOUNDARY_WIDTH)
+        self.boundary = P3.LineSegments2(
+            self.boundary_geometry,
+            self.boundary_material,
+            frustumCulled=False,
+            visible=bool(b.boundary_count),
         )
 
         self.point_geometry = P3.BufferGeometry(
@@ -319,14 +377,14 @@ class MeshView(W.VBox):
         )
 
         aspect = width / height
-        centre, radius, position = camera_fit(self._points(), fov, aspect)
+        centre, radius, position = camera_fit(self._points(), fov, aspect, self.direction)
         # a hemisphere light riding on the camera: faces turned to the reader
         # are lit, faces turned away darker (lights with shadows, such as
         # PointLight and DirectionalLight, print "Error setting state" in
         # JupyterLab 4)
         self.headlight = P3.HemisphereLight(color="#ffffff", groundColor="#202020", intensity=0.6)
         self.ambient = P3.AmbientLight(color="#ffffff", intensity=0.45)
-        objects = [self.faces, self.edges, self.points, self.ambient]
+        objects = [self.faces, self.edges, self.boundary, self.points, self.ambient]
         if camera is None:
             self.camera = P3.PerspectiveCamera(
                 position=tuple(float(c) for c in position),
@@ -384,6 +442,16 @@ class MeshView(W.VBox):
         self.add_class("pentanb-view")
 
     # -- data ---------------------------------------------------------------
+    @property
+    def direction(self) -> np.ndarray:
+        """(3,) float: the unit vector from the model towards the camera when it is
+        fitted (:func:`pentanb.viz.drawing.eye_direction` of ``elev``, ``azim``)."""
+        return eye_direction(self.elev, self.azim)
+
+    def _n_faces(self) -> int:
+        """Number of faces shown (the edges fade with it)."""
+        return self._mesh.n_faces if self._mesh is not None else self.drawing.n_faces
+
     @property
     def mesh(self) -> Mesh | None:
         """The mesh shown (None when showing a step-through drawing)."""
@@ -469,7 +537,16 @@ class MeshView(W.VBox):
         # the index says which rows are drawn, the position buffer how many
         # points are: never let either outrun the arrays it reads, not even
         # between two messages
-        _replace(fa["position"], b.position, fa["color"], b.color, fa["index"], b.index)
+        _replace(
+            fa["position"],
+            b.position,
+            fa["color"],
+            b.color,
+            fa["index"],
+            b.index,
+            fa["normal"],
+            b.normal,
+        )
         _replace(
             ea["position"], b.edge_position, ea["color"], b.edge_color, ea["index"], b.edge_index
         )
@@ -480,10 +557,19 @@ class MeshView(W.VBox):
         self.points.visible = bool(b.point_count)
         self._edges_present = bool(b.edge_count)
         self.edges.visible = bool(self.wireframe.value and b.edge_count)
+        opacity = edge_opacity(self._n_faces())
+        with self.edge_material.hold_sync():
+            self.edge_material.opacity = opacity
+            self.edge_material.transparent = opacity < 1.0
+        if b.boundary_count or self.boundary.visible:
+            self.boundary_geometry.positions = b.boundary_position
+        self.boundary.visible = bool(b.boundary_count)
 
     def fit_camera(self) -> None:
         """Point the camera at the whole drawing again."""
-        centre, radius, position = camera_fit(self._points(), self.camera.fov, self.camera.aspect)
+        centre, radius, position = camera_fit(
+            self._points(), self.camera.fov, self.camera.aspect, self.direction
+        )
         with self.renderer.hold():
             self.camera.near = radius / 100
             self.camera.far = radius * 100
@@ -518,6 +604,8 @@ class MeshView(W.VBox):
             background=r.background,
             fov=self.camera.fov,
             point_size=self._point_size,
+            elev=self.elev,
+            azim=self.azim,
         )
         opts.update(kwargs)
         shown = self._mesh if self._mesh is not None else self.drawing
@@ -532,12 +620,17 @@ def view(
     edges: bool = True,
     legend: bool = True,
     background: str = "#ffffff",
+    elev: float = VIEW_ELEV,
+    azim: float = VIEW_AZIM,
 ) -> MeshView:
     """An interactive 3D view of a mesh (pythreejs, orbit controls).
 
-    Faces are flat shaded and coloured by their number of sides, with the
-    colours of the matplotlib figures and a legend; the edges are drawn as a
-    wireframe with a check box to hide them; the camera is fitted to the mesh.
+    Faces are coloured by their number of sides, with the colours of the
+    matplotlib figures and a legend, each lit as one polygon; the edges are
+    drawn as a wireframe with a check box to hide them, fainter on large
+    meshes; an open mesh's boundary is drawn wide and dark; the camera is
+    fitted to the mesh, looking from the front and a little above (+z up)
+    unless ``elev`` and ``azim`` say otherwise.
 
     Parameters
     ----------
@@ -550,6 +643,10 @@ def view(
         Show the colour legend and the counts V, E, F under the picture.
     background : str
         CSS colour behind the mesh.
+    elev, azim : float
+        Where the camera looks from, in degrees (matplotlib's ``view_init``
+        conventions, +z up): default :data:`pentanb.viz.drawing.VIEW_ELEV`,
+        :data:`~pentanb.viz.drawing.VIEW_AZIM`, the figures' view.
 
     Returns
     -------
@@ -563,7 +660,14 @@ def view(
     >>> pentanb.view(pentanb.pentagonalize(pentanb.shapes.cube()))  # doctest: +SKIP
     """
     return MeshView(
-        mesh, width=width, height=height, edges=edges, legend=legend, background=background
+        mesh,
+        width=width,
+        height=height,
+        edges=edges,
+        legend=legend,
+        background=background,
+        elev=elev,
+        azim=azim,
     )
 
 
@@ -627,7 +731,7 @@ def slider_stack(
     target = tuple(like.controls.target)
     if frame is not like.frame:
         drawn = np.concatenate([in_frame(p, frame).reshape(-1, 3) for p in points])
-        centre, radius, eye = camera_fit(drawn, cam.fov, cam.aspect)
+        centre, radius, eye = camera_fit(drawn, cam.fov, cam.aspect, like.direction)
         target = tuple(float(c) for c in centre)
         camera.position = tuple(float(c) for c in eye)
         camera.quaternion = look_at_quaternion(eye, centre)
