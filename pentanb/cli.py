@@ -1,4 +1,4 @@
-"""The command line: ``python -m pentanb [demo | figures --out DIR | docs]``.
+"""The command line: ``python -m pentanb [demo | figures --out DIR | docs | classroom OUT_DIR]``.
 
 ``demo`` (the default) runs every scheme of :data:`pentanb.SCHEMES` on the
 Platonic solids and a torus and prints V, E, F, face sizes and valences.
@@ -172,6 +172,21 @@ def _docs(args) -> int:
     return status
 
 
+def _classroom(args) -> int:
+    """Write the students' notebooks (the solution cells removed) into a folder."""
+    from .classroom import student_version
+
+    try:
+        written = student_version(args.out_dir)
+    except (ImportError, ValueError, OSError) as exc:
+        print(f"pentanb classroom: {exc}", file=sys.stderr)
+        return 2
+    for path in written:
+        print(path)
+    print(f"{len(written)} notebooks without their solutions in {args.out_dir}", file=sys.stderr)
+    return 0
+
+
 def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="pentanb",
@@ -201,6 +216,11 @@ def _parser() -> argparse.ArgumentParser:
     s.add_argument("--out", help="output folder (default: docs/_build/html)")
     s.add_argument("--force", action="store_true", help="execute every notebook again")
     s.set_defaults(func=_docs)
+    c = sub.add_parser(
+        "classroom", help="write the students' notebooks: the teacher's without the solutions"
+    )
+    c.add_argument("out_dir", metavar="OUT_DIR", help="folder for the students' notebooks")
+    c.set_defaults(func=_classroom)
     return p
 
 
