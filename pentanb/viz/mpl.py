@@ -5,7 +5,15 @@ Every face is one polygon of a :class:`~mpl_toolkits.mplot3d.art3d.Poly3DCollect
 :func:`pentanb.viz.colors.face_rgb` and shaded with a Lambert term from its
 normal, so that a pentagon is the same green here as in the pythreejs views.
 Polygons are built with whole-array indexing (``vertices[corners]``), so a
-mesh of ten thousand faces draws in well under a second.
+mesh of ten thousand faces draws in well under a second.  The boundary of an
+open mesh is drawn heavier: a band along it in
+:data:`pentanb.viz.colors.BOUNDARY_COLOR`, :data:`BOUNDARY_BAND` of the
+mesh's size wide, on the hole's side of every boundary edge, in the face's
+plane (:func:`boundary_band`).  The bands are polygons of the same collection
+as the faces, so mplot3d sorts them by depth with the faces (a boundary
+behind the surface stays hidden; a line collection would be drawn wholly
+in front of the faces or wholly behind them), and the legend names the
+boundary.  A closed mesh is drawn as before.
 
 Nothing here uses :mod:`matplotlib.pyplot`: figures are plain
 :class:`matplotlib.figure.Figure` objects (no global state, nothing to close),
@@ -30,7 +38,9 @@ from typing import Any
 import matplotlib
 import numpy as np
 from matplotlib.collections import LineCollection, PolyCollection
+from matplotlib.colors import to_rgba
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
@@ -38,7 +48,7 @@ from numpy.typing import ArrayLike
 
 from .. import _checks
 from ..mesh import Mesh
-from .colors import EDGE_COLOR, face_color, face_label, face_rgb
+from .colors import BOUNDARY_COLOR, EDGE_COLOR, face_color, face_label, face_rgb
 
 __all__ = [
     "draw_mesh",
@@ -53,6 +63,7 @@ __all__ = [
     "shaded_colors",
     "view_direction",
     "fit_view",
+    "boundary_band",
     "save_figure",
     "style",
     "DPI",
@@ -68,6 +79,9 @@ ELEV, AZIM = 22.0, -58.0
 AMBIENT = 0.42
 #: Share of the key light in the Lambert term (the rest is a headlight).
 KEY = 0.62
+#: Width of the band drawn along a boundary, as a share of the mesh's size
+#: (the largest side of its bounding box).
+BOUNDARY_BAND = 0.012
 
 #: rcParams every figure is built and saved with, on top of matplotlib's
 #: defaults, so that a user's matplotlibrc does not change the images.
@@ -219,6 +233,44 @@ def _edge_width(n_faces: int) -> float:
     return float(np.clip(0.9 * np.sqrt(150.0 / max(n_faces, 1)), 0.12, 0.9))
 
 
+def boundary_band(
+    mesh: Mesh, faces: ArrayLike | None = None, width: float | None = None
+) -> np.ndarray:
+    """The band :func:`draw_mesh` draws along a mesh's boundary: one quad per edge.
+
+    Each boundary edge ``a -> b`` (its face on the left) gets the quad
+    ``a, b, b + w u, a + w u``, ``u`` the unit vector in its face's plane
+    at right angles to the edge, pointing away from the face (into the
+    hole), so the band borders the surface without covering it.
+
+    Parameters
+    ----------
+    mesh : Mesh
+    faces : (k,) int, optional
+        Only the boundary edges of these faces (default: all).
+    width : float, optional
+        ``w``; default :data:`BOUNDARY_BAND` times the largest side of the
+        mesh's bounding box.
+
+    Returns
+    -------
+    (B, 4, 3) float
+        Empty (B = 0) for a closed mesh.
+    """
+    bh = mesh.boundary_halfedges
+    if faces is not None:
+        bh = bh[np.isin(mesh.halfedge_face[bh], np.asarray(faces))]
+    if width is None:
+        v = mesh.vertices
+        width = BOUNDARY_BAND * float((v.max(axis=0) - v.min(axis=0)).max()) if len(v) else 0.0
+    a = mesh.vertices[mesh.corners[bh]]
+    b = mesh.vertices[mesh.head[bh]]
+    out = np.cross(b - a, mesh.face_normals[mesh.halfedge_face[bh]])
+    length = np.linalg.norm(out, axis=1)
+    out = out / np.where(length > 0, length, 1.0)[:, None] * float(width)
+    return np.stack([a, b, b + out, a + out], axis=1)
+
+
 # ---------------------------------------------------------------------- drawing
 def draw_mesh(
     ax,
@@ -241,7 +293,9 @@ def draw_mesh(
     ax : mpl_toolkits.mplot3d.Axes3D
     mesh : Mesh
     wireframe : bool
-        Draw the edges (in :data:`pentanb.viz.colors.EDGE_COLOR`).
+        Draw the edges (in :data:`pentanb.viz.colors.EDGE_COLOR`).  The
+        boundary of an open mesh is drawn in any case, as a dark band
+        (:func:`boundary_band`).
     shade : bool
         Lambert shading from the face normals (:func:`shaded_colors`).
     title : str, optional
@@ -264,12 +318,26 @@ def draw_mesh(
     colors = shaded_colors(mesh, elev, azim, shade=shade, faces=faces)
     n = len(polys)
     lw = _edge_width(n) if edge_width is None else edge_width
-    coll = Poly3DCollection(
-        polys,
-        facecolors=colors,
-        edgecolors=EDGE_COLOR if wireframe else colors,
-        linewidths=lw if wireframe else 0.15,
-    )
+    rim = None if mesh.is_closed else boundary_band(mesh, faces)
+    if rim is None or not len(rim):
+        coll = Poly3DCollection(
+            polys,
+            facecolors=colors,
+            edgecolors=EDGE_COLOR if wireframe else colors,
+            linewidths=lw if wireframe else 0.15,
+        )
+    else:
+        # the band's quads in the same collection, sorted by depth with the
+        # faces (mplot3d sorts colours with the polygons, one line width for all)
+        dark = np.tile(to_rgba(BOUNDARY_COLOR), (len(rim), 1))
+        face_rgba = np.concatenate([colors, np.ones((n, 1))], axis=1)
+        edge_rgba = np.tile(to_rgba(EDGE_COLOR), (n, 1)) if wireframe else face_rgba
+        coll = Poly3DCollection(
+            list(polys) + list(rim),
+            facecolors=np.concatenate([face_rgba, dark]),
+            edgecolors=np.concatenate([edge_rgba, dark]),
+            linewidths=lw if wireframe else 0.15,
+        )
     coll.set_clip_on(False)  # mplot3d's square may be narrower than a wide panel
     _add_without_autoscale(ax, coll)
     ax.view_init(elev=elev, azim=azim)
@@ -442,8 +510,9 @@ def add_face_legend(
     loc: str | None = None,
     ncol: int | None = None,
     title: str | None = "faces by number of sides",
+    boundary: bool | None = None,
 ):
-    """A legend of the face-size colours.
+    """A legend of the face-size colours (and of the boundary, for open meshes).
 
     Parameters
     ----------
@@ -455,12 +524,22 @@ def add_face_legend(
         Legend location (default "lower center" for a figure, "best" for axes).
     ncol : int, optional
         Columns (default: one row).
+    boundary : bool, optional
+        Add a "boundary" entry (a heavy line); default: when ``sizes``
+        holds a mesh that is open.
 
     Returns
     -------
     matplotlib.legend.Legend
     """
+    if not isinstance(sizes, (Mesh, Mapping)):
+        sizes = list(sizes)  # (read twice)
     present = _sizes_of(sizes)
+    if boundary is None:
+        meshes = [sizes] if isinstance(sizes, Mesh) else []
+        if not isinstance(sizes, (Mesh, Mapping)):
+            meshes = [m for m in sizes if isinstance(m, Mesh)]
+        boundary = any(not m.is_closed for m in meshes)
     handles = [
         Patch(
             facecolor=face_color(n),
@@ -470,6 +549,8 @@ def add_face_legend(
         )
         for n in present
     ]
+    if boundary:
+        handles.append(Line2D([], [], color=BOUNDARY_COLOR, linewidth=3.0, label="boundary"))
     options: dict[str, Any] = {
         "ncol": len(handles) if ncol is None else ncol,
         "frameon": False,
