@@ -314,7 +314,7 @@ _LIST = [
         classic.sqrt3_remesh,
         "sqrt(3) remeshing",
         "Section 3",
-        None,
+        "needle",
         # the boundary kept: a triangle (u, w, c_f) on every boundary half-edge
         # (which gives a corner a second face)
         open_counts=lambda V, E, F, B, C: (V + F, 3 * E - B, 2 * E - B, B, 0),
