@@ -951,6 +951,45 @@ def test_claim_scale_recommended_fails_on_scales_below_the_threshold(scale_data)
     )
 
 
+# ============================================================ open surfaces (observations)
+@pytest.fixture(scope="module")
+def open_data():
+    from pentanb.figures import open_surfaces
+
+    return open_surfaces.study(levels=2)
+
+
+@falsifies("open_surfaces.turning.smoothed", "open_surfaces.turning.unsmoothed")
+def test_claim_open_surfaces_turning_fails_on_the_duals_swapped(open_data):
+    # the meshes without duals filed as smoothed and the other way round: the
+    # largest turning angle stays (no fall) and falls (no longer the input's)
+    from pentanb.figures import open_surfaces
+
+    swapped = {(s, 2 - d): ms for (s, d), ms in open_data.items()}
+    good = {c.key: c for c in open_surfaces.claims(data=open_data)}
+    assert not any(c.regressed for c in good.values())
+    leaves(
+        open_surfaces.claims(data=swapped),
+        "open_surfaces.turning.smoothed",
+        "open_surfaces.turning.unsmoothed",
+    )
+
+
+@falsifies("open_surfaces.pentagonalize.faces", "open_surfaces.preserve.non_pentagons")
+def test_claim_open_surfaces_faces_fails_on_the_schemes_swapped(open_data):
+    # pentagon preservation filed as pentagonalization keeps triangles and quads
+    # inside; pentagonalization filed as preservation has no non-pentagon left
+    from pentanb.figures import open_surfaces
+
+    other = {"pentagonalize": "preserve_pentagons", "preserve_pentagons": "pentagonalize"}
+    swapped = {(other[s], d): ms for (s, d), ms in open_data.items()}
+    leaves(
+        open_surfaces.claims(data=swapped),
+        "open_surfaces.pentagonalize.faces",
+        "open_surfaces.preserve.non_pentagons",
+    )
+
+
 # ====================================================================== schemes
 @falsifies(*[f"schemes.{name}" for name in formulas.PAPER])
 def test_claim_schemes_fails_on_another_schemes_output():

@@ -41,6 +41,7 @@ from . import (
     fig13,
     formulas,
     lateral,
+    open_surfaces,
     scale,
     section4,
     spectra,
@@ -134,6 +135,7 @@ FIGURES: dict[str, FigureSpec] = {
     "spectra": _spec("spectra", spectra),
     "characteristic_maps": _spec("characteristic_maps", characteristic_maps),
     "scale": _spec("scale", scale),
+    "open_surfaces": _spec("open_surfaces", open_surfaces),
 }
 
 

@@ -540,7 +540,7 @@ def add_face_legend(
         if not isinstance(sizes, (Mesh, Mapping)):
             meshes = [m for m in sizes if isinstance(m, Mesh)]
         boundary = any(not m.is_closed for m in meshes)
-    handles = [
+    handles: list[Patch | Line2D] = [
         Patch(
             facecolor=face_color(n),
             edgecolor=EDGE_COLOR,
