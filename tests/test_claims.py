@@ -900,6 +900,18 @@ def test_continuity_claims_without_rows_do_not_hold():
     assert "3: no row" in empty[0].measured
 
 
+# ====================================================================== boundary (observation)
+@falsifies("boundary.curve")
+def test_claim_boundary_curve_fails_on_the_boundary_without_duals():
+    # no duals: the boundary is the refined polygon itself, piecewise linear, not C1
+    from pentanb.analysis import boundary_table
+    from pentanb.figures import boundary_curve
+
+    rows = boundary_table(boundary_curve.SCHEMES, duals=0, interior=())
+    by_key = leaves(boundary_curve.boundary_claims(rows), "boundary.curve")
+    assert "not C1" in by_key["boundary.curve"].measured
+
+
 # ====================================================================== scale (observations)
 @pytest.fixture(scope="module")
 def scale_data():

@@ -24,6 +24,7 @@ import numpy as np
 
 from ..mesh import Mesh
 from . import (
+    boundary_curve,
     characteristic_maps,
     convergence,
     fig01,
@@ -283,7 +284,8 @@ def render_all(
 
 def check_all(names: Iterable[int | str] | None = None) -> dict[str, list[Claim]]:
     """``{figure name: claims}`` for every figure (or ``names``), then ``"schemes"``
-    (:func:`~pentanb.figures.scheme_claims`).
+    (:func:`~pentanb.figures.scheme_claims`) and ``"boundary"`` (the boundary curve of
+    open meshes, :func:`pentanb.figures.boundary_curve.boundary_claims`).
 
     Parameters
     ----------
@@ -294,11 +296,12 @@ def check_all(names: Iterable[int | str] | None = None) -> dict[str, list[Claim]
     -------
     dict
         ``{figure name: list of Claim}``, in the order asked, then
-        ``"schemes"``: :func:`~pentanb.figures.scheme_claims`.
+        ``"schemes"``: :func:`~pentanb.figures.scheme_claims`, then ``"boundary"``.
     """
     keys = list(FIGURES) if names is None else [get(n).name for n in names]
     out = {k: FIGURES[k].claims() for k in keys}
     out["schemes"] = formulas.scheme_claims()
+    out["boundary"] = boundary_curve.boundary_claims()
     return out
 
 
@@ -318,4 +321,5 @@ def report(results: Mapping[str, list[Claim]]) -> str:
     """
     titles = {name: spec.title for name, spec in FIGURES.items()}
     titles["schemes"] = formulas.TITLE
+    titles["boundary"] = boundary_curve.TITLE
     return format_report(results, titles)
