@@ -21,6 +21,10 @@ measured in this run, as a ratio or a per-face figure with its target:
 5. reading and writing OBJ and OFF files of 1,000,000 triangles against
    trimesh's ``export`` and ``load`` (at most 1.0x), and the peak memory while
    reading over the size of the arrays read (at most 3x);
+6. open meshes: the paper's two schemes + two duals, from raw arrays, on a
+   planar grid of 1,000,000 quads with 500 square holes (24,200 boundary
+   edges, 501 boundary loops) against a closed torus grid of 1,000,000 quads,
+   time per face, open over closed (at most 1.25x);
 
 When numba is installed (``pip install -e .[jit]``), the rows of 2., 3. and
 4.'s time ratio are measured twice, alternating run by run: the numpy path
@@ -664,6 +668,69 @@ def io_rows(table: Table, runs: int, clock) -> dict:
     return out
 
 
+def holed_grid(nx: int = 1050, ny: int = 1000, holes=(25, 20), size: int = 10):
+    """A planar grid of nx x ny quads with ``holes[0] x holes[1]`` square holes of
+    ``size`` x ``size`` quads, spread evenly (an open mesh; raw arrays)."""
+    xs, ys = np.meshgrid(np.arange(nx + 1.0), np.arange(ny + 1.0), indexing="ij")
+    v = np.stack([xs.ravel(), ys.ravel(), 0.01 * np.sin(xs.ravel() / 7.0)], axis=1)
+    i, j = np.meshgrid(np.arange(nx), np.arange(ny), indexing="ij")
+    keep = np.ones((nx, ny), dtype=bool)
+    px, py = nx // holes[0], ny // holes[1]
+    for a in range(holes[0]):
+        for b in range(holes[1]):
+            x0, y0 = a * px + (px - size) // 2, b * py + (py - size) // 2
+            keep[x0 : x0 + size, y0 : y0 + size] = False
+    i, j = i[keep], j[keep]
+    a = i * (ny + 1) + j
+    f = np.stack([a, a + ny + 1, a + ny + 2, a + 1], axis=1)
+    used, f = np.unique(f, return_inverse=True)  # the vertices inside the holes left out
+    return np.ascontiguousarray(v[used]), f.reshape(-1, 4)
+
+
+def torus_quads(n: int, m: int) -> tuple[np.ndarray, np.ndarray]:
+    """A closed torus grid of n x m quads."""
+    v, f = torus_triangles(n, m)
+    # the triangles (a, b, c), (a, c, d) of every quad, merged back
+    return v, np.stack([f[0::2, 0], f[0::2, 1], f[0::2, 2], f[1::2, 2]], axis=1)
+
+
+def open_rows(table: Table, runs: int, clock) -> dict:
+    """Target 6: the paper's two schemes + two duals on an open mesh against a closed one."""
+    vo, fo = holed_grid()
+    vc, fc = torus_quads(1000, 1000)
+    assert len(fo) == len(fc) == 1_000_000
+    m = pb.Mesh(vo, fo)
+    assert not m.is_closed and pb.Mesh(vc, fc).is_closed
+    print(
+        f"\nopen against closed, 1,000,000 quads: a grid with {m.n_boundary_loops - 1} holes "
+        f"({m.n_boundary_edges:,} boundary edges) and a torus; from raw arrays"
+    )
+    sec = "open meshes (1,000,000 quads)"
+    out = {}
+    for name in ("pentagonalize", "preserve_pentagons"):
+        t = alternate(
+            {
+                "open": lambda name=name: pb.subdivide(pb.Mesh(vo, fo), name, 1, 2),
+                "closed": lambda name=name: pb.subdivide(pb.Mesh(vc, fc), name, 1, 2),
+            },
+            runs,
+            clock,
+        )
+        po, pc = median(t["open"]) / len(fo), median(t["closed"]) / len(fc)
+        r = np.array(t["open"]) / np.array(t["closed"])
+        table.add(
+            sec,
+            f"6. {name} + 2 duals, open / closed, per face",
+            po / pc,
+            "x",
+            1.25,
+            note=f"{1e9 * po:,.0f} and {1e9 * pc:,.0f} ns per face; "
+            f"runs {r.min():.2f}-{r.max():.2f}",
+        )
+        out[name] = {k: [float(x) for x in xs] for k, xs in t.items()}
+    return out
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--runs", type=int, default=7, help="timed runs per case (median)")
@@ -681,7 +748,7 @@ def main(argv=None) -> int:
     ap.add_argument(
         "--only",
         nargs="*",
-        choices=["speed", "slider", "linear", "guard", "io"],
+        choices=["speed", "slider", "linear", "guard", "io", "open"],
         help="run only these sections",
     )
     ap.add_argument("--json", help="also write the measurements to this JSON file")
@@ -705,7 +772,7 @@ def main(argv=None) -> int:
         done["resident_peak"] = resident_peak()
         Path(args.linear_times).write_text(json.dumps(done))
         return 0
-    sections = set(args.only or ["speed", "slider", "linear", "guard", "io"])
+    sections = set(args.only or ["speed", "slider", "linear", "guard", "io", "open"])
     if args.quick:
         sections.discard("linear")
     print(
@@ -727,6 +794,8 @@ def main(argv=None) -> int:
         results["guard"] = guard(table)
     if "io" in sections:
         results["io"] = io_rows(table, max(3, args.runs // 2), clock)
+    if "open" in sections:
+        results["open"] = open_rows(table, max(5, args.runs), clock)
     if args.json:
         with open(args.json, "w") as fh:
             json.dump({"rows": table.rows, "runs": results}, fh, indent=2)
