@@ -355,7 +355,10 @@ def test_offline_html_works_without_network_or_kernel(kind, browser, artifacts, 
     from pentanb.viz.html import export_html
 
     widget = _offline_page(kind)
-    path = export_html(widget, tmp_path / f"{kind}.html", offline=True)
+    # an explorer's page: every control, within a smaller budget than the
+    # default (a quicker test); the logic is tested in tests/test_explorer.py
+    budget = {"max_bytes": 8_000_000} if kind == "explorer" else {}
+    path = export_html(widget, tmp_path / f"{kind}.html", offline=True, **budget)
     context = browser.new_context(offline=True, viewport={"width": 1000, "height": 1000})
     context.set_default_timeout(START_TIMEOUT * 1000)  # (playwright's own default: 30 s)
     page = context.new_page()
@@ -398,6 +401,15 @@ def test_offline_html_works_without_network_or_kernel(kind, browser, artifacts, 
         assert bs.changed(before, back) > 0.0005, (
             f"offline {kind}: the turned camera was not kept for the other step"
         )
+        if kind == "explorer":
+            # the shape drop-down chooses another shape without a kernel, and
+            # the values the budget left out are named on the page
+            assert page.locator(".pentanb-left-out").is_visible()
+            shape = page.locator(".widget-dropdown select").first
+            shape.select_option(index=0)  # the tetrahedron (the cube is shown)
+            other = _wait_change(page.locator(".jupyter-threejs >> visible=true").first, back)
+            page.screenshot(path=str(artifacts / f"offline-{kind}-3.png"))
+            assert other and bs.nonblank(other) > 0.01, "offline explorer: the shape did not change"
         network = [u for u in requests if not u.startswith(("file:", "data:", "blob:"))]
         assert not network, f"offline {kind}: the page asked the network for {network}"
         bad = _bad_console(messages)

@@ -247,6 +247,21 @@ def test_a_count_keeping_scheme_costs_every_level():
     e.close()
 
 
+@pytest.mark.parametrize("duals", [0, 2])
+def test_predicted_cost_of_an_open_mesh_counts_its_boundary(duals):
+    e = pentanb.explore(SQUARE, iterations=0, duals=duals)
+    e.seconds_per_face = 1.0
+    built, mesh = 0, SQUARE  # the faces of every step, built here one step at a time
+    for _ in range(2):
+        mesh = pentanb.subdivide(mesh, "pentagonalize", 1, 0)
+        built += mesh.n_faces
+        for _ in range(duals):
+            mesh = pentanb.dual(mesh)
+            built += mesh.n_faces
+    assert e.predicted_seconds(2) == built
+    e.close()
+
+
 @pytest.mark.parametrize("cost, shown", [(0.4 / 86, False), (0.6 / 86, True)])
 def test_the_bar_shows_from_the_start_over_half_a_second(cost, shown):
     e = pentanb.explore("cube", iterations=0)

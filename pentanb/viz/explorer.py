@@ -836,6 +836,8 @@ class Explorer(W.HBox):
     #: Bytes of a combination the page names in a line of text instead of
     #: drawing it, and of each selector (a Stack and its browser link).
     TEXT_BYTES = 600
+    #: A control stops taking values after this many in a row did not fit.
+    EXPORT_MISSES = 2
 
     def _candidates(self) -> dict[str, list]:
         """Every value of every control, nearest the current one first."""
@@ -879,10 +881,12 @@ class Explorer(W.HBox):
 
         Every control is kept.  Each starts with its current value; then,
         in turn (iterations, duals, scheme, shape, scale), each control is
-        given its next value, nearest the current one first (the shapes and
-        schemes in drop-down order), while the predicted size of every
-        combination of the values kept stays within ``max_bytes``.  A
-        control whose next value does not fit keeps the values it has.  A
+        offered its next value, nearest the current one first (the shapes
+        and schemes in drop-down order), taken when the predicted size of
+        every combination of the values kept stays within ``max_bytes``,
+        else left out; a control stops after :attr:`EXPORT_MISSES` values
+        in a row were left out (so a lower level can still come in after a
+        higher one did not fit).  A
         combination whose mesh has more than ``max_faces`` faces (or that
         the explorer refuses) is kept as a line of text saying so.  The
         meshes are built (or taken from the cache).
@@ -947,19 +951,21 @@ class Explorer(W.HBox):
         if not _any_scale(schemes):
             growing.remove("scale")
         position = dict.fromkeys(CONTROLS, 1)
+        misses = dict.fromkeys(CONTROLS, 0)
         while growing:
             for c in list(growing):
-                if position[c] >= len(candidates[c]):
+                if position[c] >= len(candidates[c]) or misses[c] >= self.EXPORT_MISSES:
                     growing.remove(c)
                     continue
                 trial = dict(kept)
                 trial[c] = kept[c] + [candidates[c][position[c]]]
+                position[c] += 1
                 t = cost(trial)
                 if t <= budget:
                     kept, total = trial, t
-                    position[c] += 1
-                else:
-                    growing.remove(c)
+                    misses[c] = 0
+                else:  # left out; a further value may still fit (a lower level)
+                    misses[c] += 1
         plan = plan_of(kept)
         plan.estimate = total
         plan.dropped = {c: [v for v in candidates[c] if v not in kept[c]] for c in CONTROLS}
