@@ -299,3 +299,25 @@ def test_boundary_spectrum_refuses_a_closed_mesh():
         boundary_spectrum("pentagonalize", mesh=shapes.cube())
     with pytest.raises(TypeError, match=r"pentanb\.Mesh"):
         boundary_spectrum("pentagonalize", mesh="cube")
+
+
+# ====================================================================== pairing the twins
+def reference_twins(tail, head) -> np.ndarray:
+    """The opposite of every half-edge by a dictionary of directed edges (-1: none)."""
+    where = {(int(t), int(h)): i for i, (t, h) in enumerate(zip(tail, head))}
+    return np.array([where.get((int(h), int(t)), -1) for t, h in zip(tail, head)])
+
+
+@pytest.mark.parametrize("mesh_name", list(OPEN))
+@pytest.mark.parametrize("n_extra", [0, 2**28])  # a vertex count that splits the keys in parts
+def test_pair_open_matches_a_dictionary_of_directed_edges(mesh_name, n_extra):
+    from pentanb.mesh.boundary import pair_open
+
+    m = OPEN[mesh_name]()
+    tail, head = np.asarray(m.corners), np.asarray(m.head)
+    twin = pair_open(tail, head, m.n_vertices + n_extra)
+    assert np.array_equal(twin, reference_twins(tail, head))
+    assert (twin < 0).sum() == m.n_boundary_edges
+    # a directed edge used twice, a half-edge from a vertex to itself: refused
+    assert pair_open(np.append(tail, tail[0]), np.append(head, head[0]), m.n_vertices) is None
+    assert pair_open(np.append(tail, 0), np.append(head, 0), m.n_vertices) is None
