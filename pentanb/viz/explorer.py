@@ -280,10 +280,13 @@ class Explorer(W.HBox):
     """
 
     #: Seconds of work per face built, every step counted: ``subdivide``
-    #: and the drawing of the result, measured at 70-270 ns per face with
-    #: and without the compiled kernels on a 2-core machine
-    #: (``benchmarks/bench_explorer.py``); 300 ns covers the slower path.
-    SECONDS_PER_FACE = 3e-7
+    #: and the drawing of the result, through the explorer's own path,
+    #: measured at 240-920 ns per face (median 470 ns) with and without the
+    #: compiled kernels, on meshes of 170,000 to 2,100,000 faces built, on
+    #: a busy 2-core machine (``benchmarks/bench_explorer.py``).  So a
+    #: request over half a second, some 800,000 faces built, shows the bar
+    #: from its start.
+    SECONDS_PER_FACE = 6e-7
     #: Predicted seconds over which a request shows the bar from its start.
     PROGRESS_SECONDS = 0.5
     #: Seconds after which a request predicted to be quicker shows it anyway.
