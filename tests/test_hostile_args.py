@@ -122,7 +122,7 @@ def test_subdivide_wrong_types_are_type_errors_as_in_the_explorer(cube, bad):
     with pytest.raises(TypeError, match=r"^iterations must be an integer"):
         pentanb.subdivide(cube, "pentagonalize", bad)
     with pytest.raises(TypeError, match=r"^iterations must be an integer"):
-        pentanb.explore(cube, iterations=bad)
+        pentanb.explore(cube, iterations=bad if bad is not None else "None")  # None: default
 
 
 @pytest.mark.parametrize("bad", [5, None, 2.5])

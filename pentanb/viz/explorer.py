@@ -628,7 +628,17 @@ class Explorer(W.HBox):
         for level, steps in self._levels(self.key(iterations)):
             yield level, max(steps, key=lambda c: c[2])
 
-    def _refuse_too_large(self, key: Key) -> None:
+    def _builds_at_least(self, faces: int) -> bool:
+        """Whether some step of the current request makes ``faces`` faces or more."""
+        base = self._base(self.shape.value)
+        return any(F >= faces for _, (_, _, F) in self._largest_steps(base, self.iterations.value))
+
+    def _refuse_too_large(self, base: Mesh, iterations: int) -> None:
+        """MeshError when the current settings at ``iterations`` pass ``max_faces``
+        (``base``: the current shape's mesh)."""
+        self._refuse_key(self.key(iterations))
+
+    def _refuse_key(self, key: Key) -> None:
         """MeshError when the mesh or any step up to the key's level passes ``max_faces``.
 
         Level by level from the counts, stopping at the first step too
@@ -719,7 +729,7 @@ class Explorer(W.HBox):
         if key in self._cache:
             self._cache.move_to_end(key)
             return self._cache[key]
-        self._refuse_too_large(key)
+        self._refuse_key(key)
         _, scheme, duals, opts, it = key
         start, mesh = self._deepest_cached(key)
         total = (it - start) * (1 + duals)
@@ -784,7 +794,7 @@ class Explorer(W.HBox):
         settings = self._settings()
         try:
             if self.predicted_seconds() > self.progress_seconds:
-                self._refuse_too_large(self.key())  # (refused before the bar shows)
+                self._refuse_key(self.key())  # (refused before the bar shows)
                 show()
             mesh = self.mesh_at(progress=report)
         except (MeshError, MemoryError) as err:
@@ -865,7 +875,7 @@ class Explorer(W.HBox):
     def _page_entry(self, key: Key, max_faces: int) -> tuple[int, str]:
         """(bytes predicted, reason it is left out or "") of one combination in a page."""
         try:
-            self._refuse_too_large(key)
+            self._refuse_key(key)
             base = self._base(key[0])
             E, F = base.n_edges, base.n_faces
             for _, steps in self._levels(key):
