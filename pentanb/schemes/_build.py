@@ -255,6 +255,8 @@ def output(
     dtype = index_dtype(vertices.shape[0], corners.size)
     corners = corners.astype(dtype, copy=False)
     offsets = offsets.astype(dtype, copy=False)
+    if twin is None and not closed:  # an open output: straight to the open pairing
+        twin = functools.partial(_open_twin, corners, offsets, vertices.shape[0])
     return _mesh.trusted(
         vertices,
         corners,
@@ -265,6 +267,18 @@ def output(
         dual_of=dual_of,
         closed=closed,
     )
+
+
+def _open_twin(corners: np.ndarray, offsets: np.ndarray, n: int) -> np.ndarray:
+    """The twins of an operator's open output (:func:`pentanb.mesh.boundary.open_twins`),
+    without first trying the closed pairing, which fails on every open mesh."""
+    from ..mesh.boundary import open_twins
+    from ..mesh.halfedge import next_of
+
+    got = open_twins(corners, corners[next_of(offsets, corners.size, corners.dtype)], n)
+    if got is None:  # pragma: no cover - an operator's output is a manifold by construction
+        raise MeshError("an operator's output does not pair up into an oriented manifold")
+    return got[0]
 
 
 def remeshed(
