@@ -8,6 +8,7 @@ No test here reads a clock: the panel's busy delay runs on a timer the tests rep
 
 from __future__ import annotations
 
+import dataclasses
 import html
 import threading
 from typing import ClassVar
@@ -279,6 +280,33 @@ def test_claims_table_on_the_package_figures_matches_their_claims():
 def test_claims_table_refuses_what_is_not_claims(bad):
     with pytest.raises(TypeError, match="claims"):
         widgets.claims_table(bad)
+
+
+def test_statements_that_start_alike_are_told_apart():
+    same = "the construction, counted: "
+    # the paper's words differ: they tell the statements apart
+    t = widgets.claims_table(
+        [
+            _claim("loop", reading=same + "triangles", quote="Loop's words"),
+            _claim("sqrt3", reading=same + "triangles", quote="sqrt(3)'s words"),
+            _claim("c", reading="only pentagons"),
+        ]
+    )
+    assert [line.split(": ", 1)[1] for line in str(t).splitlines()[1:]] == [
+        "Loop's words",
+        "sqrt(3)'s words",
+        "only pentagons",
+    ]
+    # the same words: the measurements, from the first word where they differ
+    a, b = _claim("edge", reading=same), _claim("angle", reading=same)
+    a = dataclasses.replace(a, measured="after 2 duals: 0 spread of edge lengths 0.02")
+    b = dataclasses.replace(b, measured="after 2 duals: 0.41 spread of face angles 0.14")
+    shown = [line.split(": ", 1)[1] for line in str(widgets.claims_table([a, b])).splitlines()[1:]]
+    dots = "\N{HORIZONTAL ELLIPSIS}"
+    assert shown == [
+        dots + "0 spread of edge lengths 0.02",  # (the 0 is its own: not cut in a word)
+        dots + "0.41 spread of face angles 0.14",
+    ]
 
 
 def test_long_texts_are_cut_at_a_word_with_an_ellipsis():

@@ -463,6 +463,17 @@ _BADGES = {
 
 #: Longest text :func:`claims_table` shows of a statement before the click (characters).
 _SHORT_QUOTE = 110
+#: Statements whose texts share this many first characters are told apart.
+_ALIKE = 25
+
+
+def _common_words(texts: list[str]) -> str:
+    """The longest start, ending at a space, that all ``texts`` share."""
+    first = texts[0]
+    n = 0
+    while n < len(first) and all(len(t) > n and t[n] == first[n] for t in texts):
+        n += 1
+    return first if n == len(first) else first[: first.rfind(" ", 0, n) + 1]
 
 
 def _short(text: str, limit: int = _SHORT_QUOTE) -> str:
@@ -488,18 +499,39 @@ class ClaimsTable:
 
     def __init__(self, claims: Iterable[Any]):
         self.claims = tuple(claims)
+        self._whats = self._what_texts()
 
-    @staticmethod
-    def _what(c: Any) -> str:
-        """What a statement checks, in a few words: a claim's reading (else the
-        paper's words), a check's words, the property an observation states."""
-        if c.kind == "observation":
-            text = c.criterion or c.quote
-        elif c.kind == "consistency check":
-            text = c.quote
-        else:
-            text = getattr(c, "reading", "") or c.quote
-        return _short(str(text))
+    def _what_texts(self) -> list[str]:
+        """What each statement checks, in a few words: a claim's reading (else the
+        paper's words), a check's words, the property an observation states.
+        Statements that would start alike are told apart by the paper's words
+        when those differ, else by their measurements from where those differ."""
+        texts = []
+        for c in self.claims:
+            if c.kind == "observation":
+                text = c.criterion or c.quote
+            elif c.kind == "consistency check":
+                text = c.quote
+            else:
+                text = getattr(c, "reading", "") or c.quote
+            texts.append(" ".join(str(text).split()))
+        out = [_short(t) for t in texts]
+        groups: dict[str, list[int]] = {}
+        for i, t in enumerate(texts):
+            groups.setdefault(t[:_ALIKE], []).append(i)
+        for members in groups.values():
+            if len(members) < 2:
+                continue
+            quotes = [" ".join(str(self.claims[i].quote).split()) for i in members]
+            if len(set(quotes)) == len(quotes):
+                for i, q in zip(members, quotes):
+                    out[i] = _short(q)
+                continue
+            measured = [" ".join(str(self.claims[i].measured).split()) for i in members]
+            common = len(_common_words(measured))
+            for i, m in zip(members, measured):
+                out[i] = _short(("\N{HORIZONTAL ELLIPSIS}" if common else "") + m[common:])
+        return out
 
     def _verdict(self, c: Any) -> str:
         if c.kind == "observation":
@@ -576,7 +608,7 @@ class ClaimsTable:
 
     def _repr_html_(self) -> str:
         rows = []
-        for c in self.claims:
+        for c, what in zip(self.claims, self._whats):
             full = html.escape("\n".join(c.lines()))
             rows.append(
                 "<tr>"
@@ -584,7 +616,7 @@ class ClaimsTable:
                 f'<td style="text-align:left;vertical-align:top;min-width:10em;max-width:16em">'
                 f"{html.escape(str(c.section))}</td>"
                 '<td style="text-align:left;vertical-align:top"><details><summary>'
-                f"{html.escape(self._what(c))}</summary>"
+                f"{html.escape(what)}</summary>"
                 '<pre style="white-space:pre-wrap;font-size:85%;margin:4px 0">'
                 f"{full}</pre></details></td></tr>"
             )
@@ -599,9 +631,9 @@ class ClaimsTable:
 
     def __str__(self) -> str:
         lines = [self.summary()]
-        for c in self.claims:
+        for c, what in zip(self.claims, self._whats):
             verdict = self._verdict(c) + (" (CHANGED)" if c.regressed else "")
-            lines.append(f"  [{verdict}] {c.section}: {self._what(c)}")
+            lines.append(f"  [{verdict}] {c.section}: {what}")
         return "\n".join(lines)
 
     def __repr__(self) -> str:
@@ -626,9 +658,10 @@ def claims_table(claims: Iterable[Any], *, check: bool = True) -> ClaimsTable:
     ClaimsTable
         Shown by a notebook as a table: per statement its verdict, where
         the paper says it and what is checked (a claim's reading, a check's
-        words, the property an observation states, shortened); a click on
-        a row shows the full statement (the paper's words, the reading,
-        the measurement, the criterion).
+        words, the property an observation states, shortened; where two
+        would start alike, the paper's words or the measurement); a click on a row
+        shows the full statement (the paper's words, the reading, the
+        measurement, the criterion).
 
     Raises
     ------
