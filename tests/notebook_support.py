@@ -105,6 +105,8 @@ def _move(w):
 _controls = [w for w in list(_all_widgets.values()) if _ends(w)]
 _skipped = [w for w in _controls if not _move(w)]
 for _w in _skipped:  # disabled at its turn: an earlier drop-down may enable it
+    for _r in (r for r in _controls[: _controls.index(_w)] if isinstance(r, _RANGES)):
+        _r.value = _r.min  # (the smallest request: an explorer refuses a large one whole)
     _earlier = [d for d in _controls[: _controls.index(_w)] if isinstance(d, _CHOICES)]
     for _d in _earlier:
         for _end in _ends(_d):
