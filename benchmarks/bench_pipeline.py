@@ -432,9 +432,10 @@ def slider(table: Table, runs: int, clock) -> dict:
         m = pb.subdivide(base, name, 1, 2)
         sent = mesh_buffers(m)
         flat = buffers(drawing(m))
-        fields = ("position", "color", "index", "edge_position", "edge_color", "edge_index")
+        fields = ("position", "color", "normal", "index", "edge_position", "edge_color")
+        fields += ("edge_index",)
         indexed = sum(getattr(sent, k).nbytes for k in fields)
-        unindexed = sum(getattr(flat, k).nbytes for k in fields[:2] + fields[3:5])
+        unindexed = sum(getattr(flat, k).nbytes for k in fields[:3] + fields[4:6])
         table.add(
             sec,
             f"bytes sent per move, {name}",

@@ -80,6 +80,18 @@ def newell(mesh):
     return np.array(out)
 
 
+def smooth_normals(mesh):
+    """Unit normal at every vertex: the sum of its faces' Newell vectors, normalised."""
+    total = np.zeros((mesh.n_vertices, 3))
+    for face in face_lists(mesh):
+        p = mesh.vertices[face]
+        q = np.roll(p, -1, axis=0)
+        area = np.cross(p, q).sum(axis=0)
+        for u in face:
+            total[u] += area
+    return total / np.linalg.norm(total, axis=1)[:, None]
+
+
 def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
     fa = v.face_geometry.attributes
     pos, idx = arr(fa["position"]), arr(fa["index"])
@@ -95,12 +107,12 @@ def check_buffers(v: three.MeshView, mesh: pentanb.Mesh):
     # each triangle has the colour of its face's size, on its three corners
     sizes = np.array([len(f) for f in face_lists(mesh)])
     np.testing.assert_array_equal(col[idx], np.repeat(face_rgb(sizes[owner]), 3, axis=0))  # exact
-    # indexed: a row per face corner (a polygon's normal of its own), not three per triangle
-    assert len(pos) == len(mesh.corners)
-    # every triangle's corners carry its polygon's normal (Newell's, worked out here)
+    # indexed: the vertices once per face size present, not three rows per triangle
+    assert len(pos) == len(set(sizes.tolist())) * mesh.n_vertices
+    # every triangle corner carries its vertex's smooth normal (worked out here)
     nor = arr(fa["normal"])
     assert nor.dtype == np.float32 and len(nor) == len(pos)
-    np.testing.assert_allclose(nor[idx], np.repeat(newell(mesh)[owner], 3, axis=0), atol=1e-6)
+    np.testing.assert_allclose(nor[idx], smooth_normals(mesh)[tris].reshape(-1, 3), atol=1e-6)
     # edges: both ends of every edge, in the edge colour
     ea = v.edge_geometry.attributes
     eidx = arr(ea["index"])
@@ -128,7 +140,7 @@ def test_view_buffers_match_mesh(name):
     v = pentanb.view(mesh)
     check_buffers(v, mesh)
     assert v.renderer in v.children
-    # a normal per polygon, not flat shading (which shows every fan triangle)
+    # smooth normals, not flat shading (which shows every fan triangle)
     assert not v.faces.material.flatShading
     assert v.faces.material.vertexColors == "VertexColors"
     assert v.edges.visible and v.wireframe.value
@@ -1082,27 +1094,26 @@ def test_mesh_buffers_of_mixed_and_uniform_faces(text):
     _same_buffers(drawing_module.buffers(drawing_module.drawing(m)), drawing_module.mesh_buffers(m))
 
 
-def test_mesh_buffers_hold_a_row_per_face_corner():
+def test_mesh_buffers_hold_the_vertices_once_per_face_size():
     m = pentanb.conway("dgC")  # 32 triangles and 6 squares on 24 vertices
     b = drawing_module.mesh_buffers(m)
-    rows = 3 * 32 + 4 * 6
-    assert b.position.shape == (rows, 3) and b.index.shape == (3 * (32 + 2 * 6),)
+    assert b.position.shape == (2 * 24, 3) and b.index.shape == (3 * (32 + 2 * 6),)
     v = m.vertices.astype(np.float32)
-    corners = np.concatenate(face_lists(m))
-    assert np.array_equal(b.position, v[corners])
-    sizes = np.repeat(m.face_sizes, m.face_sizes)
+    assert np.array_equal(b.position, np.concatenate([v, v]))
     triangle, square = (drawing_module._bytes(face_rgb(k)) for k in (3, 4))
-    assert (b.color[sizes == 3] == triangle).all() and (b.color[sizes == 4] == square).all()
-    # every row of a face carries the face's normal (Newell's, worked out in the test)
-    np.testing.assert_allclose(b.normal, np.repeat(newell(m), m.face_sizes, axis=0), atol=1e-6)
+    assert (b.color[:24] == triangle).all() and (b.color[24:] == square).all()
+    # every copy carries the vertices' smooth normals (worked out in the test)
+    np.testing.assert_allclose(b.normal, np.tile(smooth_normals(m), (2, 1)), atol=1e-6)
     assert b.edge_position.shape == (24, 3) and b.edge_index.shape == (2 * 60,)
-    one = drawing_module.mesh_buffers(shapes.dodecahedron())
-    assert one.position.shape == (60, 3) and one.normal.shape == (60, 3)
-    # fewer rows than three per triangle corner whatever the face sizes
+    one = drawing_module.mesh_buffers(shapes.dodecahedron())  # one size: one copy
+    assert one.position.shape == (20, 3) and one.normal.shape == (20, 3)
+    # six face sizes on 360 vertices: six copies would be more rows than three
+    # per triangle corner (716 triangles), so the rows are per corner
     many = pentanb.conway("bbP5")
-    assert len(set(many.face_sizes.tolist())) == 6
-    assert drawing_module.mesh_buffers(many).position.shape == (len(many.corners), 3)
-    assert len(many.corners) < 3 * (len(many.corners) - 2 * many.n_faces)
+    assert len(set(many.face_sizes.tolist())) == 6 and many.n_vertices == 360
+    fallback = drawing_module.mesh_buffers(many)
+    assert fallback.position.shape == (3 * 716, 3)
+    assert np.array_equal(fallback.index, np.arange(3 * 716))
 
 
 def test_mesh_buffers_comparison_fails_on_a_moved_vertex_or_other_faces():
@@ -1123,7 +1134,7 @@ def test_a_view_updated_with_a_mesh_carries_its_drawing_and_legend():
     assert np.array_equal(v.drawing.vertices, n.vertices)
     assert "32 triangles" in v.legend.value and "V = 24, E = 60, F = 38" in v.legend.value
     assert arr(v.face_geometry.attributes["index"]).shape == (3 * (32 + 12),)
-    assert arr(v.face_geometry.attributes["position"]).shape == (3 * 32 + 4 * 6, 3)  # corners
-    assert arr(v.face_geometry.attributes["normal"]).shape == (3 * 32 + 4 * 6, 3)
+    assert arr(v.face_geometry.attributes["position"]).shape == (2 * 24, 3)  # two face sizes
+    assert arr(v.face_geometry.attributes["normal"]).shape == (2 * 24, 3)
     with pytest.raises(TypeError, match=r"expected a pentanb\.Mesh or a Drawing, got str"):
         v.update("cube")

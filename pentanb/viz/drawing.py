@@ -9,22 +9,21 @@ How a mesh becomes WebGL buffers
 --------------------------------
 A polygon face is drawn as the fan of triangles from its first corner,
 :meth:`pentanb.Mesh.fan_triangles`, in one flat colour: the colour of its
-number of sides.  A face is lit as one polygon, not as its triangles: every
-row carries the polygon's normal (the direction of its vector area, the sum
-of its fan triangles' cross products; :func:`polygon_normals`), so a curved
-pentagon is shaded evenly and shows no seam along its fan diagonals (flat
-shading, which lights every triangle by its own plane, would).  The buffers
-are *indexed*: ``position`` holds one row per face corner (the vertex cast
-to float32), ``color`` and ``normal`` the face's colour and normal on every
-one of its rows, and ``index`` three rows per triangle.  That is the fewest
-rows with which every polygon has a normal of its own: a row per face corner
-(``H``, twice the edges of a closed mesh) against three per triangle
-(``3 (H - 2F)``).  Edges are one indexed ``LineSegments`` over the vertices
-(drawn fainter on large meshes: :func:`edge_opacity`); the edges of an open
-mesh's boundary are a second line set, drawn wide and dark
-(:data:`pentanb.viz.colors.BOUNDARY_COLOR`, :data:`BOUNDARY_WIDTH` pixels);
-marked points are one ``Points``.  A general :class:`Drawing` (any colour per
-face) gets three rows per triangle and an index that counts through them.
+number of sides.  It is shaded smoothly: every vertex carries a normal, the
+sum of its faces' vector areas normalised (:func:`vertex_normals`), and
+WebGL interpolates it across the triangles, so a curved pentagon shows no
+seam along its fan diagonals (flat shading, which lights every triangle by
+its own plane, would).  The buffers are *indexed*: ``position`` holds the
+vertices (cast to float32) once per face size present, each copy in that
+size's colour with the vertices' normals, and ``index`` three rows per
+triangle pointing into the copy of its face's size: for a mesh of one face
+size, ``V`` rows against three per triangle (``3 (H - 2F)``).  Edges are one
+indexed ``LineSegments`` over the vertices (drawn fainter on large meshes:
+:func:`edge_opacity`); the edges of an open mesh's boundary are a second
+line set, drawn wide and dark (:data:`pentanb.viz.colors.BOUNDARY_COLOR`,
+:data:`BOUNDARY_WIDTH` pixels); marked points are one ``Points``.  A general
+:class:`Drawing` (any colour per face) gets three rows per triangle and an
+index that counts through them.
 
 The camera
 ----------
@@ -46,7 +45,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import _jit
-from ..mesh import Mesh, check_mesh, fan_triangle_corners
+from ..mesh import Mesh, check_mesh
 from ..mesh import build as _mesh
 from .colors import EDGE_COLOR, face_color, face_label, face_rgb, hex_to_rgb
 
@@ -60,6 +59,8 @@ __all__ = [
     "edge_opacity",
     "eye_direction",
     "polygon_normals",
+    "face_areas",
+    "vertex_normals",
     "boundary_segments",
     "Drawing",
     "drawing",
@@ -164,18 +165,116 @@ def polygon_normals(
     (n_faces, 3) float
     """
     v = np.asarray(vertices, dtype=np.float64).reshape(-1, 3)
-    t = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
-    owner = np.asarray(triangle_face, dtype=np.int64).reshape(-1)
-    a = v[t[:, 0]]
-    cross = np.cross(v[t[:, 1]] - a, v[t[:, 2]] - a)
-    area = np.stack(
-        [np.bincount(owner, weights=cross[:, k], minlength=n_faces) for k in range(3)], axis=1
+    t = np.asarray(triangles).reshape(-1, 3)
+    owner = np.asarray(triangle_face).reshape(-1)
+    # by coordinate (contiguous columns), the cross products written out: np.cross
+    # and row gathers of (T, 3) arrays cost several times more on large meshes
+    cols = [np.ascontiguousarray(v[:, k]) for k in range(3)]
+    a = [c.take(t[:, 0]) for c in cols]
+    u = [c.take(t[:, 1]) - a[k] for k, c in enumerate(cols)]
+    w = [c.take(t[:, 2]) - a[k] for k, c in enumerate(cols)]
+    cross = (
+        u[1] * w[2] - u[2] * w[1],
+        u[2] * w[0] - u[0] * w[2],
+        u[0] * w[1] - u[1] * w[0],
     )
+    area = np.empty((n_faces, 3))
+    starts = np.flatnonzero(np.diff(owner, prepend=-1)) if owner.size else owner
+    if owner.size and starts.size == n_faces and bool((owner[starts] == np.arange(n_faces)).all()):
+        # the fans' usual order: every face's triangles together, faces in order
+        for k in range(3):
+            area[:, k] = np.add.reduceat(cross[k], starts)
+    else:
+        for k in range(3):
+            area[:, k] = np.bincount(owner, weights=cross[k], minlength=n_faces)
     length = np.sqrt((area * area).sum(axis=1))
     flat = ~(length > 0)
     out = area / np.where(flat, 1.0, length)[:, None]
     out[flat] = (0.0, 0.0, 1.0)
     return out
+
+
+def face_areas(mesh: Mesh) -> NDArray[np.float64]:
+    """The vector area of every face (twice it), by Newell's formula over its edges.
+
+    ``sum_i p_i x p_(i+1)`` over the face's corners in order, summed one by
+    one (faces of one size at a time): the same vector as the sum of any
+    fan's triangle cross products (see :func:`polygon_normals`), with no
+    triangles built.
+
+    Parameters
+    ----------
+    mesh : Mesh
+
+    Returns
+    -------
+    (F, 3) float
+    """
+    check_mesh(mesh, "face_areas()")
+    v = np.asarray(mesh.vertices, dtype=np.float64)
+    cols = [np.ascontiguousarray(v[:, k]) for k in range(3)]
+    corners, offsets, sizes = mesh.corners, mesh.offsets, mesh.face_sizes
+    area = np.empty((mesh.n_faces, 3))
+    counts = _mesh.size_counts(mesh)
+    for n, _ in counts:
+        if len(counts) == 1:
+            faces = None
+            rows = corners.astype(np.intp).reshape(-1, n)
+        else:
+            faces = np.flatnonzero(sizes == n)
+            rows = corners[offsets[faces][:, None] + np.arange(n)]
+        x, y, z = (c.take(rows) for c in cols)
+        ax, ay, az = (np.zeros(len(rows)) for _ in range(3))
+        for i in range(n):  # in order, corner by corner (no pairwise sums)
+            j = (i + 1) % n
+            ax += y[:, i] * z[:, j] - z[:, i] * y[:, j]
+            ay += z[:, i] * x[:, j] - x[:, i] * z[:, j]
+            az += x[:, i] * y[:, j] - y[:, i] * x[:, j]
+        block = np.stack([ax, ay, az], axis=1)
+        if faces is None:
+            area = block
+        else:
+            area[faces] = block
+    return area
+
+
+def vertex_normals(mesh: Mesh) -> NDArray[np.float32]:
+    """The unit normal at every vertex: the sum of its faces' vector areas, normalised.
+
+    What the 3D view shades with: interpolated across every face, these
+    normals show a curved polygon as smooth, with no seam along the fan
+    triangles it is drawn with (flat shading lights each triangle on its
+    own).  Each vertex sums :func:`face_areas` of its faces in face order; a
+    vertex whose sum is zero gets ``(0, 0, 1)``.  The optional compiled
+    kernels (:mod:`pentanb._jit`) give the same numbers bit for bit.
+
+    Parameters
+    ----------
+    mesh : Mesh
+
+    Returns
+    -------
+    (n, 3) float32
+    """
+    check_mesh(mesh, "vertex_normals()")
+    jit = _jit.kernels(len(mesh.corners))
+    if jit is not None:
+        return jit.vertex_normals(mesh.vertices, mesh.corners, mesh.offsets)
+    area = face_areas(mesh)
+    owner = mesh.corners
+    n = mesh.n_vertices
+    total = np.empty((n, 3))
+    for k in range(3):
+        total[:, k] = np.bincount(
+            owner, weights=np.repeat(area[:, k], mesh.face_sizes), minlength=n
+        )
+    length = np.sqrt(
+        total[:, 0] * total[:, 0] + total[:, 1] * total[:, 1] + total[:, 2] * total[:, 2]
+    )
+    flat = ~(length > 0)
+    out = total / np.where(flat, 1.0, length)[:, None]
+    out[flat] = (0.0, 0.0, 1.0)
+    return out.astype(np.float32)
 
 
 def boundary_segments(mesh: Mesh) -> NDArray[np.float64]:
@@ -230,6 +329,10 @@ class Drawing:
         The mesh's counts, shown under the legend.
     boundary : (B, 2, 3) float, optional
         The boundary's edges, drawn heavier (none: nothing drawn heavier).
+    normals : (n, 3) float, optional
+        The unit normal at every vertex, shaded smoothly across the faces
+        (:func:`vertex_normals`); default: every face lit flat with its
+        polygon's normal (:func:`polygon_normals`).
     """
 
     vertices: NDArray[np.float64]
@@ -243,6 +346,7 @@ class Drawing:
     legend: dict[int, int] = field(default_factory=dict)
     counts: tuple[int, int, int] | None = None
     boundary: NDArray[np.float64] | None = None
+    normals: NDArray[np.floating] | None = None
 
     @property
     def n_faces(self) -> int:
@@ -326,6 +430,7 @@ def drawing(
             if boundary is None
             else np.asarray(boundary, dtype=np.float64).reshape(-1, 2, 3)
         ),
+        normals=vertex_normals(mesh),
     )
 
 
@@ -465,8 +570,11 @@ def buffers(d: Drawing) -> Buffers:
     """
     position = np.asarray(d.vertices, dtype=np.float32)[d.triangles].reshape(-1, 3)
     color = _rows(np.asarray(d.face_colors)[d.triangle_face], "#000000", 0, 3)
-    normals = polygon_normals(d.vertices, d.triangles, d.triangle_face, d.n_faces)
-    normal = np.repeat(normals.astype(np.float32)[np.asarray(d.triangle_face)], 3, axis=0)
+    if d.normals is None:  # flat: the polygon's normal on each of its triangles' corners
+        normals = polygon_normals(d.vertices, d.triangles, d.triangle_face, d.n_faces)
+        normal = np.repeat(normals.astype(np.float32)[np.asarray(d.triangle_face)], 3, axis=0)
+    else:  # smooth: every corner its vertex's normal
+        normal = np.asarray(d.normals, dtype=np.float32)[np.asarray(d.triangles)].reshape(-1, 3)
     seg = np.asarray(d.segments, dtype=np.float32).reshape(-1, 3)
     seg_color = _rows(d.segment_colors, EDGE_COLOR, len(seg) // 2, 2)
     pts = (
@@ -510,12 +618,14 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
         order (``triangles()``, ``triangle_colors()`` and
         ``triangle_normals()`` of both are equal bit for bit), the same
         segments in the same order and the same boundary; but ``position``
-        is one row per face corner (the vertices cast to float32 once, then
-        taken), not three rows per triangle, and the edges index the
-        vertices themselves.  The fan triangles and edges come from the
-        mesh's connectivity caches, which the dual of a dual shares with
-        the mesh it came from; with the optional compiled kernels
-        (:mod:`pentanb._jit`), on a large mesh, the edges are written from
+        is the vertices cast to float32 once per face size present (each
+        copy coloured by its size, with the vertices' normals), not three
+        rows per triangle.  When that would be more rows than three per
+        triangle (a mesh with very many face sizes), the rows are per
+        triangle corner as in :func:`buffers`.  The fan triangles and edges
+        come from the mesh's connectivity caches, which the dual of a dual
+        shares with the mesh it came from; with the optional compiled
+        kernels (:mod:`pentanb._jit`), on a large mesh, they are written from
         the faces straight into uint32.
     """
     check_mesh(mesh, "mesh_buffers()")
@@ -523,22 +633,44 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
     if not counts or counts[0][0] < 3:
         return buffers(drawing(mesh))
     sizes = mesh.face_sizes
-    corners = mesh.corners
-    _addressable(len(corners))
+    n = mesh.n_vertices
     low, high = counts[0][0], counts[-1][0]
     table = _bytes(face_rgb(np.arange(low, high + 1)))
-    v = mesh.vertices.astype(np.float32)  # a copy: the edges' array, writeable
-    position = v.take(corners, axis=0)  # a row per face corner
-    if len(counts) == 1:  # one size, one colour
-        color = _same_rows(table[0], len(corners))
+    present = np.array([size - low for size, _ in counts])  # ascending
+    copies = len(present)
+    triangles = len(mesh.corners) - 2 * mesh.n_faces
+    jit = _jit.kernels(len(mesh.corners))
+    vn = vertex_normals(mesh)
+    if copies * n > 3 * triangles:  # more copies than triangle corners: rows per corner
+        v = mesh.vertices.astype(np.float32)  # a copy: the view's array, writeable
+        tri, tri_face = mesh.fan_triangles()
+        position = v.take(tri.reshape(-1), axis=0)
+        color = np.repeat(table[sizes[tri_face] - low], 3, axis=0)
+        normal = vn.take(tri.reshape(-1), axis=0)
+        index = _counting(len(position), 3)
     else:
-        color = np.repeat(table[sizes - low], sizes, axis=0)
-    tri, tri_face = mesh.fan_triangles()
-    normals = polygon_normals(mesh.vertices, tri, tri_face, mesh.n_faces).astype(np.float32)
-    normal = np.repeat(normals, sizes, axis=0)
-    rows, _ = fan_triangle_corners(mesh.offsets)  # the same fan, as corner rows
-    index = rows.astype(np.uint32).reshape(-1)
-    jit = _jit.kernels(len(corners))
+        # the vertices cast to float32 straight into every copy (the first
+        # copy is also the edges' array): the view's arrays, writeable
+        position = np.empty((copies, n, 3), np.float32)
+        position[:] = mesh.vertices  # (broadcast: every copy)
+        position = position.reshape(-1, 3)
+        v = position[:n]
+        normal = vn if copies == 1 else np.tile(vn, (copies, 1))
+        if copies == 1:  # one size, one copy of the vertices
+            color = _same_rows(table[present[0]], n)
+        else:
+            rows = b"".join(table[p].tobytes() * n for p in present)
+            color = np.frombuffer(bytearray(rows), dtype=np.uint8).reshape(-1, 3)
+        _addressable(len(position))
+        slot = np.zeros(high - low + 1, np.int64)
+        slot[present] = np.arange(copies) * n
+        if jit is not None:  # (a k-gon's rows are shifted by slot[k - low])
+            index = jit.fan_index(mesh.corners, mesh.offsets, slot if copies > 1 else slot[:0], low)
+        else:
+            tri, tri_face = mesh.fan_triangles()
+            if copies > 1:
+                tri = tri + slot[sizes[tri_face] - low][:, None]
+            index = tri.astype(np.uint32).reshape(-1)
     if jit is not None:
         edge_index = jit.edge_index(mesh.corners, mesh.offsets)
     else:
@@ -551,7 +683,7 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
         color=color,
         index=index,
         edge_position=v,
-        edge_color=_rows(None, EDGE_COLOR, mesh.n_vertices, 1),
+        edge_color=_rows(None, EDGE_COLOR, n, 1),
         edge_index=edge_index,
         point_position=v[:1].copy(),
         point_color=np.zeros((1, 3), np.uint8),

@@ -224,8 +224,8 @@ def _replace(
 class MeshView(W.VBox):
     """A pythreejs view of a polygon mesh with a legend and an edge switch.
 
-    Every face is lit as one polygon (one normal per face, so a curved
-    pentagon shows no seams along its fan triangles); the edges fade on
+    Faces are shaded smoothly (a normal per vertex, so a curved pentagon
+    shows no seams along its fan triangles); the edges fade on
     large meshes (:func:`pentanb.viz.drawing.edge_opacity`: fully drawn up
     to 2,000 faces, about a third as opaque at 20,000); the boundary of an
     open mesh is drawn in :data:`pentanb.viz.colors.BOUNDARY_COLOR`, 3
@@ -317,8 +317,8 @@ class MeshView(W.VBox):
                 "index": attr(b.index),
             },
         )
-        # one normal per polygon on all its rows (not flatShading, which lights
-        # every fan triangle by its own plane: seams across a curved pentagon)
+        # a normal per vertex, interpolated (not flatShading, which lights every
+        # fan triangle by its own plane: seams across a curved pentagon)
         self.face_material = P3.MeshPhongMaterial(
             vertexColors="VertexColors",
             flatShading=False,
