@@ -126,6 +126,14 @@ def test_an_upload_of_the_same_name_replaces_the_entry_and_its_cache():
     e.upload.value = upload_value("m.obj", triangle)
     assert list(e.shape.options).count("m.obj") == 1
     assert e.mesh.n_faces == 1 and e.mesh.n_vertices == 3
+    # a replacement too large for the view: refused, the name keeps the mesh shown
+    e.max_faces = 100
+    assert e.add_mesh(pentanb.subdivide(shapes.cube(), "pentagonalize", 2, 0), "m.obj") is False
+    assert "120 faces" in e.status.value
+    e.iterations.value = 0
+    e.shape.value = "cube"
+    e.shape.value = "m.obj"
+    assert e.mesh.n_faces == 1 and e.mesh.n_vertices == 3
     e.close()
 
 

@@ -544,6 +544,7 @@ class Explorer(W.HBox):
         if name in shapes.SHAPES:
             raise ValueError(f"{name!r} is the name of one of the package's shapes; choose another")
         self._forget(name)
+        before = self._meshes.get(name)
         self._meshes[name] = mesh
         if name not in self._yours:
             self._yours.append(name)
@@ -555,7 +556,11 @@ class Explorer(W.HBox):
         finally:
             self._quiet -= 1
         if self.shape.value == name:  # replaced while shown
-            return self.refresh(fit=True)
+            if self.refresh(fit=True):
+                return True
+            self._forget(name)  # refused: the name keeps the mesh shown
+            self._meshes[name] = before  # type: ignore[assignment]
+            return False
         self.shape.value = name  # observed: refresh(fit=True)
         return self.shape.value == name
 
