@@ -412,12 +412,11 @@ def test_page_sizes_stay_within_their_budget(tmp_path):
 
 def test_export_closes_the_copy_it_made(tmp_path):
     import ipywidgets as W
+    from ipywidgets.widgets.widget import _instances as active
 
     e = pentanb.explore("tetrahedron", iterations=0)
-    before = set(W.widgets.Widget._active_widgets)
+    before = set(active)
     html.export_html(e, tmp_path / "p.html", offline=False, max_bytes=300_000)
-    left = [
-        W.widgets.Widget._active_widgets[k] for k in set(W.widgets.Widget._active_widgets) - before
-    ]
+    left = [active[k] for k in set(active) - before]
     assert [type(w).__name__ for w in left if not isinstance(w, (W.Layout, W.Style))] == []
     e.close()
