@@ -572,6 +572,28 @@ def test_claim_eq1_integer_observation_fails_on_meshes_larger_than_the_dodecahed
     leaves(section4.claims(bigger), "eq1.integer_at_20")
 
 
+@falsifies("eq1.with_boundary")
+def test_claim_eq1_with_boundary_fails_on_a_disk_of_quads():
+    # a flat patch of quads: a disk, but not of hexagons
+    quads = pentanb.Mesh(
+        [[x, y, 0.0] for x in range(4) for y in range(4)],
+        [
+            [4 * x + y, 4 * (x + 1) + y, 4 * (x + 1) + y + 1, 4 * x + y + 1]
+            for x in range(3)
+            for y in range(3)
+        ],
+    )
+    leaves(section4.claims({"hexagon disk": quads}), "eq1.with_boundary")
+
+
+def test_the_hexagon_disk_is_the_honeycomb_patch():
+    # 1 + 6 + 12 cells; corners 6 + 18 + 30 = 54; edges (6 * 19 + 30) / 2 = 72
+    d = section4.hexagon_disk(2)
+    assert (d.n_vertices, d.n_edges, d.n_faces) == (54, 72, 19)
+    assert d.face_sizes.tolist() == [6] * 19 and d.n_boundary_loops == 1
+    assert d.n_boundary_edges == 30
+
+
 @falsifies("eq1.non_integer")
 def test_claim_eq1_non_integer_fails_on_a_quad_torus_as_the_pentagonal_one():
     # the quads' limit, 4, is an integer with every vertex 4-valent

@@ -204,7 +204,52 @@ SAMPLES: dict[str, tuple] = {
     "gyro(cube) x3": (lambda: _gyro(shapes.cube(), 3), 0, "pentagonal g0"),
     "gyro(hexagonal torus)": (lambda: _gyro(shapes.hexagonal_torus()), 1, "g1"),
     "dual(hexagonal torus)": (lambda: dual(shapes.hexagonal_torus()), 1, "g1"),
+    "hexagon disk": (lambda: hexagon_disk(2), 0, "with boundary"),
+    "pentagonalized open disk": (
+        lambda: subdivide(shapes.open_disk(), "pentagonalize", 1, 0),
+        0,
+        "with boundary",
+    ),
 }
+
+
+def hexagon_disk(rings: int = 2) -> Mesh:
+    """A flat disk of regular hexagons: one, then ``rings`` rings round it (an open mesh).
+
+    The cells of the plane's honeycomb within ``rings`` steps of a central
+    one (1, 7, 19, ... hexagons of side 1), sharing their corners; genus 0
+    with one boundary loop.
+
+    Parameters
+    ----------
+    rings : int
+        Rings of hexagons round the central one, ``>= 0``.
+
+    Returns
+    -------
+    Mesh
+    """
+    centres = [
+        (3**0.5 * (q + r / 2), 1.5 * r)
+        for q in range(-rings, rings + 1)
+        for r in range(-rings, rings + 1)
+        if abs(q + r) <= rings
+    ]
+    index: dict[tuple[float, float], int] = {}
+    points: list[tuple[float, float, float]] = []
+    faces = []
+    for cx, cy in centres:
+        face = []
+        for k in range(6):  # corners counter-clockwise: the face looks up (+z)
+            a = np.radians(30 + 60 * k)
+            x, y = cx + np.cos(a), cy + np.sin(a)
+            key = (round(x, 6), round(y, 6))
+            if key not in index:
+                index[key] = len(points)
+                points.append((x, y, 0.0))
+            face.append(index[key])
+        faces.append(face)
+    return Mesh(np.array(points), faces)
 
 
 def _zip(mesh: Mesh) -> Mesh:
@@ -380,6 +425,59 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "integer: no tiling of pentagons has all its vertices of one valence, while the "
             "limits of triangles (6) and quadrilaterals (4) are integers, reached by regular "
             "tilings",
+        )
+    )
+    # Section 4 on surfaces with boundary (the paper's meshes are closed): V - E + F = 2 - 2g - b
+    # and nF = 2E - e_b extend equation (1); a boundary lets hexagons mesh a genus-0 surface
+    rows = {}
+    for k in role("with boundary"):
+        mk = m[k]
+        e_b = mk.n_boundary_edges
+        n = _n(mk)
+        formula = (
+            topology.average_valence_with_boundary(
+                n, genus[k], mk.n_boundary_loops, mk.n_vertices, e_b
+            )
+            if n is not None and mk.n_boundary_loops > 0
+            else None
+        )
+        rows[k] = {
+            "n": n,
+            "g, b": (genus[k], mk.n_boundary_loops),
+            "V - E + F": mk.euler_characteristic,
+            "e_b": e_b,
+            "2E/V": float(_m(mk)),
+            "equation (1) with boundary": formula,
+            "can tile": n is not None
+            and topology.can_tile_with_boundary(
+                n, genus[k], mk.n_boundary_loops, mk.n_vertices, e_b
+            ),
+        }
+    disk = rows.get("hexagon disk", {})
+    seen = (
+        disk.get("n") == 6
+        and disk.get("g, b") == (0, 1)
+        and disk.get("V - E + F") == 1
+        and all(
+            r["equation (1) with boundary"] is not None
+            and abs(r["equation (1) with boundary"] - r["2E/V"]) < 1e-12
+            and r["can tile"]
+            and r["V - E + F"] == 2 - 2 * r["g, b"][0] - r["g, b"][1]
+            for r in rows.values()
+        )
+    )
+    out.append(
+        observed(
+            "eq1.with_boundary",
+            "Section 4, extended to surfaces with boundary",
+            "For g = 0 and n = 6 the equation 1 becomes [...] m = 3 (1 - 2/v) [...] This shows "
+            "that it is not possible to create a hexagonal mesh for g = 0.",
+            "built open meshes: " + fmt(rows),
+            "on surfaces with boundary, equation (1) extended by b loops and e_b boundary edges "
+            "gives each built mesh's average valence, and a disk (g = 0, b = 1) has a mesh of "
+            "hexagons only",
+            seen,
+            cause="surfaces with boundary",
         )
     )
     pent_all = role("pentagonal g0") + ["dodecahedron", "gyro(hard cube)", "gyro(rabbit) x2"]
