@@ -948,3 +948,80 @@ def _vertex_configurations(m):
 def test_closed_only_code_refuses_an_open_mesh(call):
     with pytest.raises(MeshError, match="needs a closed mesh; this one is open"):
         call(shapes.open_disk())
+
+
+# ============================================================ connectivity written, not paired
+def holed_grid(nx: int = 9, ny: int = 7) -> Mesh:
+    """A grid with two square holes, one touching the rim at a corner of a hole."""
+    m = grid(nx, ny)
+    return without(m, [2 * ny + 2, 2 * ny + 3, 3 * ny + 2, 3 * ny + 3, 6 * ny + 4])
+
+
+WRITTEN = {
+    "holed grid": holed_grid,
+    "annulus": lambda: annulus(9, 3),
+    "open disk": shapes.open_disk,
+    "grid 3x2": lambda: grid(3, 2),
+    "torus without three faces": OPEN["torus without three faces"],
+}
+
+
+def test_canonical_loops_is_what_loop_order_gives_for_chains_from_any_start():
+    from pentanb.mesh.boundary import canonical_loops, loop_order
+
+    rng = np.random.default_rng(5)
+    for _ in range(20):
+        sizes = rng.integers(1, 9, size=rng.integers(1, 6))
+        ids = rng.permutation(int(sizes.sum()) * 3)[: sizes.sum()]  # distinct half-edges
+        n = int(ids.max()) + 1 + int(sizes.sum())
+        # loop i: vertices base_i .. base_i + size_i - 1 in a cycle
+        tail = np.zeros(n, dtype=np.int64)
+        head = np.zeros(n, dtype=np.int64)
+        chain, offsets, v = [], [0], 0
+        for s in sizes.tolist():
+            loop = ids[offsets[-1] : offsets[-1] + s]
+            for i, h in enumerate(loop):
+                tail[h], head[h] = v + i, v + (i + 1) % s
+            turn = int(rng.integers(0, s))
+            chain.extend(np.roll(loop, turn).tolist())
+            offsets.append(offsets[-1] + s)
+            v += s
+        want, want_off, bad = loop_order(tail, head, np.sort(ids), v + 1)
+        assert bad == -1
+        got, got_off = canonical_loops(np.array(chain), np.array(offsets))
+        assert got.tolist() == want.tolist() and got_off.tolist() == want_off.tolist()
+
+
+@pytest.mark.parametrize("op", ["pentagonalize", "preserve_pentagons", "dual", "dual of dual"])
+@pytest.mark.parametrize("name", list(WRITTEN))
+def test_open_outputs_twins_and_loops_are_written_as_pairing_finds_them(name, op, monkeypatch):
+    from pentanb.mesh import boundary, core
+
+    m = WRITTEN[name]()
+    m.vertex_ring  # noqa: B018 - the input's connectivity, paired before pairing is refused
+    if op == "dual of dual":
+        m = pb.dual(m)
+        m.vertex_ring  # noqa: B018
+        op = "dual"
+    out = pb.dual(m) if op == "dual" else pb.SCHEMES[op](m)
+    made = Mesh(out.vertices, face_lists(out))  # validated, paired from its faces
+
+    def refused(*args):
+        raise AssertionError("an operator's open output was paired by sorting")
+
+    monkeypatch.setattr(core, "open_twins", refused)
+    monkeypatch.setattr(boundary, "pair_open", refused)
+    assert out.boundary_halfedges.tolist() == made.boundary_halfedges.tolist()
+    assert _loops(out) == _loops(made)
+    assert out.twin.tolist() == made.twin.tolist()
+    assert out.twin.dtype == made.twin.dtype
+    if op == "dual":  # its rings written too
+        ring, off = out.vertex_ring
+        want, want_off = made.vertex_ring
+        assert ring.tolist() == want.tolist() and off.tolist() == want_off.tolist()
+        assert ring.dtype == want.dtype and off.dtype == want_off.dtype
+    assert not out.is_closed and out.n_edges == made.n_edges
+
+
+def _loops(m: Mesh) -> list[list[int]]:
+    return [x.tolist() for x in m.boundary_loops]

@@ -31,6 +31,8 @@ __all__ = [
     "loop_order",
     "orientation_classes",
     "open_twins",
+    "canonical_loops",
+    "hole_twins",
     "CLOSED",
 ]
 
@@ -410,3 +412,73 @@ def open_twins(
     bh.setflags(write=False)
     off.setflags(write=False)
     return twin, (bh, off)
+
+
+def canonical_loops(chain: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Boundary half-edges chained into loops, in the order :func:`loop_order` gives.
+
+    For operators that know their output's boundary loops (each the
+    input's, refined): the loops are turned to start at their smallest
+    half-edge and sorted by it, so that the result is what pairing the
+    output's half-edges would record (:attr:`pentanb.Mesh.boundary_halfedges`).
+
+    Parameters
+    ----------
+    chain : (B,) int
+        Boundary half-edges, loop after loop; in every loop the head of a
+        half-edge is the tail of the next (and the last's head the first's
+        tail), starting anywhere.
+    offsets : (L + 1,) int
+        Loop ``i`` is ``chain[offsets[i]:offsets[i + 1]]``; no loop is empty.
+
+    Returns
+    -------
+    loops : (B,) int64
+        The same half-edges, every loop starting at its smallest, loops in
+        the order of those (read-only).
+    loop_offsets : (L + 1,) int64
+        The offsets of the loops in ``loops`` (read-only).
+    """
+    chain = np.asarray(chain, dtype=np.int64)
+    offsets = np.asarray(offsets, dtype=np.int64)
+    B, L = chain.size, offsets.size - 1
+    if B == 0:
+        return CLOSED
+    start, sizes = offsets[:-1], np.diff(offsets)
+    least = np.minimum.reduceat(chain, start)
+    at = np.flatnonzero(chain == np.repeat(least, sizes))  # one per loop: half-edges differ
+    shift = at - start
+    perm = np.argsort(least, kind="stable")
+    new_sizes = sizes[perm]
+    new_off = np.zeros(L + 1, dtype=np.int64)
+    np.cumsum(new_sizes, out=new_off[1:])
+    src_loop = np.repeat(perm, new_sizes)
+    within = np.arange(B, dtype=np.int64) - np.repeat(new_off[:-1], new_sizes)
+    within += shift[src_loop]
+    within %= sizes[src_loop]
+    loops = chain[start[src_loop] + within]
+    loops.setflags(write=False)
+    new_off.setflags(write=False)
+    return loops, new_off
+
+
+def hole_twins(twin: np.ndarray, bh: np.ndarray) -> np.ndarray:
+    """Set ``twin[bh[j]] = H + j`` (the hole half-edges, H = ``twin.size``), in place.
+
+    Parameters
+    ----------
+    twin : (H,) int
+        The twins of the face half-edges, the boundary's still to be set.
+    bh : (B,) int
+        The boundary half-edges, loop after loop (:func:`canonical_loops`).
+
+    Returns
+    -------
+    (H,) int
+        ``twin``, or a copy widened to int64 when ``H + B`` does not fit its dtype.
+    """
+    H = twin.size
+    if H + bh.size > np.iinfo(twin.dtype).max:  # pragma: no cover - beyond 2**31 half-edges
+        twin = twin.astype(np.int64)
+    twin[bh] = np.arange(H, H + bh.size, dtype=twin.dtype)
+    return twin

@@ -10,7 +10,7 @@ have just made, use :func:`adopted` (validated, not copied).
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -40,7 +40,7 @@ def trusted(
     corners: np.ndarray,
     offsets: np.ndarray,
     *,
-    twin: IntArray | Callable[[], IntArray] | None = None,
+    twin: IntArray | Callable[[], IntArray | Several] | None = None,
     rings: Rings | Callable[[], Rings | Several] | None = None,
     size_counts: tuple[tuple[int, int], ...] | None = None,
     dual_of: Mesh | None = None,
@@ -59,7 +59,10 @@ def trusted(
         (:func:`pentanb.mesh.coerce.index_dtype`).
     twin : (H,) int, or a zero-argument callable returning it, optional
         The output's twins when the caller knows them; a callable runs when
-        the twins are first asked for.
+        the twins are first asked for.  For an open output the callable
+        returns a :class:`~pentanb.mesh.core.Several` of ``twin`` and
+        ``_boundary`` (the boundary half-edges loop after loop and the
+        loops' offsets, as :attr:`Mesh.boundary_halfedges` records them).
     rings : ((H,) int, (n + 1,) int), or a callable returning them, optional
         The vertex rings (:attr:`Mesh.vertex_ring`), likewise; the callable
         may return a :class:`~pentanb.mesh.core.Several` holding them and
@@ -83,7 +86,7 @@ def trusted(
         vertices,
         corners,
         offsets,
-        twin=twin,
+        twin=cast("IntArray | Callable[[], IntArray] | None", twin),  # (a Several is cached whole)
         rings=rings,
         size_counts=size_counts,
         dual_of=dual_of,

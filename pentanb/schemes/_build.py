@@ -32,6 +32,7 @@ import numpy as np
 from .. import _checks, _jit
 from ..mesh import Mesh, MeshError, Rings, Several, check_mesh
 from ..mesh import build as _mesh
+from ..mesh.boundary import canonical_loops, hole_twins
 from ..mesh.coerce import index_dtype as _index_dtype
 from ..mesh.geometry import SAFE_EXTENT
 
@@ -219,7 +220,7 @@ def output(
     corners: np.ndarray,
     offsets: np.ndarray,
     *,
-    twin: np.ndarray | Callable[[], np.ndarray] | None = None,
+    twin: np.ndarray | Callable[[], np.ndarray | Several] | None = None,
     rings: Rings | Callable[[], Rings | Several] | None = None,
     size_counts: tuple[tuple[int, int], ...] | None = None,
     dual_of: Mesh | None = None,
@@ -237,7 +238,8 @@ def output(
         if the operator made them wider.
     twin : (H,) int, or a zero-argument callable returning it, optional
         The output's twins when the operator knows them (a callable runs
-        only if the twins are asked for).
+        only if the twins are asked for); an open output's callable returns
+        them with its boundary (:func:`open_twins_from`).
     rings : ((H,) int, (n + 1,) int), or a callable returning them, optional
         The output's vertex rings (:attr:`pentanb.Mesh.vertex_ring`), likewise;
         the callable may return a :class:`pentanb.mesh.Several` holding them
@@ -281,6 +283,39 @@ def _open_twin(corners: np.ndarray, offsets: np.ndarray, n: int) -> np.ndarray:
     return got[0]
 
 
+def open_twins_from(twin: np.ndarray, chain: np.ndarray, chain_offsets: np.ndarray) -> Several:
+    """An open output's twins and boundary, from twins written but for the boundary's.
+
+    Parameters
+    ----------
+    twin : (H,) int
+        The output's twins, any value at its boundary half-edges (written over).
+    chain : (B,) int
+        The output's boundary half-edges, loop after loop, each loop chained
+        head to tail from any start (an operator knows them from its input's loops).
+    chain_offsets : (L + 1,) int
+        Loop ``i`` is ``chain[chain_offsets[i]:chain_offsets[i + 1]]``.
+
+    Returns
+    -------
+    Several
+        ``twin`` (the boundary half-edge ``bh[j]`` paired with the hole
+        half-edge ``H + j``) and ``_boundary`` (``bh`` and its loop offsets,
+        as pairing would record them: :func:`pentanb.mesh.boundary.canonical_loops`).
+    """
+    bh, off = canonical_loops(chain, chain_offsets)
+    return Several(twin=hole_twins(twin, bh), _boundary=(bh, off))
+
+
+def boundary_prev(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
+    """(k,) int64: ``prev[h]`` of a few half-edges ``h``, from the faces' offsets alone."""
+    h = np.asarray(h, dtype=np.int64)
+    o = np.asarray(offsets)
+    f = np.searchsorted(o, h, side="right") - 1
+    first = o[f].astype(np.int64)
+    return np.where(h == first, o[f + 1].astype(np.int64) - 1, h - 1)
+
+
 def remeshed(
     mesh: Mesh,
     vertices: np.ndarray,
@@ -290,18 +325,22 @@ def remeshed(
     twin_of: Callable[[Any, np.dtype], np.ndarray],
     rings_of: Callable[[Any, np.dtype], Rings | Several],
     size_counts: tuple[tuple[int, int], ...] | None = None,
+    open_twin_of: Callable[[Any, np.dtype], Several] | None = None,
 ) -> Mesh:
     """:func:`output` of a remeshing of ``mesh``, its connectivity written from ``mesh``'s.
 
     The output's twins and vertex rings are ``twin_of(faces, dt)`` and
     ``rings_of(faces, dt)``, run only when first asked for, ``faces`` being
     ``mesh``'s faces without its positions (so the output does not keep
-    them alive).  Those write a closed mesh's; an open mesh's output
-    derives its own from its faces (the numpy path).
+    them alive).  Those write a closed mesh's.  An open mesh's output
+    takes its twins and boundary from ``open_twin_of(faces, dt)`` (see
+    :func:`open_twins_from`) when given, else derives them from its faces
+    (the numpy path), and derives its rings.
     """
-    if not mesh.is_closed:
-        return output(vertices, corners, offsets, size_counts=size_counts)
     faces = _mesh.faces_only(mesh)
+    if not mesh.is_closed:
+        twin = None if open_twin_of is None else (lambda: open_twin_of(faces, dt))
+        return output(vertices, corners, offsets, twin=twin, size_counts=size_counts)
     return output(
         vertices,
         corners,
@@ -488,6 +527,28 @@ def open_vertex_faces(
     corners : int64 array
     offsets : (n + 1,) int64
     """
+    out, offsets, _ = placed_vertex_faces(mesh, items, entering, leaving, kept)
+    return out, offsets
+
+
+def placed_vertex_faces(
+    mesh: Mesh,
+    items: tuple[np.ndarray, ...],
+    entering: np.ndarray,
+    leaving: np.ndarray,
+    kept: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`open_vertex_faces`, and where every vertex ring entry went.
+
+    Returns
+    -------
+    corners : int64 array
+    offsets : (n + 1,) int64
+    at : (H + B,) int64
+        The position in ``corners`` of what every entry of
+        :attr:`~pentanb.Mesh.vertex_ring` contributes: a face half-edge's
+        first item, a hole half-edge's ``entering`` point.
+    """
     ring, ring_off = mesh.vertex_ring
     H, per = mesh.n_halfedges, len(items)
     ring = ring.astype(np.int64)
@@ -511,4 +572,4 @@ def open_vertex_faces(
     out[base + count[hole] - 1] = leaving[loop_successor(mesh)[j]]
     total = np.zeros(count.size + 1, dtype=np.int64)
     np.cumsum(count, out=total[1:])
-    return out, total[ring_off]
+    return out, total[ring_off], at

@@ -21,10 +21,12 @@ from ..mesh import build as _mesh
 from ..mesh.halfedge import next_of, prev_of
 from ._build import (
     BLOCK,
+    boundary_prev,
     check_mesh,
     check_scale,
     edge_points,
     index_dtype,
+    open_twins_from,
     output,
     remeshed,
     scale_safe,
@@ -104,8 +106,15 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     vertices[:n] = mesh.vertices
     edge_points(mesh, 2, out=vertices[n : n + 2 * E])
     vertices[n + 2 * E :] = mesh.face_centroids
-    if not closed:  # (its twins and rings derived from its faces)
-        return output(vertices, faces.reshape(-1), np.arange(0, 5 * H + 1, 5, dtype=dt))
+    if not closed:  # its twins written from the input's, its rings derived from its faces
+        twin_in, offsets_in = mesh.twin, mesh.offsets
+        bh, loops = mesh.boundary_halfedges, _mesh.loop_offsets(mesh)
+        return output(
+            vertices,
+            faces.reshape(-1),
+            np.arange(0, 5 * H + 1, 5, dtype=dt),
+            twin=lambda: _pentagonalized_open_twin(twin_in, offsets_in, bh, loops, dt),
+        )
     # the twins' producer holds the input's twins and offsets only, not its
     # faces (whose cached connectivity would then stay alive until the
     # output's twins are asked for, maybe an iteration later)
@@ -137,6 +146,27 @@ def _pentagonalized_twin(twin: np.ndarray, offsets: np.ndarray, dt: np.dtype) ->
         col += (0, 2, 1, 4, 3)[s]
         out[:, s] = col
     return out.reshape(-1)
+
+
+def _pentagonalized_open_twin(
+    twin: np.ndarray, offsets: np.ndarray, bh: np.ndarray, loops: np.ndarray, dt: np.dtype
+) -> Several:
+    """The twins and boundary of ``pentagonalize(mesh)`` for an open ``mesh``.
+
+    As :func:`_pentagonalized_twin` inside; each boundary half-edge ``b``
+    of ``mesh`` gives three of the output, in loop order ``5 prev[b] + 2``
+    (its first third, on the pentagon of ``prev[b]``), ``5b`` and ``5b + 1``,
+    paired with the output's hole half-edges.
+    """
+    safe = twin.astype(dt, copy=True)
+    safe[bh] = 0  # (a hole half-edge has no prev: any face half-edge, written over)
+    out = _pentagonalized_twin(safe, offsets, dt)
+    del safe
+    chain = np.empty((bh.size, 3), dtype=np.int64)
+    chain[:, 0] = 5 * boundary_prev(offsets, bh) + 2
+    chain[:, 1] = 5 * bh
+    chain[:, 2] = chain[:, 1] + 1
+    return open_twins_from(out, chain.reshape(-1), 3 * loops)
 
 
 def _pentagonalized_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
@@ -269,6 +299,7 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
         _preserved_twin,
         _preserved_rings,
         size_counts=tuple(sorted(histogram.items())),
+        open_twin_of=_preserved_open_twin,
     )
 
 
@@ -280,9 +311,34 @@ def _preserved_twin(mesh, dt: np.dtype) -> np.ndarray:
     ``h`` and ``H + 5h + 3``; ``H + 5h`` and ``H + 5 prev[twin[h]] + 1``;
     ``H + 5h + 2`` and ``H + 5 next[h] + 4``.
     """
-    H = mesh.n_halfedges
-    nxt, prv = mesh.next.astype(dt, copy=False), mesh.prev.astype(dt, copy=False)
-    twin = mesh.twin.astype(dt, copy=False)
+    return _preserved_twin_of(mesh.twin, mesh.next, mesh.prev, dt)
+
+
+def _preserved_open_twin(mesh, dt: np.dtype) -> Several:
+    """The twins and boundary of ``preserve_pentagons(mesh)`` for an open ``mesh``.
+
+    As :func:`_preserved_twin` inside; each boundary half-edge ``b`` of
+    ``mesh`` gives two of the output, in loop order ``H + 5 prev[b] + 1``
+    (its first half, on the pentagon of ``prev[b]``) and ``H + 5b``, paired
+    with the output's hole half-edges.
+    """
+    H, bh = mesh.n_halfedges, mesh.boundary_halfedges
+    prv = mesh.prev
+    safe = mesh.twin.astype(dt, copy=True)
+    safe[bh] = 0  # (a hole half-edge has no prev: any face half-edge, written over)
+    out = _preserved_twin_of(safe, mesh.next, prv, dt)
+    del safe
+    chain = np.empty((bh.size, 2), dtype=np.int64)
+    chain[:, 0] = H + 5 * prv[bh].astype(np.int64) + 1
+    chain[:, 1] = H + 5 * bh.astype(np.int64)
+    return open_twins_from(out, chain.reshape(-1), 2 * _mesh.loop_offsets(mesh))
+
+
+def _preserved_twin_of(twin: np.ndarray, nxt: np.ndarray, prv: np.ndarray, dt: np.dtype):
+    """:func:`_preserved_twin` from the input's twins, next and prev."""
+    H = twin.size
+    nxt, prv = nxt.astype(dt, copy=False), prv.astype(dt, copy=False)
+    twin = twin.astype(dt, copy=False)
     out = np.empty(6 * H, dtype=dt)
     out[:H] = np.arange(H + 3, 6 * H, 5, dtype=dt)
     pent = out[H:].reshape(H, 5)

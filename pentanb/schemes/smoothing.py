@@ -30,19 +30,25 @@ after pentagonalization's trisection, the ternary scheme of mask
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from .._checks import MAX_STEPS
-from ..mesh import Mesh
+from ..mesh import Mesh, Several
 from ..mesh import build as _mesh
 from ._build import (
     check_count,
     check_mesh,
     check_vertex_faces,
     corner_ids,
+    index_dtype,
     inverse,
-    open_vertex_faces,
+    loop_successor,
+    open_twins_from,
     output,
+    placed_vertex_faces,
+    start_at_max,
 )
 
 __all__ = ["dual", "smooth"]
@@ -122,7 +128,7 @@ def dual(mesh: Mesh) -> Mesh:
 
 
 def _open_dual(mesh: Mesh) -> Mesh:
-    """The dual of an open mesh (numpy; its twins and rings derived when asked for).
+    """The dual of an open mesh (numpy; its twins and rings written when asked for).
 
     Vertices: the F face centroids, the B midpoints of the boundary edges,
     then the C corners.  The face of vertex v: the centroids of v's faces
@@ -135,7 +141,7 @@ def _open_dual(mesh: Mesh) -> Mesh:
     B = bh.size
     kept = corner_ids(mesh, F + B)
     mids = np.arange(F, F + B, dtype=np.int64)
-    corners, offsets = open_vertex_faces(mesh, (mesh.halfedge_face,), mids, mids, kept)
+    corners, offsets, placed = placed_vertex_faces(mesh, (mesh.halfedge_face,), mids, mids, kept)
     v = mesh.vertices
     at = np.flatnonzero(kept >= 0)
     vertices = np.empty((F + B + at.size, 3))
@@ -143,9 +149,87 @@ def _open_dual(mesh: Mesh) -> Mesh:
     a, b = v[mesh.corners[bh]], v[mesh.head[bh]]
     vertices[F : F + B] = 0.5 * a + 0.5 * b  # (no sum that could overflow)
     vertices[F + B :] = v[at]
-    out = output(vertices, corners, offsets)
+    faces = _mesh.faces_only(mesh)
+    one = (kept[mesh.head[bh]] < 0).astype(np.int64)  # boundary half-edges at head(bh[j]): 1 or 2
+    dt = index_dtype(vertices.shape[0], corners.size)
+    size = corners.size
+    written = functools.cache(lambda: _open_dual_connectivity(faces, placed, one, size, dt))
+    out = output(vertices, corners, offsets, twin=written, rings=written)
     _mesh.note_extent(out, _mesh.extent(mesh))
     return out
+
+
+def _open_dual_connectivity(
+    mesh, at: np.ndarray, one: np.ndarray, size: int, dt: np.dtype
+) -> Several:
+    """The twins, boundary and vertex rings of the dual of an open mesh (its faces),
+    written from its rings.
+
+    ``at`` is where every vertex ring entry of ``mesh`` went in the dual's
+    corners (:func:`~pentanb.schemes._build.placed_vertex_faces`); ``one``
+    is 1 where the face of ``head[bh[j]]`` has one boundary half-edge, 0
+    where it has two (a corner kept); ``size`` and ``dt`` are the dual's
+    number of half-edges and index dtype.  The dual half-edge at the centroid
+    of face half-edge ``h``'s face (position ``pos[h]``) is the twin of the
+    one at ``next[rotation[h]]``, as on a closed mesh; where ``rotation[h]``
+    is a hole half-edge (``prev[h]`` on the boundary), of the one from the
+    midpoint of ``prev[h]`` (just before ``pos[prev[h]]``).  A boundary
+    vertex's face starts with its boundary half-edges (1 or 2), which
+    follow the input's loops.
+    """
+    ring, _ = mesh.vertex_ring
+    H, bh = mesh.n_halfedges, mesh.boundary_halfedges
+    hole = ring >= H
+    face = ~hole
+    pos = np.empty(H, dtype=np.int64)
+    pos[ring[face]] = at[face]
+    base = np.empty(bh.size, dtype=np.int64)
+    base[ring[hole] - H] = at[hole]  # hole half-edge H + j: at head(bh[j])
+    rot, nxt, prv = mesh.rotation, mesh.next, mesh.prev
+    hole_next = rot >= H
+    tgt = pos[nxt[np.where(hole_next, 0, rot)]]
+    tgt[hole_next] = pos[prv[hole_next]] - 1
+    twin = np.empty(size, dtype=dt)
+    twin[pos] = tgt
+    twin[pos[bh] - 1] = pos[nxt[bh]]
+    # the boundary: base[j] (mid(bh[j]) -> mid of the next, or -> the corner), base[j] + 1
+    per = np.zeros(bh.size + 1, dtype=np.int64)
+    np.cumsum(2 - one, out=per[1:])
+    chain = np.repeat(base, 2 - one)
+    chain[per[:-1][one == 0] + 1] += 1
+    loops = _mesh.loop_offsets(mesh)
+    got = open_twins_from(twin, chain, per[loops])
+    twin = got["twin"]
+    # the rings: round the centroid of face f, the dual half-edges of f's
+    # half-edges in face order; round the midpoint of bh[j], its hole
+    # half-edge, base[j] and the one to the centroid of bh[j]'s face; round
+    # a corner, its hole half-edge and base[j] + 1
+    before = np.empty(bh.size, dtype=np.int64)  # the loop predecessor of every j
+    before[loop_successor(mesh)] = np.arange(bh.size)
+    last_in = base[before] + 1 - one[before]  # the boundary half-edge entering mid(bh[j])
+    mids = np.empty((bh.size, 3), dtype=dt)
+    mids[:, 0] = twin[last_in]
+    mids[:, 1] = base
+    mids[:, 2] = pos[bh] - 1
+    two = np.flatnonzero(one == 0)
+    two = two[np.argsort(mesh.head[bh[two]], kind="stable")]  # the corners in vertex order
+    corners = np.empty((two.size, 2), dtype=dt)
+    corners[:, 0] = twin[base[two]]
+    corners[:, 1] = base[two] + 1
+    F, offsets = mesh.n_faces, mesh.offsets
+    ring = np.concatenate(
+        [
+            start_at_max(pos.astype(dt), offsets, _mesh.uniform_size(mesh)),
+            mids.reshape(-1),
+            corners.reshape(-1),
+        ]
+    )
+    ring_off = np.empty(F + bh.size + two.size + 1, dtype=dt)
+    ring_off[: F + 1] = offsets
+    ring_off[F + 1 : F + bh.size + 1] = np.arange(1, bh.size + 1) * 3 + H
+    ring_off[F + bh.size + 1 :] = np.arange(1, two.size + 1) * 2 + H + 3 * bh.size
+    got["vertex_ring"] = (ring, ring_off)
+    return got
 
 
 def _dual_twin(mesh) -> np.ndarray:
