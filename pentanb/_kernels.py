@@ -666,11 +666,13 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
 
 
 @jit
-def vertex_normals(vertices, corners, offsets):  # pragma: no cover - compiled
+def vertex_normals(vertices, corners, offsets, out):  # pragma: no cover - compiled
     # every face's vector area by Newell's formula (its corners in order,
     # summed one by one in float64), added to each of its vertices in face
-    # order, then normalised and written as float32: the numpy path's
-    # (pentanb.viz.drawing.vertex_normals) numbers; a zero sum gives (0, 0, 1)
+    # order, then normalised and written as float32 into every block of n
+    # rows of out ((copies * n, 3) float32: the buffer the view sends, so no
+    # copy is made of them): the numpy path's (pentanb.viz.drawing.vertex_normals)
+    # numbers; a zero sum gives (0, 0, 1)
     n = vertices.shape[0]
     total = np.zeros((n, 3))
     m = offsets.size - 1
@@ -697,16 +699,16 @@ def vertex_normals(vertices, corners, offsets):  # pragma: no cover - compiled
             total[u, 0] += ax
             total[u, 1] += ay
             total[u, 2] += az
-    out = np.empty((n, 3), np.float32)
+    copies = out.shape[0] // max(n, 1)
     for u in range(n):
-        x, y, z = total[u, 0], total[u, 1], total[u, 2]
+        x, y, z = total[ix(u), 0], total[ix(u), 1], total[ix(u), 2]
         length = np.sqrt(x * x + y * y + z * z)
         if length > 0.0:
-            out[u, 0] = np.float32(x / length)
-            out[u, 1] = np.float32(y / length)
-            out[u, 2] = np.float32(z / length)
+            p, q, r = np.float32(x / length), np.float32(y / length), np.float32(z / length)
         else:
-            out[u, 0] = np.float32(0.0)
-            out[u, 1] = np.float32(0.0)
-            out[u, 2] = np.float32(1.0)
-    return out
+            p, q, r = np.float32(0.0), np.float32(0.0), np.float32(1.0)
+        for k in range(copies):
+            row = ix(u + k * n)
+            out[row, 0] = p
+            out[row, 1] = q
+            out[row, 2] = r

@@ -617,16 +617,27 @@ class Explorer(W.HBox):
         later one is the same)."""
         shape, scheme, duals, _, iterations = key
         base = self._base(shape)
+        # (a move asks twice, for its predicted cost and its size check: the
+        # counts of the last key asked for are kept, with the mesh they are of)
+        memo = getattr(self, "_levels_memo", None)
+        if memo is not None and memo[0] is base and memo[1] == (scheme, duals, iterations):
+            yield from memo[2]
+            return
+        found: list[tuple[int, list[tuple[int, int, int]]]] = []
         before = (base.n_vertices, base.n_edges, base.n_faces)
         for level in range(1, iterations + 1):
             if base.is_closed:
                 steps = predict_counts(before, scheme, 1, duals)
             else:  # the boundary's counts too: predicted from the mesh
                 steps = predict_counts(base, scheme, level, duals)[-(1 + duals) :]
+            found.append((level, steps))
             yield level, steps
             if steps[-1] == before:
-                return
+                break
             before = steps[-1]
+        # (kept only when read to the end: a check that stops at the first
+        # level too large never works out the levels after it)
+        self._levels_memo = (base, (scheme, duals, iterations), found)
 
     def _largest_steps(self, base: Mesh, iterations: int):
         """(level, (V, E, F)) of the largest step of every level up to ``iterations``."""
