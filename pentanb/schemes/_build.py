@@ -550,26 +550,34 @@ def placed_vertex_faces(
         first item, a hole half-edge's ``entering`` point.
     """
     ring, ring_off = mesh.vertex_ring
-    H, per = mesh.n_halfedges, len(items)
-    ring = ring.astype(np.int64)
-    hole = ring >= H
-    j = ring[hole] - H
+    H, per, N = mesh.n_halfedges, len(items), ring.size
+    hp = np.flatnonzero(ring >= H)  # the hole half-edges' places: few
+    j = ring[hp].astype(np.int64) - H
     if kept is None:
         keep = np.full(j.size, -1, dtype=np.int64)
     else:  # v, the hole half-edge's tail: the head of bh[j]
         keep = kept[mesh.head[mesh.boundary_halfedges[j]]]
-    count = np.full(ring.size, per, dtype=np.int64)
-    count[hole] = 2 + (keep >= 0)
-    at = np.cumsum(count) - count
-    out = np.empty(int(count.sum()), dtype=np.int64)
-    face = ring[~hole]
-    base = at[~hole]
+    count = 2 + (keep >= 0)  # what every hole half-edge gives, the others ``per``
+    # at[i] = per * i + what the hole half-edges before i give beyond ``per``
+    shift = np.zeros(hp.size + 1, dtype=np.int64)
+    np.cumsum(count - per, out=shift[1:])
+    bounds = np.empty(hp.size + 2, dtype=np.int64)
+    bounds[0], bounds[1:-1], bounds[-1] = 0, hp + 1, N
+    at = np.repeat(shift, np.diff(bounds))
+    at += np.arange(0, per * N, per, dtype=np.int64)
+    total = per * N + int(shift[-1])
+    out = np.empty(total, dtype=np.int64)
+    safe = np.minimum(ring, H - 1)  # a hole half-edge's items: any, written over below
     for s, item in enumerate(items):
-        out[base + s] = item[face]
-    base = at[hole]
+        if per > 2:  # (a hole half-edge gives 2 or 3: only its own places are written over)
+            mask = ring < H
+            out[at[mask] + s] = item.take(ring[mask])
+        else:
+            out[at + s if s else at] = item.take(safe)
+    base = at[hp]
     out[base] = entering[j]
     out[base[keep >= 0] + 1] = keep[keep >= 0]
-    out[base + count[hole] - 1] = leaving[loop_successor(mesh)[j]]
-    total = np.zeros(count.size + 1, dtype=np.int64)
-    np.cumsum(count, out=total[1:])
-    return out, total[ring_off], at
+    out[base + count - 1] = leaving[loop_successor(mesh)[j]]
+    ends = np.asarray(ring_off, dtype=np.int64)
+    offsets = np.where(ends < N, at.take(np.minimum(ends, max(N - 1, 0))), total) if N else ends
+    return out, offsets, at

@@ -13,6 +13,8 @@ faces (numpy) instead of written from the input's.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from .. import _jit
@@ -106,14 +108,15 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     vertices[:n] = mesh.vertices
     edge_points(mesh, 2, out=vertices[n : n + 2 * E])
     vertices[n + 2 * E :] = mesh.face_centroids
-    if not closed:  # its twins written from the input's, its rings derived from its faces
-        twin_in, offsets_in = mesh.twin, mesh.offsets
-        bh, loops = mesh.boundary_halfedges, _mesh.loop_offsets(mesh)
+    if not closed:  # its twins, boundary and rings written from the input's, together
+        source = _mesh.faces_only(mesh)
+        written = functools.cache(lambda: _pentagonalized_open(source, dt))
         return output(
             vertices,
             faces.reshape(-1),
             np.arange(0, 5 * H + 1, 5, dtype=dt),
-            twin=lambda: _pentagonalized_open_twin(twin_in, offsets_in, bh, loops, dt),
+            twin=written,
+            rings=written,
         )
     # the twins' producer holds the input's twins and offsets only, not its
     # faces (whose cached connectivity would then stay alive until the
@@ -167,6 +170,70 @@ def _pentagonalized_open_twin(
     chain[:, 1] = 5 * bh
     chain[:, 2] = chain[:, 1] + 1
     return open_twins_from(out, chain.reshape(-1), 3 * loops)
+
+
+def _pentagonalized_open(mesh, dt: np.dtype) -> Several:
+    """The twins, boundary and vertex rings of ``pentagonalize(mesh)`` for an open ``mesh``.
+
+    The rings are :func:`_pentagonalized_rings`', each turned to start at
+    its largest half-edge (a boundary vertex's: at its hole half-edge), as
+    derived rings do.  On the boundary: round an old vertex, its hole
+    half-edge stands for the input's; round the trisection point t1 of a
+    boundary half-edge b (near its tail): the hole half-edge, ``5b`` and
+    ``5 prev[b] + 3``; round t2 (near its head, a vertex of one face): the
+    hole half-edge and ``5b + 1``.
+    """
+    H, E, bh = mesh.n_halfedges, mesh.n_edges, mesh.boundary_halfedges
+    got = _pentagonalized_open_twin(mesh.twin, mesh.offsets, bh, _mesh.loop_offsets(mesh), dt)
+    twin_out = got["twin"]
+    prv = mesh.prev.astype(dt, copy=False)
+    ring, ring_off = mesh.vertex_ring
+    n = ring_off.size - 1
+    # round an old vertex: 5 prev[h] + 2, the hole half-edge for the input's
+    old = prv.take(np.minimum(ring, H - 1))
+    old *= 5
+    old += 2
+    hp = np.flatnonzero(ring >= H)
+    old[hp] = twin_out[5 * bh[ring[hp] - H].astype(np.int64) + 1]
+    # round the trisection points, 3 each ((E, 2, 3): the edge's points 2e, 2e + 1)
+    eh = mesh.edge_halfedge.astype(dt, copy=False)
+    back = mesh.twin.astype(dt, copy=True)[eh]
+    edge_of_b = mesh.halfedge_edge[bh].astype(np.int64)
+    back[edge_of_b] = eh[edge_of_b]  # (any face half-edge: written over below)
+    pts = np.empty((E, 2, 3), dtype=dt)
+    for s, (part, add) in enumerate(((eh, 0), (prv[eh], 3), (back, 1))):
+        col = part * 5
+        col += add
+        pts[:, 0, s] = col
+    for s, (part, add) in enumerate(((back, 0), (prv[back], 3), (eh, 1))):
+        col = part * 5
+        col += add
+        pts[:, 1, s] = col
+    b = bh.astype(np.int64)
+    t1 = (mesh.corners[bh] > mesh.head[bh]).astype(np.int64)  # t1 is 2e + 1 when b runs down
+    pb = prv[bh].astype(np.int64)
+    pts[edge_of_b, t1, 0] = twin_out[5 * pb + 2]
+    pts[edge_of_b, t1, 1] = 5 * b
+    pts[edge_of_b, t1, 2] = 5 * pb + 3
+    pts[edge_of_b, 1 - t1, 0] = twin_out[5 * b]
+    pts[edge_of_b, 1 - t1, 1] = 5 * b + 1
+    pts[edge_of_b, 1 - t1, 2] = -1  # t2: two half-edges
+    flat = start_at_max(pts.reshape(-1), None, 3)  # (a hole half-edge is the largest)
+    pad = 3 * (2 * edge_of_b + 1 - t1) + 2  # where the -1 sits: the last of t2's row
+    points = np.delete(flat, pad)
+    # round the centre of f: 5h + 4 for f's half-edges
+    offsets, k = mesh.offsets, _mesh.uniform_size(mesh)
+    centres = start_at_max(np.arange(4, 5 * H, 5, dtype=dt), offsets, k)
+    sizes = np.full(2 * E, 3, dtype=np.int64)
+    sizes[2 * edge_of_b + 1 - t1] = 2
+    out_off = np.empty(n + 2 * E + mesh.n_faces + 1, dtype=dt)
+    out_off[: n + 1] = ring_off
+    np.cumsum(sizes, out=out_off[n + 1 : n + 2 * E + 1])
+    out_off[n + 1 : n + 2 * E + 1] += ring_off[-1]
+    out_off[n + 2 * E + 1 :] = offsets[1:]
+    out_off[n + 2 * E + 1 :] += out_off[n + 2 * E]
+    got["vertex_ring"] = (np.concatenate([old, points, centres]), out_off)
+    return got
 
 
 def _pentagonalized_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
