@@ -325,7 +325,7 @@ def remeshed(
     twin_of: Callable[[Any, np.dtype], np.ndarray],
     rings_of: Callable[[Any, np.dtype], Rings | Several],
     size_counts: tuple[tuple[int, int], ...] | None = None,
-    open_twin_of: Callable[[Any, np.dtype], Several] | None = None,
+    open_of: Callable[[Any, np.dtype], Several] | None = None,
 ) -> Mesh:
     """:func:`output` of a remeshing of ``mesh``, its connectivity written from ``mesh``'s.
 
@@ -333,14 +333,19 @@ def remeshed(
     ``rings_of(faces, dt)``, run only when first asked for, ``faces`` being
     ``mesh``'s faces without its positions (so the output does not keep
     them alive).  Those write a closed mesh's.  An open mesh's output
-    takes its twins and boundary from ``open_twin_of(faces, dt)`` (see
-    :func:`open_twins_from`) when given, else derives them from its faces
-    (the numpy path), and derives its rings.
+    takes its twins, boundary and vertex rings from ``open_of(faces, dt)``
+    (one call, a :class:`~pentanb.mesh.Several` of ``twin``, ``_boundary``,
+    see :func:`open_twins_from`, and ``vertex_ring``) when given, else
+    derives them from its faces (the numpy path).
     """
     faces = _mesh.faces_only(mesh)
     if not mesh.is_closed:
-        twin = None if open_twin_of is None else (lambda: open_twin_of(faces, dt))
-        return output(vertices, corners, offsets, twin=twin, size_counts=size_counts)
+        if open_of is None:
+            return output(vertices, corners, offsets, size_counts=size_counts)
+        written = functools.cache(lambda: open_of(faces, dt))
+        return output(
+            vertices, corners, offsets, twin=written, rings=written, size_counts=size_counts
+        )
     return output(
         vertices,
         corners,
@@ -537,14 +542,18 @@ def placed_vertex_faces(
     entering: np.ndarray,
     leaving: np.ndarray,
     kept: np.ndarray | None = None,
+    n_out: int | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """:func:`open_vertex_faces`, and where every vertex ring entry went.
 
+    ``n_out``, the output's number of vertices when known, makes ``corners``
+    and ``at`` of the output's index dtype (:func:`index_dtype`) instead of int64.
+
     Returns
     -------
-    corners : int64 array
+    corners : int array
     offsets : (n + 1,) int64
-    at : (H + B,) int64
+    at : (H + B,) int
         The position in ``corners`` of what every entry of
         :attr:`~pentanb.Mesh.vertex_ring` contributes: a face half-edge's
         first item, a hole half-edge's ``entering`` point.
@@ -563,10 +572,11 @@ def placed_vertex_faces(
     np.cumsum(count - per, out=shift[1:])
     bounds = np.empty(hp.size + 2, dtype=np.int64)
     bounds[0], bounds[1:-1], bounds[-1] = 0, hp + 1, N
-    at = np.repeat(shift, np.diff(bounds))
-    at += np.arange(0, per * N, per, dtype=np.int64)
     total = per * N + int(shift[-1])
-    out = np.empty(total, dtype=np.int64)
+    dt = np.dtype(np.int64) if n_out is None else index_dtype(n_out, total)
+    at = np.repeat(shift.astype(dt), np.diff(bounds))
+    at += np.arange(0, per * N, per, dtype=dt)
+    out = np.empty(total, dtype=dt)
     safe = np.minimum(ring, H - 1)  # a hole half-edge's items: any, written over below
     for s, item in enumerate(items):
         if per > 2:  # (a hole half-edge gives 2 or 3: only its own places are written over)

@@ -366,7 +366,7 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
         _preserved_twin,
         _preserved_rings,
         size_counts=tuple(sorted(histogram.items())),
-        open_twin_of=_preserved_open_twin,
+        open_of=_preserved_open,
     )
 
 
@@ -399,6 +399,67 @@ def _preserved_open_twin(mesh, dt: np.dtype) -> Several:
     chain[:, 0] = H + 5 * prv[bh].astype(np.int64) + 1
     chain[:, 1] = H + 5 * bh.astype(np.int64)
     return open_twins_from(out, chain.reshape(-1), 2 * _mesh.loop_offsets(mesh))
+
+
+def _preserved_open(mesh, dt: np.dtype) -> Several:
+    """The twins, boundary and vertex rings of ``preserve_pentagons(mesh)`` for an open ``mesh``.
+
+    The rings are :func:`_preserved_rings`', each turned to start at its
+    largest half-edge (a boundary vertex's: at its hole half-edge), as
+    derived rings do.  On the boundary: round an old vertex, its hole
+    half-edge stands for the input's; round the midpoint of a boundary
+    half-edge b: the hole half-edge, ``H + 5b`` and ``H + 5 prev[b] + 2``.
+    """
+    H, E, bh = mesh.n_halfedges, mesh.n_edges, mesh.boundary_halfedges
+    got = _preserved_open_twin(mesh, dt)
+    twin_out = got["twin"]
+    prv = mesh.prev.astype(dt, copy=False)
+    ring, ring_off = mesh.vertex_ring
+    n = ring_off.size - 1
+    # round an old vertex: H + 5 prev[h] + 1, the hole half-edge for the input's
+    old = prv.take(np.minimum(ring, H - 1))
+    old *= 5
+    old += H + 1
+    hp = np.flatnonzero(ring >= H)
+    old[hp] = twin_out[H + 5 * bh[ring[hp] - H].astype(np.int64)]
+    # round the midpoints, 4 each (3 on the boundary)
+    eh = mesh.edge_halfedge.astype(dt, copy=False)
+    back = mesh.twin.astype(dt, copy=True)[eh]
+    edge_of_b = mesh.halfedge_edge[bh].astype(np.int64)
+    back[edge_of_b] = eh[edge_of_b]  # (any face half-edge: written over below)
+    mids = np.empty((E, 4), dtype=dt)
+    for s, (part, add) in enumerate(((eh, 0), (prv[eh], 2), (back, 0), (prv[back], 2))):
+        col = part * 5
+        col += H + add
+        mids[:, s] = col
+    b = bh.astype(np.int64)
+    pb = prv[bh].astype(np.int64)
+    mids[edge_of_b, 0] = twin_out[H + 5 * pb + 1]
+    mids[edge_of_b, 1] = H + 5 * b
+    mids[edge_of_b, 2] = H + 5 * pb + 2
+    mids[edge_of_b, 3] = -1  # three half-edges
+    mid_ring = np.delete(start_at_max(mids.reshape(-1), None, 4), 4 * edge_of_b + 3)
+    # round the copy vertex of h: h, H + 5 prev[h] + 3, H + 5h + 4
+    copies = np.empty((H, 3), dtype=dt)
+    h = np.arange(H, dtype=dt)
+    copies[:, 0] = h
+    col = prv * 5
+    col += H + 3
+    copies[:, 1] = col
+    col = h * 5
+    col += H + 4
+    copies[:, 2] = col
+    sizes = np.full(E, 4, dtype=np.int64)
+    sizes[edge_of_b] = 3
+    out_off = np.empty(n + E + H + 1, dtype=dt)
+    out_off[: n + 1] = ring_off
+    np.cumsum(sizes, out=out_off[n + 1 : n + E + 1])
+    out_off[n + 1 : n + E + 1] += ring_off[-1]
+    out_off[n + E + 1 :] = np.arange(3, 3 * H + 1, 3, dtype=dt)
+    out_off[n + E + 1 :] += out_off[n + E]
+    rings = np.concatenate([old, mid_ring, start_at_max(copies.reshape(-1), None, 3)])
+    got["vertex_ring"] = (rings, out_off)
+    return got
 
 
 def _preserved_twin_of(twin: np.ndarray, nxt: np.ndarray, prv: np.ndarray, dt: np.dtype):

@@ -141,9 +141,12 @@ def _open_dual(mesh: Mesh) -> Mesh:
     B = bh.size
     kept = corner_ids(mesh, F + B)
     mids = np.arange(F, F + B, dtype=np.int64)
-    corners, offsets, placed = placed_vertex_faces(mesh, (mesh.halfedge_face,), mids, mids, kept)
-    v = mesh.vertices
     at = np.flatnonzero(kept >= 0)
+    n_out = F + B + at.size
+    corners, offsets, placed = placed_vertex_faces(
+        mesh, (mesh.halfedge_face,), mids, mids, kept, n_out
+    )
+    v = mesh.vertices
     vertices = np.empty((F + B + at.size, 3))
     vertices[:F] = mesh.face_centroids
     a, b = v[mesh.corners[bh]], v[mesh.head[bh]]
@@ -179,19 +182,19 @@ def _open_dual_connectivity(
     """
     ring, _ = mesh.vertex_ring
     H, bh = mesh.n_halfedges, mesh.boundary_halfedges
-    hole = ring >= H
-    face = ~hole
-    pos = np.empty(H, dtype=np.int64)
-    pos[ring[face]] = at[face]
-    base = np.empty(bh.size, dtype=np.int64)
-    base[ring[hole] - H] = at[hole]  # hole half-edge H + j: at head(bh[j])
-    rot, nxt, prv = mesh.rotation, mesh.next, mesh.prev
-    hole_next = rot >= H
-    tgt = pos[nxt[np.where(hole_next, 0, rot)]]
-    tgt[hole_next] = pos[prv[hole_next]] - 1
+    # the ring holds every half-edge once, hole half-edges too: one scatter
+    placed = np.empty(ring.size, dtype=dt)
+    placed[ring] = at
+    pos = placed[:H]
+    base = placed[H:].astype(np.int64)  # hole half-edge H + j: at head(bh[j])
+    nxt = mesh.next
+    after = nxt[bh]  # the half-edges whose rotation is a hole half-edge
+    tgt = np.minimum(mesh.rotation, H - 1)  # (a hole half-edge: any, written over)
+    tgt = pos.take(nxt.take(tgt))
+    tgt[after] = pos[bh] - 1
     twin = np.empty(size, dtype=dt)
     twin[pos] = tgt
-    twin[pos[bh] - 1] = pos[nxt[bh]]
+    twin[pos[bh] - 1] = pos[after]
     # the boundary: base[j] (mid(bh[j]) -> mid of the next, or -> the corner), base[j] + 1
     per = np.zeros(bh.size + 1, dtype=np.int64)
     np.cumsum(2 - one, out=per[1:])
@@ -219,7 +222,7 @@ def _open_dual_connectivity(
     F, offsets = mesh.n_faces, mesh.offsets
     ring = np.concatenate(
         [
-            start_at_max(pos.astype(dt), offsets, _mesh.uniform_size(mesh)),
+            start_at_max(pos, offsets, _mesh.uniform_size(mesh)),
             mids.reshape(-1),
             corners.reshape(-1),
         ]
