@@ -80,7 +80,7 @@ EXERCISE_TAG = "exercise"
 KINDS = {
     "predict": "predict counts (or a number) before running anything",
     "explain": "move a slider or read a table, then answer a checkable question",
-    "find": "find a mesh on which a claim, read strictly, does not hold",
+    "find": "find a mesh on which a claim read strictly, or its hypothesis dropped, fails",
     "extend": "write a small scheme of your own from the package's operators",
 }
 
@@ -193,6 +193,7 @@ _NOTEBOOKS = {
     "08": "08_convergence",
     "09": "09_continuity",
     "10": "10_conway",
+    "11": "11_open_surfaces",
 }
 
 
@@ -1120,3 +1121,63 @@ def _ex_10_3(answer: Any) -> str | None:
     if _letter(answer, "abc") == _canonical_letter():
         return None
     return "type ddgC, read the planarity, then tick 'canonical positions' and read it again"
+
+
+# --------------------------------------------------------------------------------------
+# 11 open surfaces
+# --------------------------------------------------------------------------------------
+
+
+def _patch() -> Mesh:
+    """Notebook 11's patch: a 4 x 3 grid of squares, its middle square left out."""
+    vertices = [[x, y, 0.1 * (x - 2) ** 2] for y in range(4) for x in range(5)]
+    faces = [
+        [y * 5 + x, y * 5 + x + 1, y * 5 + x + 6, y * 5 + x + 5]
+        for y in range(3)
+        for x in range(4)
+        if (x, y) != (1, 1)
+    ]
+    return Mesh(vertices, faces)
+
+
+@_exercise("11.1", "predict", "(V, E, F) of the pentagonalized patch with a hole")
+def _ex_11_1(answer: Any) -> str | None:
+    given = _counts(answer)
+    patch = _patch()
+    expected = tuple(predict_counts(patch, "pentagonalize", 1, 0)[0])
+    hint = _compare_counts(given, expected, patch.euler_characteristic)
+    if hint and given[2] != expected[2]:
+        hint += "; one pentagon per corner, and the corners add up to 2E - B here"
+    return hint
+
+
+@functools.lru_cache(maxsize=1)
+def _disk_loops() -> int:
+    disk = shapes.open_disk()
+    loops = {
+        subdivide(disk, s, k, d).n_boundary_loops
+        for s in ("pentagonalize", "preserve_pentagons")
+        for k, d in ((1, 0), (2, 2))
+    }
+    assert len(loops) == 1
+    return loops.pop()
+
+
+@_exercise("11.2", "explain", "the boundary loops after the schemes and the duals")
+def _ex_11_2(answer: Any) -> str | None:
+    if _whole(answer) == _disk_loops():
+        return None
+    return "in Explore, read the line 'boundary:' at a few positions of the sliders"
+
+
+@_exercise("11.3", "find", "a hexagonal mesh of genus 0")
+def _ex_11_3(answer: Any) -> str | None:
+    mesh = _mesh(answer)
+    sizes = mesh.face_size_histogram()
+    if set(sizes) != {6}:
+        return f"every face must be a hexagon; this mesh has faces {_fmt_hist(sizes)}"
+    if mesh.genus != 0:
+        return f"this mesh has genus {mesh.genus}; find one of genus 0"
+    if mesh.is_closed:
+        return "Section 4 rules out a closed hexagonal mesh of genus 0: what else can a mesh be?"
+    return None

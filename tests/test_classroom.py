@@ -6,7 +6,7 @@ sections, and the students' version of the notebooks.
   a hint, never a traceback, on an answer of the wrong kind.  The teacher's answers
   are written here from the paper's count formulas and by hand, not computed by the
   checks.
-* Every notebook 01-10 ends with an "Exercises" section of two to four exercises:
+* Every numbered notebook ends with an "Exercises" section of two to four exercises:
   a question, an answer cell calling ``check`` and a solution cell tagged
   ``solution``.
 * :func:`pentanb.classroom.student_version` (``python -m pentanb classroom OUT_DIR``)
@@ -97,6 +97,13 @@ TEACHER = {
     "10.1": (80, 120, 42),
     "10.2": "gg",
     "10.3": "c",
+    # open patch (20, 31, 11), 18 boundary edges: corners 2E - B = 44; V + 2E + F, 3E + 44, 44
+    "11.1": (93, 137, 44),
+    "11.2": 3,  # the rim and two holes of the open disk
+    "11.3": pentanb.Mesh(
+        [[math.cos(k * math.pi / 3), math.sin(k * math.pi / 3), 0] for k in range(6)],
+        [[0, 1, 2, 3, 4, 5]],
+    ),
 }
 
 # Wrong answers of the right kind.
@@ -133,6 +140,9 @@ WRONG = {
     "10.1": (80, 120, 40),
     "10.2": "ddg",
     "10.3": "a",
+    "11.1": (93, 155, 62),  # as if the patch were closed: 5E, 2E
+    "11.2": 2,
+    "11.3": "hexagonal_torus",  # hexagons, but genus 1
 }
 
 
@@ -267,8 +277,9 @@ def _section(nb: dict) -> list[dict]:
     return [c for c in nb["cells"] if mine & _tags(c)]
 
 
-def test_the_notebooks_with_exercises_are_01_to_10():
-    assert [p.stem[:2] for p in WITH_EXERCISES] == [f"{k:02d}" for k in range(1, 11)]
+def test_every_numbered_notebook_has_exercises():
+    assert [p.stem[:2] for p in WITH_EXERCISES] == [p.stem[:2] for p in NOTEBOOKS]
+    assert len(NOTEBOOKS) >= 11
 
 
 @pytest.mark.parametrize("path", WITH_EXERCISES, ids=[p.stem for p in WITH_EXERCISES])
@@ -430,3 +441,21 @@ def test_executed_the_students_checks_are_not_answered_yet(students, kernel_dir,
     assert not [t for t, _ in said if classroom.SOLUTION_TAG in t]
     lines = [_LINE.findall(out) for _, out in said]
     assert [x for x in lines if x] == [[(i, "not answered yet")] for i in EXERCISES]
+
+
+def test_the_public_functions_have_numpydoc_sections():
+    """As tests/test_api_docs.py asks of the public modules."""
+    import inspect
+
+    from test_api_docs import _methods, problems
+
+    found = {}
+    for name in classroom.__all__:
+        obj = getattr(classroom, name)
+        if inspect.isclass(obj):
+            for method, func, bound in _methods(obj):
+                found[f"{name}.{method}"] = problems(func, bound)
+        elif callable(obj):
+            found[name] = problems(obj)
+    assert {"check", "exercises", "student_version", "Exercise.check"} <= set(found)
+    assert not any(found.values()), {k: v for k, v in found.items() if v}
