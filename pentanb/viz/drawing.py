@@ -223,13 +223,19 @@ def face_areas(mesh: Mesh) -> NDArray[np.float64]:
         else:
             faces = np.flatnonzero(sizes == n)
             rows = corners[offsets[faces][:, None] + np.arange(n)]
-        x, y, z = (c.take(rows) for c in cols)
+        # (n, faces): the i-th corners of all faces side by side, contiguous
+        at = np.ascontiguousarray(rows.T)  # (a gather by a strided index is slow)
+        x, y, z = (c.take(at) for c in cols)
         ax, ay, az = (np.zeros(len(rows)) for _ in range(3))
+        t, u = np.empty(len(rows)), np.empty(len(rows))
         for i in range(n):  # in order, corner by corner (no pairwise sums)
             j = (i + 1) % n
-            ax += y[:, i] * z[:, j] - z[:, i] * y[:, j]
-            ay += z[:, i] * x[:, j] - x[:, i] * z[:, j]
-            az += x[:, i] * y[:, j] - y[:, i] * x[:, j]
+            for a, p, q in ((ax, y, z), (ay, z, x), (az, x, y)):
+                # a += p_i q_j - q_i p_j, without temporaries
+                np.multiply(p[i], q[j], out=t)
+                np.multiply(q[i], p[j], out=u)
+                t -= u
+                a += t
         block = np.stack([ax, ay, az], axis=1)
         if faces is None:
             area = block
