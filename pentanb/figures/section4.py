@@ -23,7 +23,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Mapping
 from fractions import Fraction
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -429,7 +429,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
     )
     # Section 4 on surfaces with boundary (the paper's meshes are closed): V - E + F = 2 - 2g - b
     # and nF = 2E - e_b extend equation (1); a boundary lets hexagons mesh a genus-0 surface
-    rows = {}
+    bounded: dict[str, dict[str, Any]] = {}
     for k in role("with boundary"):
         mk = m[k]
         e_b = mk.n_boundary_edges
@@ -441,7 +441,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             if n is not None and mk.n_boundary_loops > 0
             else None
         )
-        rows[k] = {
+        bounded[k] = {
             "n": n,
             "g, b": (genus[k], mk.n_boundary_loops),
             "V - E + F": mk.euler_characteristic,
@@ -453,7 +453,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
                 n, genus[k], mk.n_boundary_loops, mk.n_vertices, e_b
             ),
         }
-    disk = rows.get("hexagon disk", {})
+    disk = bounded.get("hexagon disk", {})
     seen = (
         disk.get("n") == 6
         and disk.get("g, b") == (0, 1)
@@ -463,7 +463,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             and abs(r["equation (1) with boundary"] - r["2E/V"]) < 1e-12
             and r["can tile"]
             and r["V - E + F"] == 2 - 2 * r["g, b"][0] - r["g, b"][1]
-            for r in rows.values()
+            for r in bounded.values()
         )
     )
     out.append(
@@ -472,7 +472,7 @@ def claims(meshes: Mapping[str, Mesh] | None = None) -> list[Claim]:
             "Section 4, extended to surfaces with boundary",
             "For g = 0 and n = 6 the equation 1 becomes [...] m = 3 (1 - 2/v) [...] This shows "
             "that it is not possible to create a hexagonal mesh for g = 0.",
-            "built open meshes: " + fmt(rows),
+            "built open meshes: " + fmt(bounded),
             "on surfaces with boundary, equation (1) extended by b loops and e_b boundary edges "
             "gives each built mesh's average valence, and a disk (g = 0, b = 1) has a mesh of "
             "hexagons only",
