@@ -1024,3 +1024,21 @@ def test_open_outputs_connectivity_is_written_as_pairing_finds_it(name, op, monk
 
 def _loops(m: Mesh) -> list[list[int]]:
     return [x.tolist() for x in m.boundary_loops]
+
+
+@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons", None])
+@pytest.mark.parametrize("name", list(WRITTEN))
+def test_the_dual_of_an_open_dual_is_the_one_built_from_its_faces(name, scheme):
+    m = WRITTEN[name]()
+    if scheme is not None:
+        m = pb.SCHEMES[scheme](m)
+    d1 = pb.dual(m)
+    fresh = Mesh(d1.vertices, face_lists(d1))  # the same mesh, not known as a dual
+    for got, want in ((pb.dual(d1), pb.dual(fresh)), (pb.smooth(d1, 3), pb.smooth(fresh, 3))):
+        assert face_lists(got) == face_lists(want)
+        assert np.array_equal(got.vertices, want.vertices)
+        assert got.boundary_halfedges.tolist() == want.boundary_halfedges.tolist()
+        assert got.twin.tolist() == want.twin.tolist()
+        ring, want_ring = got.vertex_ring, want.vertex_ring
+        assert ring[0].tolist() == want_ring[0].tolist()
+        assert ring[1].tolist() == want_ring[1].tolist()

@@ -32,6 +32,9 @@ __all__ = [
     "dual_again",
     "rescaled",
     "loop_offsets",
+    "note_boundary",
+    "note_open_dual",
+    "open_dual_record",
 ]
 
 
@@ -193,3 +196,22 @@ def loop_offsets(mesh: Any) -> IntArray:
     """(L + 1,) int: loop ``i`` of ``mesh`` (a Mesh or its :func:`faces_only`) is
     ``mesh.boundary_halfedges[offsets[i]:offsets[i + 1]]`` (``[0]`` when closed)."""
     return mesh._boundary[1]
+
+
+def note_boundary(mesh: Mesh, producer: Callable[[], tuple[IntArray, IntArray]]) -> None:
+    """Hand over a producer of ``mesh``'s boundary record (:attr:`Mesh.boundary_halfedges`
+    and its loop offsets), run instead of pairing the twins when the boundary is
+    first asked for.  For an operator's open output whose loops it knows."""
+    shared = mesh._shared
+    if "_boundary" not in shared.values:
+        shared.producers.setdefault("_boundary", producer)
+
+
+def note_open_dual(mesh: Mesh, record: Any) -> None:
+    """Record how the open mesh ``mesh`` was built as a dual (:func:`open_dual_record`)."""
+    mesh._shared.values["_open_dual"] = record
+
+
+def open_dual_record(mesh: Mesh) -> Any:
+    """What :func:`note_open_dual` recorded with ``mesh``'s faces, or None."""
+    return mesh._shared.values.get("_open_dual")

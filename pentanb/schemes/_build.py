@@ -6,8 +6,12 @@ helpers compute those blocks from the input's half-edge arrays.
 
 Open meshes (surfaces with boundary) take a numpy path: an operator writes
 its output's faces (boundary edges split as interior edges are, faces
-remeshed face by face) and the output's twins and vertex rings are derived
-from them when first asked for (:func:`remeshed` does this by itself).  The
+remeshed face by face).  The output's twins and vertex rings are written
+from the input's when first asked for where the operator knows them
+(pentagonalization, pentagon preservation and the dual: every boundary
+half-edge of the output lies along one of the input's, so its boundary
+loops are the input's, refined, put in order by :func:`open_twins_from`),
+and derived from its faces otherwise (:func:`remeshed` does this).  The
 operators that make a face of every vertex (the dual, corner cutting,
 honeycomb) close a boundary vertex's face along the boundary with
 :func:`open_vertex_faces`: through one point on each of its two boundary
@@ -316,6 +320,15 @@ def boundary_prev(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
     return np.where(h == first, o[f + 1].astype(np.int64) - 1, h - 1)
 
 
+def boundary_next(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
+    """(k,) int64: ``next[h]`` of a few half-edges ``h``, from the faces' offsets alone."""
+    h = np.asarray(h, dtype=np.int64)
+    o = np.asarray(offsets)
+    f = np.searchsorted(o, h, side="right") - 1
+    last = o[f + 1].astype(np.int64) - 1
+    return np.where(h == last, o[f].astype(np.int64), h + 1)
+
+
 def remeshed(
     mesh: Mesh,
     vertices: np.ndarray,
@@ -461,14 +474,15 @@ def boundary_corners(mesh: Mesh) -> np.ndarray:
     if not bh.size:
         return np.zeros(0, dtype=np.int64)
     v = mesh.vertices
-    tail, head = mesh.corners[bh], mesh.head[bh]
+    nxt = boundary_next(mesh.offsets, bh)
+    tail, head = mesh.corners[bh], mesh.corners[nxt]
     after = loop_successor(mesh)  # the edge leaving head[bh[j]] is bh[after[j]]
     a = v[head] - v[tail]
     b = v[head[after]] - v[tail[after]]
     with np.errstate(invalid="ignore", divide="ignore"):
         cos = np.einsum("ij,ij->i", a, b) / (np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1))
     sharp = cos < np.cos(np.radians(CORNER_ANGLE))  # (NaN, a zero-length edge: no corner)
-    one_face = mesh.valences[head] == 2
+    one_face = nxt == bh[after]  # the edge leaving head[bh[j]] is on the same face
     return np.sort(head[sharp & one_face]).astype(np.int64)
 
 

@@ -7,8 +7,10 @@ are placed by affine rules.  Smoothing is the dual's job
 On an open mesh both work face by face as on a closed one: a boundary edge
 is split as an interior edge is (in three, in two), so the output's
 boundary is the input's, refined, and its faces are the same pentagons
-(and copies); the output's twins and rings are then derived from its
-faces (numpy) instead of written from the input's.
+(and copies).  The output's twins and rings are written from the
+input's as on a closed mesh (numpy), its boundary half-edges paired with
+hole half-edges in the order of its boundary loops, which are the input's,
+refined.
 """
 
 from __future__ import annotations

@@ -37,7 +37,9 @@ import numpy as np
 from .._checks import MAX_STEPS
 from ..mesh import Mesh, Several
 from ..mesh import build as _mesh
+from ..mesh.boundary import canonical_loops
 from ._build import (
+    boundary_next,
     check_count,
     check_mesh,
     check_vertex_faces,
@@ -87,7 +89,9 @@ def dual(mesh: Mesh) -> Mesh:
     half-edge at the corner of half-edge ``h`` is the twin of the one at
     ``next[twin[prev[h]]]``, and the dual half-edges of a face's half-edges,
     in face order, go round the dual vertex of that face.  The dual of a
-    dual reuses the connectivity of the mesh it came from.
+    closed dual reuses the connectivity of the mesh it came from.  On an
+    open mesh the twins, boundary loops and rings are written from the
+    input's rings and loops too (no sorting).
 
     Raises
     ------
@@ -136,6 +140,9 @@ def _open_dual(mesh: Mesh) -> Mesh:
     boundary edge entering v, v itself at a corner, and the midpoint of the
     one leaving it.
     """
+    record = _mesh.open_dual_record(mesh)
+    if record is not None:  # mesh is itself the dual of an open mesh
+        return _open_dual_again(mesh, *record)
     check_vertex_faces(mesh, "dual")
     F, bh = mesh.n_faces, mesh.boundary_halfedges
     B = bh.size
@@ -146,20 +153,128 @@ def _open_dual(mesh: Mesh) -> Mesh:
     corners, offsets, placed = placed_vertex_faces(
         mesh, (mesh.halfedge_face,), mids, mids, kept, n_out
     )
+    return _open_dual_output(mesh, kept, corners, offsets, placed)
+
+
+def _open_dual_output(
+    mesh: Mesh,
+    kept: np.ndarray,
+    corners: np.ndarray,
+    offsets: np.ndarray,
+    placed: np.ndarray | None,
+) -> Mesh:
+    """The dual of the open ``mesh`` from its faces (``placed``: where its vertex
+    ring entries went, None to find out when the twins are asked for), with
+    producers of its twins, rings and boundary, and a record for its own dual."""
+    F, bh = mesh.n_faces, mesh.boundary_halfedges
+    B = bh.size
+    at = np.flatnonzero(kept >= 0)
     v = mesh.vertices
     vertices = np.empty((F + B + at.size, 3))
     vertices[:F] = mesh.face_centroids
-    a, b = v[mesh.corners[bh]], v[mesh.head[bh]]
+    a, b = v[mesh.corners[bh]], v[mesh.corners[boundary_next(mesh.offsets, bh)]]
     vertices[F : F + B] = 0.5 * a + 0.5 * b  # (no sum that could overflow)
     vertices[F + B :] = v[at]
     faces = _mesh.faces_only(mesh)
-    one = (kept[mesh.head[bh]] < 0).astype(np.int64)  # boundary half-edges at head(bh[j]): 1 or 2
+    heads = faces.corners[boundary_next(faces.offsets, bh)]
+    one = (kept[heads] < 0).astype(np.int64)  # boundary half-edges at head(bh[j]): 1 or 2
     dt = index_dtype(vertices.shape[0], corners.size)
     size = corners.size
-    written = functools.cache(lambda: _open_dual_connectivity(faces, placed, one, size, dt))
+
+    def connectivity() -> Several:
+        where = placed
+        if where is None:  # the faces made again, for where the ring entries went
+            mids = np.arange(F, F + B, dtype=np.int64)
+            halfedge_face = faces.halfedge_face
+            where = placed_vertex_faces(faces, (halfedge_face,), mids, mids, kept, len(vertices))[2]
+        return _open_dual_connectivity(faces, where, one, size, dt)
+
+    written = functools.cache(connectivity)
     out = output(vertices, corners, offsets, twin=written, rings=written)
+    base = np.asarray(offsets, dtype=np.int64)[heads]  # the first corner of every boundary face
+    loops = _mesh.loop_offsets(faces)
+    _mesh.note_boundary(out, lambda: canonical_loops(*_open_dual_chain(base, one, loops)))
+    _mesh.note_open_dual(out, (faces, base, one))
     _mesh.note_extent(out, _mesh.extent(mesh))
     return out
+
+
+def _open_dual_chain(
+    base: np.ndarray, one: np.ndarray, loops: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The boundary half-edges of an open dual, loop after loop from any start.
+
+    The face of ``head[bh[j]]`` starts at ``base[j]`` with its boundary
+    half-edges: ``base[j]`` (from the midpoint of ``bh[j]`` to that of the
+    next, or to the corner) and, at a corner (``one[j] == 0``), ``base[j] + 1``.
+    """
+    per = np.zeros(base.size + 1, dtype=np.int64)
+    np.cumsum(2 - one, out=per[1:])
+    chain = np.repeat(base, 2 - one)
+    chain[per[:-1][one == 0] + 1] += 1
+    return chain, per[loops]
+
+
+def _open_dual_again(mesh: Mesh, source, base: np.ndarray, one: np.ndarray) -> Mesh:
+    """The dual of ``mesh``, itself the open dual of ``source`` (its faces), from
+    ``source``'s faces: no pass over ``mesh``'s vertex rings.
+
+    ``mesh``'s vertex f (``f`` < F, the centroid of ``source``'s face f) is
+    interior; its ring's faces are ``source``'s face f's vertices, from its
+    largest: the dual's face f is ``source``'s face f turned to start
+    there.  ``mesh``'s vertex ``F + j`` (the midpoint of ``source``'s
+    boundary half-edge ``b = bh[j]``) gives the quad of the midpoints of its
+    two boundary edges, ``head[b]`` and ``tail[b]``; the corner of
+    ``source`` kept as ``mesh``'s vertex ``F + B + c`` gives the midpoints
+    of its two boundary edges, itself when it is still a corner, and the
+    face it is a vertex of.  ``base`` and ``one`` are as in :func:`_open_dual_chain`.
+    """
+    F1 = mesh.n_faces  # source's vertices
+    bh1 = mesh.boundary_halfedges
+    B1 = bh1.size
+    kept = corner_ids(mesh, F1 + B1)
+    order = np.argsort(bh1)
+    sorted_bh1 = bh1[order]
+
+    def index(x: np.ndarray) -> np.ndarray:  # mesh's boundary half-edge x: the dual's vertex
+        return order[np.searchsorted(sorted_bh1, x)] + F1
+
+    F, bh = source.n_faces, source.boundary_halfedges
+    B = bh.size
+    tail = source.corners[bh].astype(np.int64)
+    head = source.corners[boundary_next(source.offsets, bh)].astype(np.int64)
+    before = np.empty(B, dtype=np.int64)  # the loop predecessor of every j
+    before[loop_successor(source)] = np.arange(B)
+    quads = np.empty((B, 4), dtype=np.int64)
+    quads[:, 0] = index(base[before] + 1 - one[before])
+    quads[:, 1] = index(base)
+    quads[:, 2] = head
+    quads[:, 3] = tail
+    two = np.flatnonzero(one == 0)
+    two = two[np.argsort(head[two], kind="stable")]  # source's corners in vertex order
+    still = kept[F + B + np.arange(two.size)]
+    ends = np.empty((two.size, 4), dtype=np.int64)
+    ends[:, 0] = index(base[two])
+    ends[:, 1] = still
+    ends[:, 2] = index(base[two] + 1)
+    ends[:, 3] = head[two]
+    ends_flat = ends.reshape(-1)
+    ends_flat = ends_flat[ends_flat >= 0]
+    offsets_in = source.offsets
+    H = int(offsets_in[-1])
+    at = np.flatnonzero(kept >= 0)
+    n_out = F1 + B1 + at.size
+    total = H + 4 * B + ends_flat.size
+    dt = index_dtype(n_out, total)
+    corners = np.empty(total, dtype=dt)
+    corners[:H] = start_at_max(source.corners, offsets_in, _mesh.uniform_size(source))
+    corners[H : H + 4 * B] = quads.reshape(-1)
+    corners[H + 4 * B :] = ends_flat
+    offsets = np.empty(F + B + two.size + 1, dtype=np.int64)
+    offsets[: F + 1] = offsets_in
+    offsets[F + 1 : F + B + 1] = H + 4 * np.arange(1, B + 1)
+    offsets[F + B + 1 :] = H + 4 * B + np.cumsum(3 + (still >= 0))
+    return _open_dual_output(mesh, kept, corners, offsets, None)
 
 
 def _open_dual_connectivity(
@@ -196,12 +311,7 @@ def _open_dual_connectivity(
     twin[pos] = tgt
     twin[pos[bh] - 1] = pos[after]
     # the boundary: base[j] (mid(bh[j]) -> mid of the next, or -> the corner), base[j] + 1
-    per = np.zeros(bh.size + 1, dtype=np.int64)
-    np.cumsum(2 - one, out=per[1:])
-    chain = np.repeat(base, 2 - one)
-    chain[per[:-1][one == 0] + 1] += 1
-    loops = _mesh.loop_offsets(mesh)
-    got = open_twins_from(twin, chain, per[loops])
+    got = open_twins_from(twin, *_open_dual_chain(base, one, _mesh.loop_offsets(mesh)))
     twin = got["twin"]
     # the rings: round the centroid of face f, the dual half-edges of f's
     # half-edges in face order; round the midpoint of bh[j], its hole
