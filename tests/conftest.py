@@ -72,3 +72,19 @@ def small_mesh(request):
 def operator_name(request) -> str:
     """Every registered scheme and ``dual``."""
     return request.param
+
+
+def pytest_xdist_auto_num_workers(config) -> int:
+    """``-n auto``: one worker per core, plus one.
+
+    The browser tests (one file, one worker) spend most of their time waiting
+    for JupyterLab's kernel and Chromium to draw, which run in processes of
+    their own; one more worker keeps the cores busy meanwhile.  Set
+    ``PYTEST_XDIST_AUTO_NUM_WORKERS`` to choose another number.
+    """
+    env = os.environ.get("PYTEST_XDIST_AUTO_NUM_WORKERS")
+    if env:
+        return int(env)
+    return (
+        len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    ) + 1
