@@ -1042,3 +1042,25 @@ def test_the_dual_of_an_open_dual_is_the_one_built_from_its_faces(name, scheme):
         ring, want_ring = got.vertex_ring, want.vertex_ring
         assert ring[0].tolist() == want_ring[0].tolist()
         assert ring[1].tolist() == want_ring[1].tolist()
+
+
+@pytest.mark.parametrize("blocks", [[(3, 200), (5, 100), (4, 70)], [(4, 1), (3, 2)] * 40])
+def test_start_at_max_turns_every_row_to_its_largest_in_blocks_of_one_size_or_not(blocks):
+    from pentanb import _jit
+    from pentanb.schemes._build import start_at_max
+
+    rng = np.random.default_rng(3)
+    sizes = np.concatenate([np.full(count, k) for k, count in blocks])
+    offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int32)
+    ring = rng.permutation(int(offsets[-1])).astype(np.int32)
+    want = []
+    for a, b in zip(offsets[:-1], offsets[1:]):
+        row = ring[a:b].tolist()
+        top = row.index(max(row))
+        want.extend(row[top:] + row[:top])
+    before = _jit.use_jit(False)
+    try:
+        got = start_at_max(ring, offsets)
+    finally:
+        _jit.use_jit(before)
+    assert got.tolist() == want and got.dtype == ring.dtype

@@ -207,6 +207,16 @@ def start_at_max(ring: np.ndarray, offsets: np.ndarray | None, k: int = 0) -> np
         return np.take_along_axis(rows, cols, axis=1).reshape(-1)
     assert offsets is not None
     sizes = np.diff(offsets)
+    if not ring.size:
+        return ring.copy()
+    runs = np.flatnonzero(sizes[1:] != sizes[:-1]) + 1  # where the size changes
+    if 64 * (runs.size + 1) <= sizes.size:  # long runs of one size (an operator's blocks)
+        out = np.empty_like(ring)
+        for a, b in zip([0, *runs.tolist()], [*runs.tolist(), sizes.size]):
+            lo, hi = int(offsets[a]), int(offsets[b])
+            if hi > lo:
+                out[lo:hi] = start_at_max(ring[lo:hi], None, int(sizes[a]))
+        return out
     start = offsets[:-1].astype(np.int64)
     top = np.maximum.reduceat(ring, start) if ring.size else ring[:0]
     h = np.arange(ring.size, dtype=np.int64)
