@@ -1054,7 +1054,7 @@ def test_start_at_max_turns_every_row_to_its_largest_in_blocks_of_one_size_or_no
     offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int32)
     ring = rng.permutation(int(offsets[-1])).astype(np.int32)
     want = []
-    for a, b in zip(offsets[:-1], offsets[1:]):
+    for a, b in itertools.pairwise(offsets.tolist()):
         row = ring[a:b].tolist()
         top = row.index(max(row))
         want.extend(row[top:] + row[:top])
