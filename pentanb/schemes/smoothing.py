@@ -178,15 +178,15 @@ def _open_dual_output(
     faces = _mesh.faces_only(mesh)
     heads = faces.corners[boundary_next(faces.offsets, bh)]
     one = (kept[heads] < 0).astype(np.int64)  # boundary half-edges at head(bh[j]): 1 or 2
-    dt = index_dtype(vertices.shape[0], corners.size)
-    size = corners.size
+    n_out, size = vertices.shape[0], corners.size
+    dt = index_dtype(n_out, size)
 
     def connectivity() -> Several:
         where = placed
         if where is None:  # the faces made again, for where the ring entries went
             mids = np.arange(F, F + B, dtype=np.int64)
             halfedge_face = faces.halfedge_face
-            where = placed_vertex_faces(faces, (halfedge_face,), mids, mids, kept, len(vertices))[2]
+            where = placed_vertex_faces(faces, (halfedge_face,), mids, mids, kept, n_out)[2]
         return _open_dual_connectivity(faces, where, one, size, dt)
 
     written = functools.cache(connectivity)
@@ -194,7 +194,10 @@ def _open_dual_output(
     base = np.asarray(offsets, dtype=np.int64)[heads]  # the first corner of every boundary face
     loops = _mesh.loop_offsets(faces)
     _mesh.note_boundary(out, lambda: canonical_loops(*_open_dual_chain(base, one, loops)))
-    _mesh.note_open_dual(out, (faces, base, one))
+    # for the dual of this dual: the input's faces and boundary (arrays only,
+    # so that a chain of duals keeps no earlier mesh's connectivity alive)
+    record = (faces.corners, faces.offsets, _mesh.uniform_size(faces), bh, loops, base, one)
+    _mesh.note_open_dual(out, record)
     _mesh.note_extent(out, _mesh.extent(mesh))
     return out
 
@@ -215,9 +218,19 @@ def _open_dual_chain(
     return chain, per[loops]
 
 
-def _open_dual_again(mesh: Mesh, source, base: np.ndarray, one: np.ndarray) -> Mesh:
-    """The dual of ``mesh``, itself the open dual of ``source`` (its faces), from
-    ``source``'s faces: no pass over ``mesh``'s vertex rings.
+def _open_dual_again(
+    mesh: Mesh,
+    source_corners: np.ndarray,
+    source_offsets: np.ndarray,
+    k: int,
+    bh: np.ndarray,
+    loops: np.ndarray,
+    base: np.ndarray,
+    one: np.ndarray,
+) -> Mesh:
+    """The dual of ``mesh``, itself the open dual of a mesh ``source``, from
+    ``source``'s faces (corners, offsets, k: their one size or 0), boundary
+    half-edges ``bh`` and loop offsets: no pass over ``mesh``'s vertex rings.
 
     ``mesh``'s vertex f (``f`` < F, the centroid of ``source``'s face f) is
     interior; its ring's faces are ``source``'s face f's vertices, from its
@@ -239,12 +252,11 @@ def _open_dual_again(mesh: Mesh, source, base: np.ndarray, one: np.ndarray) -> M
     def index(x: np.ndarray) -> np.ndarray:  # mesh's boundary half-edge x: the dual's vertex
         return order[np.searchsorted(sorted_bh1, x)] + F1
 
-    F, bh = source.n_faces, source.boundary_halfedges
-    B = bh.size
-    tail = source.corners[bh].astype(np.int64)
-    head = source.corners[boundary_next(source.offsets, bh)].astype(np.int64)
-    before = np.empty(B, dtype=np.int64)  # the loop predecessor of every j
-    before[loop_successor(source)] = np.arange(B)
+    F, B = source_offsets.size - 1, bh.size
+    tail = source_corners[bh].astype(np.int64)
+    head = source_corners[boundary_next(source_offsets, bh)].astype(np.int64)
+    before = np.arange(-1, B - 1, dtype=np.int64)  # the loop predecessor of every j
+    before[loops[:-1]] = loops[1:] - 1
     quads = np.empty((B, 4), dtype=np.int64)
     quads[:, 0] = index(base[before] + 1 - one[before])
     quads[:, 1] = index(base)
@@ -260,14 +272,14 @@ def _open_dual_again(mesh: Mesh, source, base: np.ndarray, one: np.ndarray) -> M
     ends[:, 3] = head[two]
     ends_flat = ends.reshape(-1)
     ends_flat = ends_flat[ends_flat >= 0]
-    offsets_in = source.offsets
+    offsets_in = source_offsets
     H = int(offsets_in[-1])
     at = np.flatnonzero(kept >= 0)
     n_out = F1 + B1 + at.size
     total = H + 4 * B + ends_flat.size
     dt = index_dtype(n_out, total)
     corners = np.empty(total, dtype=dt)
-    corners[:H] = start_at_max(source.corners, offsets_in, _mesh.uniform_size(source))
+    corners[:H] = start_at_max(source_corners, offsets_in, k)
     corners[H : H + 4 * B] = quads.reshape(-1)
     corners[H + 4 * B :] = ends_flat
     offsets = np.empty(F + B + two.size + 1, dtype=np.int64)
