@@ -38,6 +38,7 @@ MODULES = (
     "pentanb.analysis",
     "pentanb.notation",
     "pentanb.figures",
+    "pentanb.classroom",
 )
 
 #: Public names whose modules others own, not documented yet: expected to fail.
