@@ -321,3 +321,16 @@ def test_pair_open_matches_a_dictionary_of_directed_edges(mesh_name, n_extra):
     # a directed edge used twice, a half-edge from a vertex to itself: refused
     assert pair_open(np.append(tail, tail[0]), np.append(head, head[0]), m.n_vertices) is None
     assert pair_open(np.append(tail, 0), np.append(head, 0), m.n_vertices) is None
+
+
+@pytest.mark.parametrize("n_extra", [0, 2**28])  # a vertex count that splits the keys in parts
+def test_pair_twins_of_a_closed_mesh_in_parts_or_whole(n_extra):
+    from pentanb.mesh.halfedge import pair_twins
+
+    m = pentanb.subdivide(shapes.cube(), "pentagonalize", 2, 0)  # 5 corners a face
+    tail, head = np.asarray(m.corners), np.asarray(m.head)
+    expected = reference_twins(tail, head)
+    assert np.array_equal(pair_twins(tail, head, m.n_vertices + n_extra), expected)
+    assert np.array_equal(pair_twins(tail, None, m.n_vertices + n_extra, 5), expected)
+    # a directed edge used twice: no pairing
+    assert pair_twins(np.append(tail, tail[:5]), None, m.n_vertices + n_extra, 5) is None

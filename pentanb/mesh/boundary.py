@@ -23,6 +23,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .halfedge import in_parts
+
 __all__ = [
     "boundary_edges",
     "boundary_loops",
@@ -163,18 +165,14 @@ def pair_open(tail: np.ndarray, head: np.ndarray, n: int) -> np.ndarray | None:
     parts = vertex_bits - max(low_bits, 0)
     if low_bits < 1 or parts > 16:  # pragma: no cover - beyond 2**40 half-edges
         return _pair_open_search(tail, head, n)
-    part = (np.minimum(tail, head) >> low_bits).astype(np.uint16)
-    order = np.argsort(part, kind="stable")  # radix sort: O(H)
-    bounds = np.concatenate([[0], np.cumsum(np.bincount(part, minlength=1 << parts))])
-    del part
-    mask = (1 << low_bits) - 1
-    for a, b in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
-        if a == b:
-            continue
-        ids = order[a:b]
-        if not _pair_open_part(tail[ids], head[ids], n, index_bits, ids, mask, twin):
-            return None
-    return twin
+    ok = in_parts(
+        tail,
+        head,
+        low_bits,
+        parts,
+        lambda t, h, ids, mask: _pair_open_part(t, h, n, index_bits, ids, mask, twin),
+    )
+    return twin if ok else None
 
 
 def _pair_open_part(tail, head, n, index_bits, ids, mask, twin) -> bool:

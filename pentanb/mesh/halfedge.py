@@ -164,8 +164,30 @@ def pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) ->
     parts = vertex_bits - max(low_bits, 0)
     if low_bits < 1 or parts > 16:  # pragma: no cover - beyond 2**40 half-edges
         raise MeshError(f"{H:,} half-edges are more than twins can be paired for")
+    ok = in_parts(
+        tail,
+        head,
+        low_bits,
+        parts,
+        lambda t, h, ids, mask: _pair_part(t, h, n, index_bits, ids, mask, twin),
+        tail.dtype,
+    )
+    return twin if ok else None
+
+
+def in_parts(tail, head, low_bits: int, parts: int, pair, dtype=None) -> bool:
+    """Pair half-edges part by part: those whose smaller vertex has the same high bits.
+
+    A radix split (``O(H)``) of the half-edges by ``min(tail, head) >>
+    low_bits`` into ``2**parts`` parts, each handed to ``pair(tail, head,
+    ids, mask)`` (``ids`` its half-edges, ``mask`` the low bits' mask);
+    False as soon as one part does not pair.  Twins keyed by the smaller
+    vertex meet in one part.
+    """
     part = (np.minimum(tail, head) >> low_bits).astype(np.uint16)
-    order = np.argsort(part, kind="stable").astype(tail.dtype)  # radix sort: O(H)
+    order = np.argsort(part, kind="stable")  # radix sort: O(H)
+    if dtype is not None:
+        order = order.astype(dtype)
     bounds = np.concatenate([[0], np.cumsum(np.bincount(part, minlength=1 << parts))])
     del part
     mask = (1 << low_bits) - 1
@@ -173,9 +195,9 @@ def pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) ->
         if a == b:
             continue
         ids = order[a:b]
-        if not _pair_part(tail[ids], head[ids], n, index_bits, ids, mask, twin):
-            return None
-    return twin
+        if not pair(tail[ids], head[ids], ids, mask):
+            return False
+    return True
 
 
 def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0) -> bool:
