@@ -40,6 +40,33 @@ from ._build import (
 __all__ = ["pentagonalize", "preserve_pentagons"]
 
 
+def _midpoint_rings(mids: np.ndarray, eh: np.ndarray, back: np.ndarray, prv: np.ndarray, H: int):
+    """Fill ``mids`` (E, 4): the four output half-edges round every edge's midpoint.
+
+    Those of its half-edge ``eh``, of ``prev[eh]``, of the opposite ``back``
+    and of ``prev[back]``: ``H + 5 h`` and ``H + 5 h + 2`` in pentagon
+    preservation's numbering.
+    """
+    for s, (part, add) in enumerate(((eh, 0), (prv[eh], 2), (back, 0), (prv[back], 2))):
+        col = part * 5
+        col += H + add
+        mids[:, s] = col
+
+
+def _copy_rings(prv: np.ndarray, H: int, dt) -> np.ndarray:
+    """(H, 3): the ring of every half-edge h's copy vertex: h, H + 5 prev[h] + 3, H + 5h + 4."""
+    copies = np.empty((H, 3), dtype=dt)
+    h = np.arange(H, dtype=dt)
+    copies[:, 0] = h
+    col = prv * 5
+    col += H + 3
+    copies[:, 1] = col
+    col = h * 5
+    col += H + 4
+    copies[:, 2] = col
+    return copies
+
+
 @scale_safe
 def pentagonalize(mesh: Mesh) -> Mesh:
     """Pentagonalization (pentagonal conversion), Section 5.1 steps 1-2, Figure 6.
@@ -430,10 +457,7 @@ def _preserved_open(mesh, dt: np.dtype) -> Several:
     edge_of_b = mesh.halfedge_edge[bh].astype(np.int64)
     back[edge_of_b] = eh[edge_of_b]  # (any face half-edge: written over below)
     mids = np.empty((E, 4), dtype=dt)
-    for s, (part, add) in enumerate(((eh, 0), (prv[eh], 2), (back, 0), (prv[back], 2))):
-        col = part * 5
-        col += H + add
-        mids[:, s] = col
+    _midpoint_rings(mids, eh, back, prv, H)
     b = bh.astype(np.int64)
     pb = prv[bh].astype(np.int64)
     mids[edge_of_b, 0] = twin_out[H + 5 * pb + 1]
@@ -442,15 +466,7 @@ def _preserved_open(mesh, dt: np.dtype) -> Several:
     mids[edge_of_b, 3] = -1  # three half-edges
     mid_ring = np.delete(start_at_max(mids.reshape(-1), None, 4), 4 * edge_of_b + 3)
     # round the copy vertex of h: h, H + 5 prev[h] + 3, H + 5h + 4
-    copies = np.empty((H, 3), dtype=dt)
-    h = np.arange(H, dtype=dt)
-    copies[:, 0] = h
-    col = prv * 5
-    col += H + 3
-    copies[:, 1] = col
-    col = h * 5
-    col += H + 4
-    copies[:, 2] = col
+    copies = _copy_rings(prv, H, dt)
     sizes = np.full(E, 4, dtype=np.int64)
     sizes[edge_of_b] = 3
     out_off = np.empty(n + E + H + 1, dtype=dt)
@@ -515,19 +531,8 @@ def _preserved_rings(mesh, dt: np.dtype) -> Rings | Several:
     old += H + 1
     back = twin[eh]
     mids = np.empty((E, 4), dtype=dt)
-    for s, (part, add) in enumerate(((eh, 0), (prv[eh], 2), (back, 0), (prv[back], 2))):
-        col = part * 5
-        col += H + add
-        mids[:, s] = col
-    copies = np.empty((H, 3), dtype=dt)
-    h = np.arange(H, dtype=dt)
-    copies[:, 0] = h
-    col = prv * 5
-    col += H + 3
-    copies[:, 1] = col
-    col = h * 5
-    col += H + 4
-    copies[:, 2] = col
+    _midpoint_rings(mids, eh, back, prv, H)
+    copies = _copy_rings(prv, H, dt)
     rings = np.concatenate(
         [
             start_at_max(old, ring_off),
