@@ -294,3 +294,15 @@ def changed(before: bytes, after: bytes) -> float:
 
 def harmless(text: str) -> bool:
     return any(h in text for h in HARMLESS_CONSOLE)
+
+
+def poll(fn, timeout, interval=0.25):
+    """fn() until it returns something truthy, or None after timeout seconds (a hang guard)."""
+    deadline = time.monotonic() + timeout
+    while True:
+        value = fn()
+        if value:
+            return value
+        if time.monotonic() > deadline:
+            return None
+        time.sleep(interval)

@@ -79,16 +79,7 @@ def lab(browser):
         yield server
 
 
-def _poll(fn, timeout, interval=0.25):
-    """fn() until it returns something truthy, or None after timeout seconds."""
-    deadline = time.monotonic() + timeout
-    while True:
-        value = fn()
-        if value:
-            return value
-        if time.monotonic() > deadline:
-            return None
-        time.sleep(interval)
+_poll = bs.poll
 
 
 def _listen(page):

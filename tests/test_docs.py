@@ -140,15 +140,7 @@ _DRAWN = """() => ({
 })"""
 
 
-def _poll(fn, timeout, interval=0.25):
-    deadline = time.monotonic() + timeout
-    while True:
-        value = fn()
-        if value:
-            return value
-        if time.monotonic() > deadline:
-            return None
-        time.sleep(interval)
+_poll = bs.poll
 
 
 def _html_pages(out: Path) -> list[Path]:
