@@ -353,3 +353,11 @@ def test_each_scheme_names_the_conway_operator_that_calls_it():
             continue
         assert s.conway is not None and s.conway.split()[0] == op.name, (name, op.letter)
     assert pentanb.SCHEMES["sqrt3_remesh"].conway == "needle" == OPERATORS["n"].name
+
+
+def test_a_move_with_the_real_timer_leaves_no_thread_behind():
+    before = set(threading.enumerate())
+    p = widgets.panel(lambda n=1: None, n=(0, 4))  # the real timer: busy_after 0.5 s
+    p.controls["n"].value = 3
+    assert p.calls >= 2
+    assert set(threading.enumerate()) <= before

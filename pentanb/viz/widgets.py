@@ -344,6 +344,9 @@ class Panel(W.VBox):
             with lock:
                 state["done"] = True
             timer.cancel()
+            join = getattr(timer, "join", None)
+            if join is not None:  # no thread outlives the call (a cancelled timer ends at once)
+                join()
             if state["shown"]:
                 self.busy.layout.visibility = "hidden"
             self._busy = False
