@@ -57,6 +57,7 @@ __all__ = [
     "honeycomb_points",
     "pair_twins",
     "vertex_normals",
+    "open_dual_faces",
 ]
 
 
@@ -84,8 +85,9 @@ def face_means_uniform_part(values, corners, k, out, lo, hi):  # pragma: no cove
             out[ix(f), ix(i)] = acc / k
 
 
-def face_means_uniform(values, corners, k):
-    out = np.empty((corners.size // k, values.shape[1]))
+def face_means_uniform(values, corners, k, out=None):
+    if out is None:
+        out = np.empty((corners.size // k, values.shape[1]))
     split(len(out), face_means_uniform_part, values, corners, k, out)
     return out
 
@@ -165,8 +167,9 @@ def face_means_mixed_part(values, corners, offsets, out, lo, hi):  # pragma: no 
             out[ix(f), ix(i)] = long_mean(values, corners, a, b, i)
 
 
-def face_means_mixed(values, corners, offsets):
-    out = np.empty((offsets.size - 1, values.shape[1]))
+def face_means_mixed(values, corners, offsets, out=None):
+    if out is None:
+        out = np.empty((offsets.size - 1, values.shape[1]))
     split(len(out), face_means_mixed_part, values, corners, offsets, out)
     return out
 
@@ -252,8 +255,9 @@ def start_at_max_part(ring, offsets, k, out, lo, hi):  # pragma: no cover - comp
             j += 1
 
 
-def start_at_max(ring, offsets, k):
-    out = np.empty_like(ring)
+def start_at_max(ring, offsets, k, out=None):
+    if out is None:
+        out = np.empty_like(ring)
     n = ring.size // k if offsets.size == 0 else offsets.size - 1
     split(n, start_at_max_part, ring, offsets, k, out)
     return out
@@ -712,3 +716,50 @@ def vertex_normals(vertices, corners, offsets, out):  # pragma: no cover - compi
             out[row, 0] = p
             out[row, 1] = q
             out[row, 2] = r
+
+
+# Open meshes: the dual's faces
+
+
+@jit
+def open_dual_faces_part(
+    ring, ring_off, H, k, face, enter, keep, leave, out, offsets, lo, hi
+):  # pragma: no cover - compiled
+    # the face of every vertex v in lo:hi of an open mesh, written from
+    # offsets[lo] on: round its ring, the face of every face half-edge r
+    # (r // k when every face is a k-gon, else face[r]); a hole half-edge
+    # H + j gives enter[j], keep[j] when it is not -1, then leave[j]
+    # (the numpy path's placed_vertex_faces with one item); offsets[lo]
+    # is given, offsets[lo + 1:hi + 1] are written
+    # (a boundary vertex's ring starts at its hole half-edge, its only one)
+    p = offsets[ix(lo)]
+    for v in range(lo, hi):
+        a, b = ring_off[ix(v)], ring_off[ix(v + 1)]
+        if b > a and ring[ix(a)] >= H:
+            j = ix(ring[ix(a)] - H)
+            out[ix(p)] = enter[j]
+            p += 1
+            if keep[j] >= 0:
+                out[ix(p)] = keep[j]
+                p += 1
+            out[ix(p)] = leave[j]
+            p += 1
+            a += 1
+        if k > 0:
+            for i in range(a, b):
+                out[ix(p)] = ring[ix(i)] // k
+                p += 1
+        else:
+            for i in range(a, b):
+                out[ix(p)] = face[ix(ring[ix(i)])]
+                p += 1
+        offsets[ix(v + 1)] = p
+
+
+def open_dual_faces(ring, ring_off, H, k, face, enter, keep, leave, total, dtype):
+    n = ring_off.size - 1
+    out = np.empty(total, dtype)
+    offsets = np.empty(n + 1, dtype)
+    offsets[0] = 0
+    split(n, open_dual_faces_part, ring, ring_off, H, k, face, enter, keep, leave, out, offsets)
+    return out, offsets

@@ -426,3 +426,44 @@ def test_kernels_run_on_the_calling_thread_over_every_item(compiled):
     before = threading.active_count()
     pentanb.subdivide(shapes.torus(), "preserve_pentagons", 1, 1)
     assert threading.active_count() == before  # pentanb starts no thread
+
+
+# -- open meshes -----------------------------------------------------------------------
+
+
+def holed_grid(nx: int = 7, ny: int = 6) -> pentanb.Mesh:
+    """A planar grid of quads with two holes: corners (sharp vertices of one face)
+    on its rim, boundary vertices of three faces round the holes."""
+    keep = np.ones((nx, ny), dtype=bool)
+    keep[1:3, 1:3] = False
+    keep[4, 3] = False
+    i, j = np.nonzero(keep)
+    a = i * (ny + 1) + j
+    f = np.stack([a, a + ny + 1, a + ny + 2, a + 1], axis=1)
+    used, f = np.unique(f, return_inverse=True)
+    xs, ys = np.divmod(used, ny + 1)
+    v = np.stack([xs, ys, 0.1 * np.sin(xs + ys)], axis=1).astype(float)
+    return pentanb.Mesh(v, f.reshape(-1, 4))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", list(pentanb.SCHEMES))
+@pytest.mark.parametrize("shape", ["holed grid", "open disk"])
+def test_open_meshes_give_the_numpy_results_compiled(compiled, name, shape):
+    # positions, faces, twins, boundary loops and rings of every scheme and
+    # its two duals on an open mesh, each derived from its input's
+    def run():
+        m = fresh(holed_grid() if shape == "holed grid" else shapes.open_disk())
+        out = pentanb.subdivide(m, name, 1, 0)
+        d1 = pentanb.dual(out)
+        d2 = pentanb.dual(d1)
+        got = []
+        for x in (out, d1, d2):
+            got += [x.vertices, x.corners, x.offsets, *x.vertex_ring, x.twin]
+            got += [x.boundary_halfedges, np.asarray(x.boundary_loops[0])]
+        return got
+
+    a, b = both(run)
+    assert len(a) == len(b)
+    for x, y in zip(a, b):
+        assert same_bytes(np.asarray(x), np.asarray(y))

@@ -16,6 +16,7 @@ import numpy as np
 
 from .coerce import IntArray, as_vertices
 from .core import Mesh, Rings, Several
+from .geometry import face_means
 from .validate import validate
 
 __all__ = [
@@ -27,6 +28,7 @@ __all__ = [
     "forward",
     "ring_faces",
     "extent",
+    "face_centroids_into",
     "note_extent",
     "dual_source_offsets",
     "dual_again",
@@ -153,6 +155,23 @@ def ring_faces(mesh: Mesh) -> IntArray:
     them with its output's rings.
     """
     return mesh._ring_faces()
+
+
+def face_centroids_into(mesh: Mesh, out: np.ndarray) -> np.ndarray:
+    """Write :attr:`Mesh.face_centroids` into ``out`` ((m, 3) float64, C-contiguous).
+
+    Copied when ``mesh`` has them; else computed there (the same numbers)
+    and not kept by ``mesh``: for an operator whose output's vertices
+    start with them (the dual of an open mesh), so that they are not made
+    and then copied.
+    """
+    made = mesh._own.get("face_centroids")
+    if made is not None:
+        out[...] = made
+        return out
+    return face_means(
+        mesh._vertices, mesh._corners, mesh._offsets, mesh._uniform_size, mesh._extent, out
+    )
 
 
 def extent(mesh: Mesh) -> float:

@@ -22,7 +22,12 @@ SAFE_EXTENT = 2.0**1000
 
 
 def face_means(
-    values: np.ndarray, corners: np.ndarray, offsets: np.ndarray, k: int, extent: float
+    values: np.ndarray,
+    corners: np.ndarray,
+    offsets: np.ndarray,
+    k: int,
+    extent: float,
+    out: np.ndarray | None = None,
 ) -> FloatArray:
     """(m, d) the mean of ``values`` (n, d) over every face, in blocks of faces.
 
@@ -32,13 +37,14 @@ def face_means(
     those of those whole-array expressions, bit for bit; only the memory
     they need is bounded (a block at a time).  Values beyond
     :data:`SAFE_EXTENT` are scaled down by a power of two first (exact),
-    so no sum overflows.
+    so no sum overflows.  ``out``, (m, d) float64 and C-contiguous when
+    given, receives the means (and is returned).
     """
     values = values.reshape(values.shape[0], -1)
     if extent >= SAFE_EXTENT:
         shift = int(np.frexp(extent)[1]) - 1000
-        out = face_means(np.ldexp(values, -shift), corners, offsets, k, 0.0)
-        out = np.ldexp(out, shift)
+        out = face_means(np.ldexp(values, -shift), corners, offsets, k, 0.0, out)
+        np.ldexp(out, shift, out=out)
         if not np.isfinite(out).all():
             raise MeshError(
                 f"coordinates up to {extent:.3g} are too large: a mean of them "
@@ -47,18 +53,19 @@ def face_means(
         return out
     m, d = offsets.size - 1, values.shape[1]
     if m == 0:
-        return np.empty((m, d))
+        return np.empty((m, d)) if out is None else out
     if not values.flags.c_contiguous:
         values = np.ascontiguousarray(values)
     jit = _jit.kernels(corners.size)
     if jit is not None:  # the same sums in the same order, compiled
         if k and k < 8:
-            return jit.face_means_uniform(values, corners, k)
+            return jit.face_means_uniform(values, corners, k, out)
         if not k:
             sizes = np.diff(offsets)
             if 3 <= int(sizes.min()) and int(sizes.max()) <= 129:
-                return jit.face_means_mixed(values, corners, offsets)
-    out = np.empty((m, d))
+                return jit.face_means_mixed(values, corners, offsets, out)
+    if out is None:
+        out = np.empty((m, d))
     if k and k < 8:
         block = BLOCK
         corner_rows = corners.reshape(m, k)

@@ -174,7 +174,9 @@ def inverse(ring: np.ndarray) -> np.ndarray:
     return pos
 
 
-def start_at_max(ring: np.ndarray, offsets: np.ndarray | None, k: int = 0) -> np.ndarray:
+def start_at_max(
+    ring: np.ndarray, offsets: np.ndarray | None, k: int = 0, out: np.ndarray | None = None
+) -> np.ndarray:
     """Every vertex's ring turned to start at its largest half-edge, order kept.
 
     The rings :attr:`pentanb.Mesh.vertex_ring` derives for a mesh start
@@ -190,16 +192,21 @@ def start_at_max(ring: np.ndarray, offsets: np.ndarray | None, k: int = 0) -> np
     offsets : (n + 1,) int, or None with ``k``
     k : int
         Every vertex has k half-edges (0: read the sizes from ``offsets``).
+    out : (H,) int, optional
+        Where to write them (not overlapping ``ring``).
 
     Returns
     -------
     (H,) int
-        A new array.
+        ``out``, or a new array.
     """
     jit = _jit.kernels(ring.size)
     if jit is not None:  # the same permutation, compiled
         csr = ring[:0] if offsets is None else offsets  # empty: k half-edges each
-        return jit.start_at_max(ring, csr, max(k, 1))
+        return jit.start_at_max(ring, csr, max(k, 1), out)
+    if out is not None:
+        out[...] = start_at_max(ring, offsets, k)
+        return out
     if k:
         rows = ring.reshape(-1, k)
         first = rows.argmax(axis=1)
@@ -321,11 +328,30 @@ def open_twins_from(twin: np.ndarray, chain: np.ndarray, chain_offsets: np.ndarr
     return Several(twin=hole_twins(twin, bh), _boundary=(bh, off))
 
 
+def face_of(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
+    """(k,) int64: the face of each of a few half-edges ``h``, from the faces' offsets alone.
+
+    A search per half-edge, run on ``h`` sorted (a search walks the offsets
+    from near where the last one ended: several times faster than in loop
+    order on a mesh of millions of faces) and on ``h`` cast to the offsets'
+    dtype (else numpy widens all the offsets on every call).
+    """
+    h = np.asarray(h, dtype=np.int64)
+    o = np.asarray(offsets)
+    if h.size < 2:
+        return np.searchsorted(o, h, side="right").astype(np.int64) - 1
+    order = np.argsort(h, kind="stable")
+    f = np.empty(h.size, dtype=np.int64)
+    f[order] = np.searchsorted(o, h[order].astype(o.dtype, copy=False), side="right")
+    f -= 1
+    return f
+
+
 def boundary_prev(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
     """(k,) int64: ``prev[h]`` of a few half-edges ``h``, from the faces' offsets alone."""
     h = np.asarray(h, dtype=np.int64)
     o = np.asarray(offsets)
-    f = np.searchsorted(o, h, side="right") - 1
+    f = face_of(o, h)
     first = o[f].astype(np.int64)
     return np.where(h == first, o[f + 1].astype(np.int64) - 1, h - 1)
 
@@ -334,7 +360,7 @@ def boundary_next(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
     """(k,) int64: ``next[h]`` of a few half-edges ``h``, from the faces' offsets alone."""
     h = np.asarray(h, dtype=np.int64)
     o = np.asarray(offsets)
-    f = np.searchsorted(o, h, side="right") - 1
+    f = face_of(o, h)
     last = o[f + 1].astype(np.int64) - 1
     return np.where(h == last, o[f].astype(np.int64), h + 1)
 
@@ -442,10 +468,12 @@ def check_vertex_faces(mesh: Mesh, op: str, valence: np.ndarray | None = None) -
     if valence is None:
         _, ring_offsets = mesh.vertex_ring
         valence = np.diff(ring_offsets)
-    if mesh.is_closed:
-        few = np.flatnonzero(valence < 3)
-    else:  # a boundary vertex's face closes along the boundary: 2 edges are enough
-        few = np.flatnonzero((valence < 3) & ~mesh.is_boundary_vertex)
+    few = np.flatnonzero(valence < 3)
+    if few.size and not mesh.is_closed:
+        # a boundary vertex's face closes along the boundary: 2 edges are
+        # enough (its ring starts at its hole half-edge, numbered from H)
+        ring, ring_offsets = mesh.vertex_ring
+        few = few[ring[ring_offsets[few]] < mesh.n_halfedges]
     if few.size:
         v, k = int(few[0]), int(valence[few[0]])
         more = f" (and {few.size - 1} more such vertices)" if few.size > 1 else ""
@@ -461,7 +489,7 @@ def check_vertex_faces(mesh: Mesh, op: str, valence: np.ndarray | None = None) -
 CORNER_ANGLE = 30.0
 
 
-def boundary_corners(mesh: Mesh) -> np.ndarray:
+def boundary_corners(mesh: Mesh, nxt: np.ndarray | None = None) -> np.ndarray:
     """(C,) int: the corners of an open mesh's boundary, in increasing order.
 
     A corner is a boundary vertex of one face (two edges) where the
@@ -475,6 +503,9 @@ def boundary_corners(mesh: Mesh) -> np.ndarray:
     Parameters
     ----------
     mesh : Mesh
+    nxt : (B,) int, optional
+        ``next`` of every boundary half-edge, when the caller has it
+        (:func:`boundary_next`).
 
     Returns
     -------
@@ -484,7 +515,8 @@ def boundary_corners(mesh: Mesh) -> np.ndarray:
     if not bh.size:
         return np.zeros(0, dtype=np.int64)
     v = mesh.vertices
-    nxt = boundary_next(mesh.offsets, bh)
+    if nxt is None:
+        nxt = boundary_next(mesh.offsets, bh)
     tail, head = mesh.corners[bh], mesh.corners[nxt]
     after = loop_successor(mesh)  # the edge leaving head[bh[j]] is bh[after[j]]
     a = v[head] - v[tail]
@@ -496,11 +528,11 @@ def boundary_corners(mesh: Mesh) -> np.ndarray:
     return np.sort(head[sharp & one_face]).astype(np.int64)
 
 
-def corner_ids(mesh: Mesh, first: int) -> np.ndarray:
+def corner_ids(mesh: Mesh, first: int, nxt: np.ndarray | None = None) -> np.ndarray:
     """(n,) int: the output vertex keeping every corner (numbered from ``first``
-    in vertex order), -1 at every other vertex."""
+    in vertex order), -1 at every other vertex (``nxt``: see :func:`boundary_corners`)."""
     ids = np.full(mesh.n_vertices, -1, dtype=np.int64)
-    at = boundary_corners(mesh)
+    at = boundary_corners(mesh, nxt)
     ids[at] = np.arange(first, first + at.size)
     return ids
 
@@ -558,6 +590,62 @@ def open_vertex_faces(
     """
     out, offsets, _ = placed_vertex_faces(mesh, items, entering, leaving, kept)
     return out, offsets
+
+
+def open_dual_faces(
+    mesh: Mesh, kept: np.ndarray, n_out: int, nxt: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """The faces of the dual of an open mesh: :func:`open_vertex_faces` with the
+    face of every ring half-edge, ``F + j`` for the boundary edge ``bh[j]``.
+
+    One compiled pass over the vertex rings on a large mesh (the same
+    arrays as the numpy path's, which runs otherwise).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        An open mesh (F faces, B boundary edges).
+    kept : (n,) int
+        :func:`corner_ids` of ``mesh`` (numbered from ``F + B``).
+    n_out : int
+        The dual's number of vertices.
+    nxt : (B,) int, optional
+        ``next`` of every boundary half-edge (:func:`boundary_next`).
+
+    Returns
+    -------
+    corners : int array
+        Of the dual's index dtype (:func:`index_dtype`).
+    offsets : (n + 1,) int
+    """
+    F, bh = mesh.n_faces, mesh.boundary_halfedges
+    mids = np.arange(F, F + bh.size, dtype=np.int64)
+    ring, ring_off = mesh.vertex_ring
+    jit = _jit.kernels(ring.size)
+    if jit is None:
+        corners, offsets, _ = placed_vertex_faces(
+            mesh, (mesh.halfedge_face,), mids, mids, kept, n_out
+        )
+        return corners, offsets
+    if nxt is None:
+        nxt = boundary_next(mesh.offsets, bh)
+    keep = kept[mesh.corners[nxt]]  # at the head of bh[j]
+    leave = mids[loop_successor(mesh)]
+    total = ring.size + bh.size + int(np.count_nonzero(keep >= 0))
+    k = _mesh.uniform_size(mesh)
+    face = ring[:0] if k else mesh.halfedge_face
+    return jit.open_dual_faces(
+        ring,
+        ring_off,
+        mesh.n_halfedges,
+        k,
+        face,
+        mids,
+        keep,
+        leave,
+        total,
+        index_dtype(n_out, total),
+    )
 
 
 def placed_vertex_faces(

@@ -47,6 +47,7 @@ from ._build import (
     index_dtype,
     inverse,
     loop_successor,
+    open_dual_faces,
     open_twins_from,
     output,
     placed_vertex_faces,
@@ -146,14 +147,11 @@ def _open_dual(mesh: Mesh) -> Mesh:
     check_vertex_faces(mesh, "dual")
     F, bh = mesh.n_faces, mesh.boundary_halfedges
     B = bh.size
-    kept = corner_ids(mesh, F + B)
-    mids = np.arange(F, F + B, dtype=np.int64)
-    at = np.flatnonzero(kept >= 0)
-    n_out = F + B + at.size
-    corners, offsets, placed = placed_vertex_faces(
-        mesh, (mesh.halfedge_face,), mids, mids, kept, n_out
-    )
-    return _open_dual_output(mesh, kept, corners, offsets, placed)
+    nxt = boundary_next(mesh.offsets, bh)
+    kept = corner_ids(mesh, F + B, nxt)
+    n_out = F + B + int(np.count_nonzero(kept >= 0))
+    corners, offsets = open_dual_faces(mesh, kept, n_out, nxt)
+    return _open_dual_output(mesh, kept, corners, offsets, None, nxt)
 
 
 def _open_dual_output(
@@ -162,21 +160,23 @@ def _open_dual_output(
     corners: np.ndarray,
     offsets: np.ndarray,
     placed: np.ndarray | None,
+    nxt: np.ndarray,
 ) -> Mesh:
     """The dual of the open ``mesh`` from its faces (``placed``: where its vertex
-    ring entries went, None to find out when the twins are asked for), with
-    producers of its twins, rings and boundary, and a record for its own dual."""
+    ring entries went, None to find out when the twins are asked for; ``nxt``:
+    ``next`` of its boundary half-edges), with producers of its twins, rings
+    and boundary, and a record for its own dual."""
     F, bh = mesh.n_faces, mesh.boundary_halfedges
     B = bh.size
     at = np.flatnonzero(kept >= 0)
     v = mesh.vertices
     vertices = np.empty((F + B + at.size, 3))
-    vertices[:F] = mesh.face_centroids
-    a, b = v[mesh.corners[bh]], v[mesh.corners[boundary_next(mesh.offsets, bh)]]
+    _mesh.face_centroids_into(mesh, vertices[:F])
+    heads = mesh.corners[nxt]
+    a, b = v[mesh.corners[bh]], v[heads]
     vertices[F : F + B] = 0.5 * a + 0.5 * b  # (no sum that could overflow)
     vertices[F + B :] = v[at]
     faces = _mesh.faces_only(mesh)
-    heads = faces.corners[boundary_next(faces.offsets, bh)]
     one = (kept[heads] < 0).astype(np.int64)  # boundary half-edges at head(bh[j]): 1 or 2
     n_out, size = vertices.shape[0], corners.size
     dt = index_dtype(n_out, size)
@@ -191,7 +191,7 @@ def _open_dual_output(
 
     written = functools.cache(connectivity)
     out = output(vertices, corners, offsets, twin=written, rings=written)
-    base = np.asarray(offsets, dtype=np.int64)[heads]  # the first corner of every boundary face
+    base = offsets[heads].astype(np.int64)  # the first corner of every boundary face
     loops = _mesh.loop_offsets(faces)
     _mesh.note_boundary(out, lambda: canonical_loops(*_open_dual_chain(base, one, loops)))
     # for the dual of this dual: the input's faces and boundary (arrays only,
@@ -245,7 +245,8 @@ def _open_dual_again(
     F1 = mesh.n_faces  # source's vertices
     bh1 = mesh.boundary_halfedges
     B1 = bh1.size
-    kept = corner_ids(mesh, F1 + B1)
+    nxt = boundary_next(mesh.offsets, bh1)
+    kept = corner_ids(mesh, F1 + B1, nxt)
     order = np.argsort(bh1)
     sorted_bh1 = bh1[order]
 
@@ -279,14 +280,14 @@ def _open_dual_again(
     total = H + 4 * B + ends_flat.size
     dt = index_dtype(n_out, total)
     corners = np.empty(total, dtype=dt)
-    corners[:H] = start_at_max(source_corners, offsets_in, k)
+    start_at_max(source_corners, offsets_in, k, corners[:H])
     corners[H : H + 4 * B] = quads.reshape(-1)
     corners[H + 4 * B :] = ends_flat
     offsets = np.empty(F + B + two.size + 1, dtype=np.int64)
     offsets[: F + 1] = offsets_in
     offsets[F + 1 : F + B + 1] = H + 4 * np.arange(1, B + 1)
     offsets[F + B + 1 :] = H + 4 * B + np.cumsum(3 + (still >= 0))
-    return _open_dual_output(mesh, kept, corners, offsets, None)
+    return _open_dual_output(mesh, kept, corners, offsets, None, nxt)
 
 
 def _open_dual_connectivity(
