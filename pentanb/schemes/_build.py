@@ -356,9 +356,14 @@ def boundary_prev(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
     return np.where(h == first, o[f + 1].astype(np.int64) - 1, h - 1)
 
 
-def boundary_next(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
-    """(k,) int64: ``next[h]`` of a few half-edges ``h``, from the faces' offsets alone."""
+def boundary_next(offsets: np.ndarray, h: np.ndarray, k: int = 0) -> np.ndarray:
+    """(k,) int64: ``next[h]`` of a few half-edges ``h``, from the faces' offsets alone
+    (``k``: every face has k sides, when the caller knows it; 0: read the offsets)."""
     h = np.asarray(h, dtype=np.int64)
+    if k:
+        nxt = h + 1
+        nxt[nxt % k == 0] -= k
+        return nxt
     o = np.asarray(offsets)
     f = face_of(o, h)
     last = o[f + 1].astype(np.int64) - 1
@@ -516,7 +521,7 @@ def boundary_corners(mesh: Mesh, nxt: np.ndarray | None = None) -> np.ndarray:
         return np.zeros(0, dtype=np.int64)
     v = mesh.vertices
     if nxt is None:
-        nxt = boundary_next(mesh.offsets, bh)
+        nxt = boundary_next(mesh.offsets, bh, _mesh.uniform_size(mesh))
     tail, head = mesh.corners[bh], mesh.corners[nxt]
     after = loop_successor(mesh)  # the edge leaving head[bh[j]] is bh[after[j]]
     a = v[head] - v[tail]
@@ -628,7 +633,7 @@ def open_dual_faces(
         )
         return corners, offsets
     if nxt is None:
-        nxt = boundary_next(mesh.offsets, bh)
+        nxt = boundary_next(mesh.offsets, bh, _mesh.uniform_size(mesh))
     keep = kept[mesh.corners[nxt]]  # at the head of bh[j]
     leave = mids[loop_successor(mesh)]
     total = ring.size + bh.size + int(np.count_nonzero(keep >= 0))

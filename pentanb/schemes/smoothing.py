@@ -147,7 +147,7 @@ def _open_dual(mesh: Mesh) -> Mesh:
     check_vertex_faces(mesh, "dual")
     F, bh = mesh.n_faces, mesh.boundary_halfedges
     B = bh.size
-    nxt = boundary_next(mesh.offsets, bh)
+    nxt = boundary_next(mesh.offsets, bh, _mesh.uniform_size(mesh))
     kept = corner_ids(mesh, F + B, nxt)
     n_out = F + B + int(np.count_nonzero(kept >= 0))
     corners, offsets = open_dual_faces(mesh, kept, n_out, nxt)
@@ -245,7 +245,7 @@ def _open_dual_again(
     F1 = mesh.n_faces  # source's vertices
     bh1 = mesh.boundary_halfedges
     B1 = bh1.size
-    nxt = boundary_next(mesh.offsets, bh1)
+    nxt = boundary_next(mesh.offsets, bh1, _mesh.uniform_size(mesh))
     kept = corner_ids(mesh, F1 + B1, nxt)
     order = np.argsort(bh1)
     sorted_bh1 = bh1[order]
@@ -255,7 +255,7 @@ def _open_dual_again(
 
     F, B = source_offsets.size - 1, bh.size
     tail = source_corners[bh].astype(np.int64)
-    head = source_corners[boundary_next(source_offsets, bh)].astype(np.int64)
+    head = source_corners[boundary_next(source_offsets, bh, k)].astype(np.int64)
     before = np.arange(-1, B - 1, dtype=np.int64)  # the loop predecessor of every j
     before[loops[:-1]] = loops[1:] - 1
     quads = np.empty((B, 4), dtype=np.int64)
@@ -280,7 +280,7 @@ def _open_dual_again(
     total = H + 4 * B + ends_flat.size
     dt = index_dtype(n_out, total)
     corners = np.empty(total, dtype=dt)
-    start_at_max(source_corners, offsets_in, k, corners[:H])
+    start_at_max(source_corners, None if k else offsets_in, k, corners[:H])
     corners[H : H + 4 * B] = quads.reshape(-1)
     corners[H + 4 * B :] = ends_flat
     offsets = np.empty(F + B + two.size + 1, dtype=np.int64)
