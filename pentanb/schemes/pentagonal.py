@@ -202,8 +202,8 @@ def _open_output(mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_
     @functools.cache
     def boundary() -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
         chain = chain_of(faces)
-        loops = canonical_loops(chain.reshape(-1), chain.shape[1] * _mesh.loop_offsets(faces))
-        return _hole_of(chain, loops[0], H_out), loops
+        offsets = chain.shape[1] * _mesh.loop_offsets(faces).astype(np.int64)
+        return _hole_of(chain, offsets, H_out), canonical_loops(chain.reshape(-1), offsets)
 
     def twin() -> Several:
         loops = boundary()[1]
@@ -218,13 +218,38 @@ def _open_output(mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_
     return out
 
 
-def _hole_of(chain: np.ndarray, bh: np.ndarray, H: int) -> np.ndarray:
-    """(B, p) int64: ``H + j`` for the output's j-th boundary half-edge ``bh[j]``, at its
-    place in ``chain`` (the same half-edges in another order)."""
-    order = np.argsort(bh)
-    at = order[np.searchsorted(bh[order], chain)]
-    at += H
-    return at
+def _hole_of(chain: np.ndarray, offsets: np.ndarray, H: int) -> np.ndarray:
+    """(B, p) int64: the output's hole half-edge ``H + j`` along every half-edge of
+    ``chain`` (its boundary half-edges, loop ``i`` at ``offsets[i]:offsets[i + 1]``
+    of the flat chain), ``j`` its place once the loops are put in order as
+    :func:`~pentanb.mesh.boundary.canonical_loops` puts them: every loop turned
+    to start at its smallest half-edge, loops in the order of those."""
+    flat = chain.reshape(-1)
+    start, sizes = offsets[:-1], np.diff(offsets)
+    least = np.minimum.reduceat(flat, start)
+    shift = np.flatnonzero(flat == np.repeat(least, sizes))  # one per loop: half-edges differ
+    shift -= start
+    order = np.argsort(least, kind="stable")
+    first = np.empty(sizes.size, dtype=np.int64)  # where every loop starts in the order
+    first[order] = np.cumsum(sizes[order]) - sizes[order]
+    first += H
+    # the q-th half-edge of loop i goes to first[i] + (q - shift[i]) mod sizes[i]
+    q = np.arange(flat.size, dtype=np.int64)
+    q -= np.repeat(start + shift, sizes)
+    size = np.repeat(sizes, sizes)
+    q += size  # (q - shift > -size)
+    q %= size
+    q += np.repeat(first, sizes)
+    return q.reshape(chain.shape)
+
+
+def _boundary_prev(mesh, bh: np.ndarray) -> np.ndarray:
+    """(B,) int64: ``prev`` of the boundary half-edges ``bh`` of ``mesh``."""
+    k = _mesh.uniform_size(mesh)
+    if not k:
+        return boundary_prev(mesh.offsets, bh)
+    h = bh.astype(np.int64)
+    return np.where(h % k == 0, h + (k - 1), h - 1)
 
 
 def _pentagonalized_chain(mesh) -> np.ndarray:
@@ -233,7 +258,7 @@ def _pentagonalized_chain(mesh) -> np.ndarray:
     ``prev[b]``), ``5b`` and ``5b + 1``."""
     bh = mesh.boundary_halfedges
     chain = np.empty((bh.size, 3), dtype=np.int64)
-    chain[:, 0] = 5 * boundary_prev(mesh.offsets, bh) + 2
+    chain[:, 0] = 5 * _boundary_prev(mesh, bh) + 2
     chain[:, 1] = 5 * bh
     chain[:, 2] = chain[:, 1] + 1
     return chain
@@ -485,7 +510,7 @@ def _preserved_chain(mesh) -> np.ndarray:
     ``prev[b]``) and ``H + 5b``."""
     H, bh = mesh.n_halfedges, mesh.boundary_halfedges
     chain = np.empty((bh.size, 2), dtype=np.int64)
-    chain[:, 0] = H + 5 * mesh.prev[bh].astype(np.int64) + 1
+    chain[:, 0] = H + 5 * _boundary_prev(mesh, bh) + 1
     chain[:, 1] = H + 5 * bh.astype(np.int64)
     return chain
 
