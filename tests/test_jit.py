@@ -370,6 +370,25 @@ def test_the_open_rings_the_paper_schemes_write_are_the_numpy_ones(compiled, op,
 
 
 @pytest.mark.slow
+@pytest.mark.parametrize("dt", [np.int32, np.int64])
+def test_the_open_rings_are_the_numpy_ones_in_either_index_dtype(compiled, dt):
+    # the producers written for an output of int64 indices (a mesh of more
+    # than 2**31 corners) take the input's int32 arrays as they are
+    from pentanb.schemes import pentagonal
+
+    m = holed(reverse=True)
+    for rings_of, p, H_out in (
+        (pentagonal._pentagonalized_open_rings, 3, 5 * m.n_halfedges),
+        (pentagonal._preserved_open_rings, 2, 6 * m.n_halfedges),
+    ):
+        B = m.n_boundary_edges
+        hole = (H_out + np.random.default_rng(p).permutation(p * B)).reshape(B, p)
+        a, b = both(lambda f=rings_of, hole=hole: f(fresh(m), hole, np.dtype(dt)))
+        for x, y in zip(a, b):
+            assert same_bytes(x, y) and x.dtype == dt
+
+
+@pytest.mark.slow
 def test_start_at_max_is_the_numpy_permutation(compiled):
     from pentanb.schemes._build import start_at_max
 
