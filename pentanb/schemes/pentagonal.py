@@ -191,10 +191,11 @@ def _open_output(mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_
     order; the output's boundary loops are those chained
     (:func:`~pentanb.mesh.boundary.canonical_loops`), found once (a few
     arrays of ``p B`` entries) for whichever of its boundary, twins
-    (``twin_of(faces, hole, dt)``) and rings (``rings_of(faces, hole,
-    dt)``) is asked for first; ``hole`` ``(B, p)`` is the output's hole
-    half-edge along every piece.  The rings do not wait for the twins: the
-    dual of an open mesh needs its rings and boundary only.
+    (``twin_of(faces, bh_out, dt)``, ``bh_out`` its boundary half-edges
+    loop after loop) and rings (``rings_of(faces, hole, dt)``, ``hole``
+    ``(B, p)`` its hole half-edge along every piece) is asked for first.
+    The rings do not wait for the twins: the dual of an open mesh needs
+    its rings and boundary only.
     """
     faces = _mesh.faces_only(mesh)
     H_out = corners.size
