@@ -763,3 +763,114 @@ def open_dual_faces(ring, ring_off, H, k, face, enter, keep, leave, total, dtype
     offsets[0] = 0
     split(n, open_dual_faces_part, ring, ring_off, H, k, face, enter, keep, leave, out, offsets)
     return out, offsets
+
+
+# -- the open outputs' rings of the paper's two schemes (pentagonal._*_open_rings) ----
+# One pass each over the input's rings, edges and faces, as the closed
+# kernels write theirs, the boundary's few rows written where they fall;
+# ``hole`` holds the output's hole half-edge along every piece of the
+# input's boundary half-edge j (pentagonalization: 3 a boundary half-edge,
+# pentagon preservation: 2), and the offsets are written with the rings.
+
+__all__ += ["pentagonalized_open_rings", "preserved_open_rings"]
+
+
+@jit
+def pentagonalized_open_fill(
+    ring, ring_off, eh, twin, prv, tail, head, offsets, hole, out, out_off
+):  # pragma: no cover - compiled
+    H, N, n = prv.size, ring.size, ring_off.size - 1
+    # round an old vertex: 5 prev[h] + 2 in its order; its hole half-edge's:
+    # the hole half-edge along the last third of the input's
+    for i in range(N):
+        h = ring[ix(i)]
+        out[ix(i)] = 5 * prv[ix(h)] + 2 if h < H else hole[ix(3 * (h - H) + 2)]
+    for v in range(n + 1):
+        out_off[ix(v)] = ring_off[ix(v)]
+    # round the trisection points 2e, 2e + 1: (5h, 5 prev[h] + 3, 5 twin[h] + 1)
+    # of the half-edge they are t1 of, turned to start at the largest; on
+    # the boundary (b = eh[e]) t1 of b: the hole, 5b, 5 prev[b] + 3, and t2:
+    # the hole, 5b + 1, in the order of the points (2e is t1 when b runs up)
+    r, k = N, n + 1
+    for e in range(eh.size):
+        h = eh[ix(e)]
+        t = twin[ix(h)]
+        if t < H:
+            rotated(out, r, 5 * h, 5 * prv[ix(h)] + 3, 5 * t + 1)
+            rotated(out, r + 3, 5 * t, 5 * prv[ix(t)] + 3, 5 * h + 1)
+            out_off[ix(k)], out_off[ix(k + 1)] = r + 3, r + 6
+            r += 6
+        else:
+            j = 3 * (t - H)
+            up = tail[ix(h)] < head[ix(h)]
+            a = r if up else r + 2  # where t1's row starts
+            b = r + 3 if up else r  # and t2's
+            out[ix(a)], out[ix(a + 1)], out[ix(a + 2)] = hole[ix(j)], 5 * h, 5 * prv[ix(h)] + 3
+            out[ix(b)], out[ix(b + 1)] = hole[ix(j + 1)], 5 * h + 1
+            out_off[ix(k)], out_off[ix(k + 1)] = r + (3 if up else 2), r + 5
+            r += 5
+        k += 2
+    # round the centre of f: 5h + 4 for f's half-edges, from its last
+    for f in range(offsets.size - 1):
+        a, b = offsets[ix(f)], offsets[ix(f + 1)]
+        out[ix(r)] = 5 * (b - 1) + 4
+        for h in range(a, b - 1):
+            out[ix(r + 1 + h - a)] = 5 * h + 4
+        r += b - a
+        out_off[ix(k + f)] = r
+
+
+def pentagonalized_open_rings(ring, ring_off, eh, twin, prv, tail, head, offsets, hole, dt):
+    # the vertex rings of pentagonalize(mesh) for an open mesh and their offsets
+    # (pentagonal._pentagonalized_open_rings): 5H + 3B entries, n + 2E + F rings
+    H, B, E = prv.size, ring.size - prv.size, eh.size
+    out = np.empty(5 * H + 3 * B, dt)
+    out_off = np.empty(ring_off.size + 2 * E + offsets.size - 1, dt)
+    pentagonalized_open_fill(ring, ring_off, eh, twin, prv, tail, head, offsets, hole, out, out_off)
+    return out, out_off
+
+
+@jit
+def preserved_open_fill(ring, ring_off, eh, twin, prv, hole, out, out_off):  # pragma: no cover
+    H, N, n = prv.size, ring.size, ring_off.size - 1
+    # round an old vertex: H + 5 prev[h] + 1 in its order; its hole
+    # half-edge's: the hole half-edge along the second half of the input's
+    for i in range(N):
+        h = ring[ix(i)]
+        out[ix(i)] = H + 5 * prv[ix(h)] + 1 if h < H else hole[ix(2 * (h - H) + 1)]
+    for v in range(n + 1):
+        out_off[ix(v)] = ring_off[ix(v)]
+    # round the midpoint of edge e (h = eh[e]): H + 5h, H + 5 prev[h] + 2,
+    # H + 5 twin[h], H + 5 prev[twin[h]] + 2, turned to start at the
+    # largest; on the boundary: the hole, H + 5h, H + 5 prev[h] + 2
+    r = N
+    for e in range(eh.size):
+        h = eh[ix(e)]
+        t = twin[ix(h)]
+        p = prv[ix(h)]
+        if t < H:
+            x0, x1, x2, x3 = H + 5 * h, H + 5 * p + 2, H + 5 * t, H + 5 * prv[ix(t)] + 2
+            p0, p1, p2, p3 = rows4(x0, x1, x2, x3)
+            out[ix(r + p0)], out[ix(r + p1)], out[ix(r + p2)], out[ix(r + p3)] = x0, x1, x2, x3
+            r += 4
+        else:
+            out[ix(r)], out[ix(r + 1)] = hole[ix(2 * (t - H))], H + 5 * h
+            out[ix(r + 2)] = H + 5 * p + 2
+            r += 3
+        out_off[ix(n + 1 + e)] = r
+    # round the copy vertex of h: h, H + 5 prev[h] + 3, H + 5h + 4, turned
+    k = n + 1 + eh.size
+    for h in range(H):
+        rotated(out, r, h, H + 5 * prv[ix(h)] + 3, H + 5 * h + 4)
+        r += 3
+        out_off[ix(k + h)] = r
+
+
+def preserved_open_rings(ring, ring_off, eh, twin, prv, hole, dt):
+    # the vertex rings of preserve_pentagons(mesh) for an open mesh and their
+    # offsets (pentagonal._preserved_open_rings): 6H + 2B entries, n + E + H rings
+    H, B, E = prv.size, ring.size - prv.size, eh.size
+    out = np.empty(6 * H + 2 * B, dt)
+    out_off = np.empty(ring_off.size + E + H, dt)
+    preserved_open_fill(ring, ring_off, eh, twin, prv, hole, out, out_off)
+    return out, out_off

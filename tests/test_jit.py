@@ -316,6 +316,78 @@ def test_the_points_and_rings_schemes_write_are_the_numpy_ones(corpus_mesh, comp
         assert same_bytes(x, y)
 
 
+def holed(reverse: bool = False) -> pentanb.Mesh:
+    """An 8 x 7 grid without three quads (two holes, one at the rim), every
+    third quad split in two triangles; its faces reversed if asked."""
+    xs, ys = np.meshgrid(np.arange(9.0), np.arange(8.0), indexing="ij")
+    v = np.stack([xs.ravel(), ys.ravel(), 0.1 * np.sin(xs.ravel() + ys.ravel())], 1)
+    faces = []
+    for i in range(8):
+        for j in range(7):
+            if (i, j) in ((2, 2), (2, 3), (7, 0)):
+                continue
+            a = i * 8 + j
+            q = [a, a + 8, a + 9, a + 1]
+            faces += [q[:3], [q[0], q[2], q[3]]] if len(faces) % 3 == 0 else [q]
+    if reverse:
+        faces = [f[::-1] for f in faces]
+    used = sorted({x for f in faces for x in f})
+    new = {x: i for i, x in enumerate(used)}
+    return pentanb.Mesh(v[used], [[new[x] for x in f] for f in faces])
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("op", [pentanb.pentagonalize, pentanb.preserve_pentagons])
+@pytest.mark.parametrize("first", ["vertex_ring", "twin", "boundary_halfedges"])
+@pytest.mark.parametrize(
+    "name", ["open disk", "holed grid", "holed grid reversed", "torus without two faces"]
+)
+def test_the_open_rings_the_paper_schemes_write_are_the_numpy_ones(compiled, op, first, name):
+    # the rings of an open output (compiled in one pass, its boundary's rows
+    # among them), its twins and boundary, whichever is asked for first,
+    # and its dual's faces, built from them
+    m = {
+        "open disk": shapes.open_disk,
+        "holed grid": holed,
+        "holed grid reversed": lambda: holed(reverse=True),
+        "torus without two faces": lambda: pentanb.Mesh(
+            shapes.torus().vertices, [f.tolist() for f in shapes.torus().faces[2:]]
+        ),
+    }[name]()
+    assert not m.is_closed
+
+    def run():
+        out = op(fresh(m))
+        getattr(out, first)
+        ring, off = out.vertex_ring
+        d = pentanb.dual(out)
+        loops = np.concatenate(out.boundary_loops)
+        return (ring, off, out.twin, out.boundary_halfedges, loops, d.corners, d.offsets)
+
+    a, b = both(run)
+    for x, y in zip(a, b):
+        assert same_bytes(x, y)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("dt", [np.int32, np.int64])
+def test_the_open_rings_are_the_numpy_ones_in_either_index_dtype(compiled, dt):
+    # the producers written for an output of int64 indices (a mesh of more
+    # than 2**31 corners) take the input's int32 arrays as they are
+    from pentanb.schemes import pentagonal
+
+    m = holed(reverse=True)
+    for rings_of, p, H_out in (
+        (pentagonal._pentagonalized_open_rings, 3, 5 * m.n_halfedges),
+        (pentagonal._preserved_open_rings, 2, 6 * m.n_halfedges),
+    ):
+        B = m.n_boundary_edges
+        hole = (H_out + np.random.default_rng(p).permutation(p * B)).reshape(B, p)
+        a, b = both(lambda f=rings_of, hole=hole: f(fresh(m), hole, np.dtype(dt)))
+        for x, y in zip(a, b):
+            assert same_bytes(x, y) and x.dtype == dt
+
+
 @pytest.mark.slow
 def test_start_at_max_is_the_numpy_permutation(compiled):
     from pentanb.schemes._build import start_at_max

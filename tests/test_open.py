@@ -1064,3 +1064,45 @@ def test_start_at_max_turns_every_row_to_its_largest_in_blocks_of_one_size_or_no
     finally:
         _jit.use_jit(before)
     assert got.tolist() == want and got.dtype == ring.dtype
+
+
+@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
+@pytest.mark.parametrize("first", ["vertex_ring", "twin", "boundary_halfedges", "n_edges"])
+@pytest.mark.parametrize("name", list(WRITTEN))
+def test_open_outputs_connectivity_is_the_same_whichever_is_asked_for_first(name, scheme, first):
+    # the rings, twins and boundary are written apart: each must be what
+    # pairing the output's faces finds, whatever was asked for before it
+    out = pb.SCHEMES[scheme](WRITTEN[name]())
+    getattr(out, first)
+    made = Mesh(out.vertices, face_lists(out))
+    ring, off = out.vertex_ring
+    want, want_off = made.vertex_ring
+    assert ring.tolist() == want.tolist() and off.tolist() == want_off.tolist()
+    assert ring.dtype == want.dtype and off.dtype == want_off.dtype
+    assert out.twin.tolist() == made.twin.tolist() and out.twin.dtype == made.twin.dtype
+    assert out.boundary_halfedges.tolist() == made.boundary_halfedges.tolist()
+    assert _loops(out) == _loops(made)
+
+
+@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
+def test_the_dual_of_an_open_scheme_output_does_not_write_its_twins(scheme, monkeypatch):
+    from pentanb.schemes import pentagonal
+
+    m = WRITTEN["holed grid"]()
+    want = pb.dual(Mesh(*_arrays(pb.SCHEMES[scheme](m))))
+
+    def refused(*args):
+        raise AssertionError("the output's twins were written")
+
+    monkeypatch.setattr(pentagonal, "_pentagonalized_open_twin", refused)
+    monkeypatch.setattr(pentagonal, "_preserved_open_twin", refused)
+    out = pb.SCHEMES[scheme](m)
+    got = pb.dual(out)
+    assert face_lists(got) == face_lists(want)
+    assert np.array_equal(got.vertices, want.vertices)
+    with pytest.raises(AssertionError, match="twins were written"):
+        out.twin  # noqa: B018 - (the check above can fail)
+
+
+def _arrays(m: Mesh) -> tuple[np.ndarray, list[list[int]]]:
+    return m.vertices, face_lists(m)

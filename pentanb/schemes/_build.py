@@ -379,27 +379,18 @@ def remeshed(
     twin_of: Callable[[Any, np.dtype], np.ndarray],
     rings_of: Callable[[Any, np.dtype], Rings | Several],
     size_counts: tuple[tuple[int, int], ...] | None = None,
-    open_of: Callable[[Any, np.dtype], Several] | None = None,
 ) -> Mesh:
     """:func:`output` of a remeshing of ``mesh``, its connectivity written from ``mesh``'s.
 
     The output's twins and vertex rings are ``twin_of(faces, dt)`` and
     ``rings_of(faces, dt)``, run only when first asked for, ``faces`` being
     ``mesh``'s faces without its positions (so the output does not keep
-    them alive).  Those write a closed mesh's.  An open mesh's output
-    takes its twins, boundary and vertex rings from ``open_of(faces, dt)``
-    (one call, a :class:`~pentanb.mesh.Several` of ``twin``, ``_boundary``,
-    see :func:`open_twins_from`, and ``vertex_ring``) when given, else
-    derives them from its faces (the numpy path).
+    them alive).  Those write a closed mesh's; an open mesh's output derives
+    them from its faces.
     """
-    faces = _mesh.faces_only(mesh)
     if not mesh.is_closed:
-        if open_of is None:
-            return output(vertices, corners, offsets, size_counts=size_counts)
-        written = functools.cache(lambda: open_of(faces, dt))
-        return output(
-            vertices, corners, offsets, twin=written, rings=written, size_counts=size_counts
-        )
+        return output(vertices, corners, offsets, size_counts=size_counts)
+    faces = _mesh.faces_only(mesh)
     return output(
         vertices,
         corners,

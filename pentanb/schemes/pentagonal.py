@@ -8,9 +8,11 @@ On an open mesh both work face by face as on a closed one: a boundary edge
 is split as an interior edge is (in three, in two), so the output's
 boundary is the input's, refined, and its faces are the same pentagons
 (and copies).  The output's twins and rings are written from the
-input's as on a closed mesh (numpy), its boundary half-edges paired with
+input's as on a closed mesh (the rings in one compiled pass, the
+boundary's few rows among them), its boundary half-edges paired with
 hole half-edges in the order of its boundary loops, which are the input's,
-refined.
+refined.  The boundary, the twins and the rings are written apart, each
+when first asked for: the dual needs the rings and the boundary only.
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ import numpy as np
 from .. import _jit
 from ..mesh import Mesh, Rings, Several
 from ..mesh import build as _mesh
+from ..mesh.boundary import canonical_loops, hole_twins
 from ..mesh.halfedge import next_of, prev_of
 from ._build import (
     BLOCK,
@@ -30,7 +33,6 @@ from ._build import (
     check_scale,
     edge_points,
     index_dtype,
-    open_twins_from,
     output,
     remeshed,
     scale_safe,
@@ -137,15 +139,16 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     vertices[:n] = mesh.vertices
     edge_points(mesh, 2, out=vertices[n : n + 2 * E])
     vertices[n + 2 * E :] = mesh.face_centroids
-    if not closed:  # its twins, boundary and rings written from the input's, together
-        source = _mesh.faces_only(mesh)
-        written = functools.cache(lambda: _pentagonalized_open(source, dt))
-        return output(
+    if not closed:  # its twins, boundary and rings written from the input's, apart
+        return _open_output(
+            mesh,
             vertices,
             faces.reshape(-1),
             np.arange(0, 5 * H + 1, 5, dtype=dt),
-            twin=written,
-            rings=written,
+            dt,
+            _pentagonalized_chain,
+            _pentagonalized_open_twin,
+            _pentagonalized_open_rings,
         )
     # the twins' producer holds the input's twins and offsets only, not its
     # faces (whose cached connectivity would then stay alive until the
@@ -180,29 +183,104 @@ def _pentagonalized_twin(twin: np.ndarray, offsets: np.ndarray, dt: np.dtype) ->
     return out.reshape(-1)
 
 
-def _pentagonalized_open_twin(
-    twin: np.ndarray, offsets: np.ndarray, bh: np.ndarray, loops: np.ndarray, dt: np.dtype
-) -> Several:
-    """The twins and boundary of ``pentagonalize(mesh)`` for an open ``mesh``.
+def _open_output(mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_of, **kw) -> Mesh:
+    """:func:`output` of a scheme's open output, its boundary, twins and rings written apart.
 
-    As :func:`_pentagonalized_twin` inside; each boundary half-edge ``b``
-    of ``mesh`` gives three of the output, in loop order ``5 prev[b] + 2``
-    (its first third, on the pentagon of ``prev[b]``), ``5b`` and ``5b + 1``,
-    paired with the output's hole half-edges.
+    ``chain_of(faces)`` gives the output's boundary half-edges ``(B, p)``:
+    the ``p`` pieces of every boundary half-edge of the input, in its loop
+    order; the output's boundary loops are those chained
+    (:func:`~pentanb.mesh.boundary.canonical_loops`), found once (a few
+    arrays of ``p B`` entries) for whichever of its boundary, twins
+    (``twin_of(faces, bh_out, dt)``, ``bh_out`` its boundary half-edges
+    loop after loop) and rings (``rings_of(faces, hole, dt)``, ``hole``
+    ``(B, p)`` its hole half-edge along every piece) is asked for first.
+    The rings do not wait for the twins: the dual of an open mesh needs
+    its rings and boundary only.
     """
-    safe = twin.astype(dt, copy=True)
-    safe[bh] = 0  # (a hole half-edge has no prev: any face half-edge, written over)
-    out = _pentagonalized_twin(safe, offsets, dt)
-    del safe
+    faces = _mesh.faces_only(mesh)
+    H_out = corners.size
+
+    @functools.cache
+    def boundary() -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+        chain = chain_of(faces)
+        offsets = chain.shape[1] * _mesh.loop_offsets(faces).astype(np.int64)
+        return _hole_of(chain, offsets, H_out), canonical_loops(chain.reshape(-1), offsets)
+
+    def twin() -> Several:
+        loops = boundary()[1]
+        return Several(twin=twin_of(faces, loops[0], dt), _boundary=loops)
+
+    def rings() -> Several:
+        hole, loops = boundary()
+        return Several(vertex_ring=rings_of(faces, hole, dt), _boundary=loops)
+
+    out = output(vertices, corners, offsets, twin=twin, rings=rings, **kw)
+    _mesh.note_boundary(out, lambda: boundary()[1])
+    return out
+
+
+def _hole_of(chain: np.ndarray, offsets: np.ndarray, H: int) -> np.ndarray:
+    """(B, p) int64: the output's hole half-edge ``H + j`` along every half-edge of
+    ``chain`` (its boundary half-edges, loop ``i`` at ``offsets[i]:offsets[i + 1]``
+    of the flat chain), ``j`` its place once the loops are put in order as
+    :func:`~pentanb.mesh.boundary.canonical_loops` puts them: every loop turned
+    to start at its smallest half-edge, loops in the order of those."""
+    flat = chain.reshape(-1)
+    start, sizes = offsets[:-1], np.diff(offsets)
+    least = np.minimum.reduceat(flat, start)
+    shift = np.flatnonzero(flat == np.repeat(least, sizes))  # one per loop: half-edges differ
+    shift -= start
+    order = np.argsort(least, kind="stable")
+    first = np.empty(sizes.size, dtype=np.int64)  # where every loop starts in the order
+    first[order] = np.cumsum(sizes[order]) - sizes[order]
+    first += H
+    # the q-th half-edge of loop i goes to first[i] + (q - shift[i]) mod sizes[i]
+    q = np.arange(flat.size, dtype=np.int64)
+    q -= np.repeat(start + shift, sizes)
+    size = np.repeat(sizes, sizes)
+    q += size  # (q - shift > -size)
+    q %= size
+    q += np.repeat(first, sizes)
+    return q.reshape(chain.shape)
+
+
+def _boundary_prev(mesh, bh: np.ndarray) -> np.ndarray:
+    """(B,) int64: ``prev`` of the boundary half-edges ``bh`` of ``mesh``."""
+    k = _mesh.uniform_size(mesh)
+    if not k:
+        return boundary_prev(mesh.offsets, bh)
+    h = bh.astype(np.int64)
+    return np.where(h % k == 0, h + (k - 1), h - 1)
+
+
+def _pentagonalized_chain(mesh) -> np.ndarray:
+    """(B, 3): the output's boundary half-edges along every boundary half-edge ``b`` of the
+    input, in loop order: ``5 prev[b] + 2`` (its first third, on the pentagon of
+    ``prev[b]``), ``5b`` and ``5b + 1``."""
+    bh = mesh.boundary_halfedges
     chain = np.empty((bh.size, 3), dtype=np.int64)
-    chain[:, 0] = 5 * boundary_prev(offsets, bh) + 2
+    chain[:, 0] = 5 * _boundary_prev(mesh, bh) + 2
     chain[:, 1] = 5 * bh
     chain[:, 2] = chain[:, 1] + 1
-    return open_twins_from(out, chain.reshape(-1), 3 * loops)
+    return chain
 
 
-def _pentagonalized_open(mesh, dt: np.dtype) -> Several:
-    """The twins, boundary and vertex rings of ``pentagonalize(mesh)`` for an open ``mesh``.
+def _pentagonalized_open_twin(mesh, bh_out: np.ndarray, dt: np.dtype) -> np.ndarray:
+    """The twins of ``pentagonalize(mesh)`` for an open ``mesh``.
+
+    As :func:`_pentagonalized_twin` inside; the output's boundary
+    half-edges ``bh_out`` (:func:`_pentagonalized_chain`, in loop order)
+    paired with its hole half-edges.
+    """
+    safe = mesh.twin.astype(dt, copy=True)
+    safe[mesh.boundary_halfedges] = 0  # (a hole half-edge has no prev: any, written over)
+    out = _pentagonalized_twin(safe, mesh.offsets, dt)
+    del safe
+    return hole_twins(out, bh_out)
+
+
+def _pentagonalized_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
+    """The vertex rings of ``pentagonalize(mesh)`` for an open ``mesh``.
 
     The rings are :func:`_pentagonalized_rings`', each turned to start at
     its largest half-edge (a boundary vertex's: at its hole half-edge), as
@@ -210,22 +288,35 @@ def _pentagonalized_open(mesh, dt: np.dtype) -> Several:
     half-edge stands for the input's; round the trisection point t1 of a
     boundary half-edge b (near its tail): the hole half-edge, ``5b`` and
     ``5 prev[b] + 3``; round t2 (near its head, a vertex of one face): the
-    hole half-edge and ``5b + 1``.
+    hole half-edge and ``5b + 1``.  ``hole`` (B, 3): the output's hole
+    half-edges along ``5 prev[b] + 2``, ``5b`` and ``5b + 1``.
     """
     H, E, bh = mesh.n_halfedges, mesh.n_edges, mesh.boundary_halfedges
-    got = _pentagonalized_open_twin(mesh.twin, mesh.offsets, bh, _mesh.loop_offsets(mesh), dt)
-    twin_out = got["twin"]
     prv = mesh.prev.astype(dt, copy=False)
     ring, ring_off = mesh.vertex_ring
+    eh = mesh.edge_halfedge.astype(dt, copy=False)
+    jit = _jit.kernels(5 * H)
+    if jit is not None:  # the same rings and offsets, written in one pass
+        return jit.pentagonalized_open_rings(
+            ring,
+            ring_off,
+            eh,
+            mesh.twin,
+            prv,
+            mesh.corners,
+            mesh.head,
+            mesh.offsets,
+            hole.reshape(-1),
+            dt,
+        )
     n = ring_off.size - 1
     # round an old vertex: 5 prev[h] + 2, the hole half-edge for the input's
     old = prv.take(np.minimum(ring, H - 1))
     old *= 5
     old += 2
     hp = np.flatnonzero(ring >= H)
-    old[hp] = twin_out[5 * bh[ring[hp] - H].astype(np.int64) + 1]
+    old[hp] = hole[ring[hp] - H, 2]
     # round the trisection points, 3 each ((E, 2, 3): the edge's points 2e, 2e + 1)
-    eh = mesh.edge_halfedge.astype(dt, copy=False)
     back = mesh.twin.astype(dt, copy=True)[eh]
     edge_of_b = mesh.halfedge_edge[bh].astype(np.int64)
     back[edge_of_b] = eh[edge_of_b]  # (any face half-edge: written over below)
@@ -241,10 +332,10 @@ def _pentagonalized_open(mesh, dt: np.dtype) -> Several:
     b = bh.astype(np.int64)
     t1 = (mesh.corners[bh] > mesh.head[bh]).astype(np.int64)  # t1 is 2e + 1 when b runs down
     pb = prv[bh].astype(np.int64)
-    pts[edge_of_b, t1, 0] = twin_out[5 * pb + 2]
+    pts[edge_of_b, t1, 0] = hole[:, 0]
     pts[edge_of_b, t1, 1] = 5 * b
     pts[edge_of_b, t1, 2] = 5 * pb + 3
-    pts[edge_of_b, 1 - t1, 0] = twin_out[5 * b]
+    pts[edge_of_b, 1 - t1, 0] = hole[:, 1]
     pts[edge_of_b, 1 - t1, 1] = 5 * b + 1
     pts[edge_of_b, 1 - t1, 2] = -1  # t2: two half-edges
     flat = start_at_max(pts.reshape(-1), None, 3)  # (a hole half-edge is the largest)
@@ -261,8 +352,7 @@ def _pentagonalized_open(mesh, dt: np.dtype) -> Several:
     out_off[n + 1 : n + 2 * E + 1] += ring_off[-1]
     out_off[n + 2 * E + 1 :] = offsets[1:]
     out_off[n + 2 * E + 1 :] += out_off[n + 2 * E]
-    got["vertex_ring"] = (np.concatenate([old, points, centres]), out_off)
-    return got
+    return np.concatenate([old, points, centres]), out_off
 
 
 def _pentagonalized_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
@@ -386,16 +476,21 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
     # the face sizes: the input's (the copies) and H pentagons
     histogram = dict(_mesh.size_counts(mesh))
     histogram[5] = histogram.get(5, 0) + H
+    counts = tuple(sorted(histogram.items()))
+    if not mesh.is_closed:  # its twins, boundary and rings written from the input's, apart
+        return _open_output(
+            mesh,
+            vertices,
+            corners,
+            face_offsets,
+            dt,
+            _preserved_chain,
+            _preserved_open_twin,
+            _preserved_open_rings,
+            size_counts=counts,
+        )
     return remeshed(
-        mesh,
-        vertices,
-        corners,
-        face_offsets,
-        dt,
-        _preserved_twin,
-        _preserved_rings,
-        size_counts=tuple(sorted(histogram.items())),
-        open_of=_preserved_open,
+        mesh, vertices, corners, face_offsets, dt, _preserved_twin, _preserved_rings, counts
     )
 
 
@@ -410,49 +505,57 @@ def _preserved_twin(mesh, dt: np.dtype) -> np.ndarray:
     return _preserved_twin_of(mesh.twin, mesh.next, mesh.prev, dt)
 
 
-def _preserved_open_twin(mesh, dt: np.dtype) -> Several:
-    """The twins and boundary of ``preserve_pentagons(mesh)`` for an open ``mesh``.
-
-    As :func:`_preserved_twin` inside; each boundary half-edge ``b`` of
-    ``mesh`` gives two of the output, in loop order ``H + 5 prev[b] + 1``
-    (its first half, on the pentagon of ``prev[b]``) and ``H + 5b``, paired
-    with the output's hole half-edges.
-    """
+def _preserved_chain(mesh) -> np.ndarray:
+    """(B, 2): the output's boundary half-edges along every boundary half-edge ``b`` of the
+    input, in loop order: ``H + 5 prev[b] + 1`` (its first half, on the pentagon of
+    ``prev[b]``) and ``H + 5b``."""
     H, bh = mesh.n_halfedges, mesh.boundary_halfedges
-    prv = mesh.prev
-    safe = mesh.twin.astype(dt, copy=True)
-    safe[bh] = 0  # (a hole half-edge has no prev: any face half-edge, written over)
-    out = _preserved_twin_of(safe, mesh.next, prv, dt)
-    del safe
     chain = np.empty((bh.size, 2), dtype=np.int64)
-    chain[:, 0] = H + 5 * prv[bh].astype(np.int64) + 1
+    chain[:, 0] = H + 5 * _boundary_prev(mesh, bh) + 1
     chain[:, 1] = H + 5 * bh.astype(np.int64)
-    return open_twins_from(out, chain.reshape(-1), 2 * _mesh.loop_offsets(mesh))
+    return chain
 
 
-def _preserved_open(mesh, dt: np.dtype) -> Several:
-    """The twins, boundary and vertex rings of ``preserve_pentagons(mesh)`` for an open ``mesh``.
+def _preserved_open_twin(mesh, bh_out: np.ndarray, dt: np.dtype) -> np.ndarray:
+    """The twins of ``preserve_pentagons(mesh)`` for an open ``mesh``.
+
+    As :func:`_preserved_twin` inside; the output's boundary half-edges
+    ``bh_out`` (:func:`_preserved_chain`, in loop order) paired with its
+    hole half-edges.
+    """
+    safe = mesh.twin.astype(dt, copy=True)
+    safe[mesh.boundary_halfedges] = 0  # (a hole half-edge has no prev: any, written over)
+    out = _preserved_twin_of(safe, mesh.next, mesh.prev, dt)
+    del safe
+    return hole_twins(out, bh_out)
+
+
+def _preserved_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
+    """The vertex rings of ``preserve_pentagons(mesh)`` for an open ``mesh``.
 
     The rings are :func:`_preserved_rings`', each turned to start at its
     largest half-edge (a boundary vertex's: at its hole half-edge), as
     derived rings do.  On the boundary: round an old vertex, its hole
     half-edge stands for the input's; round the midpoint of a boundary
     half-edge b: the hole half-edge, ``H + 5b`` and ``H + 5 prev[b] + 2``.
+    ``hole`` (B, 2): the output's hole half-edges along ``H + 5 prev[b] + 1``
+    and ``H + 5b``.
     """
     H, E, bh = mesh.n_halfedges, mesh.n_edges, mesh.boundary_halfedges
-    got = _preserved_open_twin(mesh, dt)
-    twin_out = got["twin"]
     prv = mesh.prev.astype(dt, copy=False)
     ring, ring_off = mesh.vertex_ring
+    eh = mesh.edge_halfedge.astype(dt, copy=False)
+    jit = _jit.kernels(6 * H)
+    if jit is not None:  # the same rings and offsets, written in one pass
+        return jit.preserved_open_rings(ring, ring_off, eh, mesh.twin, prv, hole.reshape(-1), dt)
     n = ring_off.size - 1
     # round an old vertex: H + 5 prev[h] + 1, the hole half-edge for the input's
     old = prv.take(np.minimum(ring, H - 1))
     old *= 5
     old += H + 1
     hp = np.flatnonzero(ring >= H)
-    old[hp] = twin_out[H + 5 * bh[ring[hp] - H].astype(np.int64)]
+    old[hp] = hole[ring[hp] - H, 1]
     # round the midpoints, 4 each (3 on the boundary)
-    eh = mesh.edge_halfedge.astype(dt, copy=False)
     back = mesh.twin.astype(dt, copy=True)[eh]
     edge_of_b = mesh.halfedge_edge[bh].astype(np.int64)
     back[edge_of_b] = eh[edge_of_b]  # (any face half-edge: written over below)
@@ -460,7 +563,7 @@ def _preserved_open(mesh, dt: np.dtype) -> Several:
     _midpoint_rings(mids, eh, back, prv, H)
     b = bh.astype(np.int64)
     pb = prv[bh].astype(np.int64)
-    mids[edge_of_b, 0] = twin_out[H + 5 * pb + 1]
+    mids[edge_of_b, 0] = hole[:, 0]
     mids[edge_of_b, 1] = H + 5 * b
     mids[edge_of_b, 2] = H + 5 * pb + 2
     mids[edge_of_b, 3] = -1  # three half-edges
@@ -476,8 +579,7 @@ def _preserved_open(mesh, dt: np.dtype) -> Several:
     out_off[n + E + 1 :] = np.arange(3, 3 * H + 1, 3, dtype=dt)
     out_off[n + E + 1 :] += out_off[n + E]
     rings = np.concatenate([old, mid_ring, start_at_max(copies.reshape(-1), None, 3)])
-    got["vertex_ring"] = (rings, out_off)
-    return got
+    return rings, out_off
 
 
 def _preserved_twin_of(twin: np.ndarray, nxt: np.ndarray, prv: np.ndarray, dt: np.dtype):
