@@ -57,6 +57,7 @@ __all__ = [
     "honeycomb_points",
     "pair_twins",
     "vertex_normals",
+    "open_rings",
 ]
 
 
@@ -625,9 +626,14 @@ def honeycomb_points(vertices, corners, head, centres, face_of):
 @jit
 def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
     # twin of every half-edge u -> w: the one half-edge w -> u, found among
-    # w's outgoing half-edges (a counting sort by tail); an empty array when
-    # some half-edge has no such partner or more than one, or is a loop
-    # (exactly when the numpy path's sorted keys fail to pair)
+    # w's outgoing half-edges (a counting sort by tail), or -1 when there is
+    # none (a boundary half-edge); and the number of those.  (empty, -1)
+    # when some half-edge has more than one partner, is a loop or leaves a
+    # vertex out of range.  On a closed mesh (no -1) these are the numpy
+    # path's twins exactly when its sorted keys pair; on an open one, with
+    # the boundary then chained into loops (boundary.loop_order refuses a
+    # vertex left by two boundary half-edges: a directed edge used twice
+    # without its opposite), they fail exactly where boundary.pair_open does
     H = tail.size
     fail = np.empty(0, tail.dtype)
     if head.size == 0:  # faces of k corners: heads from the tails
@@ -638,7 +644,7 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
     for h in range(H):
         u = tail[ix(h)]
         if u < 0 or u >= n:  # out of range: no pairing (and no stray write)
-            return fail
+            return fail, -1
         start[ix(u + 1)] += 1
     # (from here on every tail, so every head, is a vertex in range)
     for v in range(n):
@@ -650,19 +656,22 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
         out_of[ix(fill[u])] = h
         fill[u] += 1
     twin = np.empty(H, tail.dtype)
+    alone = 0
     for h in range(H):
         u, w = tail[ix(h)], head[ix(h)]
         if u == w:
-            return fail
+            return fail, -1
         found = 0
+        twin[ix(h)] = -1
         for i in range(start[ix(w)], start[ix(w + 1)]):
             g = out_of[ix(i)]
             if head[ix(g)] == u:
                 twin[ix(h)] = g
                 found += 1
-        if found != 1:
-            return fail
-    return twin
+        if found > 1:
+            return fail, -1
+        alone += 1 - found
+    return twin, alone
 
 
 @jit
@@ -712,3 +721,42 @@ def vertex_normals(vertices, corners, offsets, out):  # pragma: no cover - compi
             out[row, 0] = p
             out[row, 1] = q
             out[row, 2] = r
+
+
+# -- validation: the vertex rings of a mesh with or without boundary -------------------
+
+
+@jit
+def open_rings(twin, tail, k, prv, after, hole_tail, ring, ring_off):  # pragma: no cover
+    # ring[ring_off[v]:ring_off[v + 1]] = the outgoing half-edges of v in
+    # rotation order (halfedge.open_vertex_rings; halfedge.vertex_rings when
+    # there are no hole half-edges), from v's largest: its hole half-edge
+    # H + j (tail hole_tail[j]) on the boundary, else its largest face
+    # half-edge.  rotation[h] = twin[prev[h]] (prev: h - 1, or h + k - 1 at
+    # a face's first corner; prv[h] when k is 0), rotation[H + j] = after[j]
+    # (the boundary half-edge after bh[j] in its loop).  True when the rings
+    # use every half-edge once (they hold H + B entries: none twice)
+    H, B, n = tail.size, after.size, ring_off.size - 1
+    start = np.empty(n, np.int64)
+    for h in range(H):
+        start[ix(tail[ix(h)])] = h
+    for j in range(B):
+        start[ix(hole_tail[ix(j)])] = H + j
+    seen = np.zeros(H + B, np.bool_)
+    ok = True
+    for v in range(n):
+        a, b = ring_off[ix(v)], ring_off[ix(v + 1)]
+        if a == b:
+            continue
+        cur = start[ix(v)]
+        for i in range(a, b):
+            ring[ix(i)] = cur
+            ok &= not seen[ix(cur)]
+            seen[ix(cur)] = True
+            if cur >= H:
+                cur = after[ix(cur - H)]
+            elif k:
+                cur = twin[ix(cur - 1 if cur % k else cur + k - 1)]
+            else:
+                cur = twin[ix(prv[ix(cur)])]
+    return ok

@@ -8,11 +8,12 @@ every check first as whole-array passes that only say yes or no
 checked again, in order, by :func:`_diagnose`, which finds the first culprit
 and raises a :class:`MeshError` naming it (a face, an edge, a vertex).
 
-A closed mesh takes the fast path it always took (one sort of packed keys
-pairs the twins); a mesh whose half-edges do not all pair up is checked
-again as a surface with boundary (:func:`_valid_open`, a slower numpy
-path): every edge with one or two faces, every vertex's faces one fan or
-one cycle.
+One pairing serves closed and open meshes
+(:func:`~pentanb.mesh.boundary.open_twins`: on large meshes one compiled
+counting sort; the numpy path sorts packed keys, for a closed mesh first);
+a mesh with boundary half-edges is then checked as a surface with boundary
+(:func:`_valid_open`): every edge with one or two faces, every vertex's
+faces one fan or one cycle.
 """
 
 from __future__ import annotations
@@ -26,12 +27,14 @@ from .coerce import MeshError, readonly
 from .halfedge import (
     BLOCK,
     RotateUniform,
+    heads_at,
     multi_fan_vertex,
     open_extension,
     open_vertex_rings,
     pair_twins,
     rotation_of,
     vertex_rings,
+    walk_rings,
 )
 
 __all__ = ["validate", "validate_rings"]
@@ -152,9 +155,12 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
     # the arrays below are not kept (only the twins and rings are): the
     # peak stays a few bytes per corner above the faces themselves
     if twin is None:
-        twin = pair_twins(c, None if k else mesh.head, n, k)
-        if twin is None:  # not closed: a surface with boundary, or no manifold
-            return _valid_open(mesh, strict)
+        got = open_twins(c, None if k else mesh.head, n, k)
+        if got is None:  # no manifold
+            return False
+        twin, boundary = got
+        if boundary[0].size:  # a surface with boundary
+            return _valid_open(mesh, twin, boundary, strict)
     mesh._shared.values.setdefault("_boundary", CLOSED)
     if strict:
         if int(mesh.valences.min()) < 3:
@@ -180,38 +186,57 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
     return True
 
 
-def _valid_open(mesh: Any, strict: bool) -> bool:
-    """Every check of :func:`_diagnose` on a mesh whose half-edges do not all pair up.
+def _valid_open(
+    mesh: Any, twin: np.ndarray, boundary: tuple[np.ndarray, np.ndarray], strict: bool
+) -> bool:
+    """Every check of :func:`_diagnose` on a mesh with boundary, its twins paired.
 
-    Twins found by one sort of the directed edges (none used twice), the
-    boundary half-edges chained into loops (one leaving every boundary
-    vertex), then as on a closed mesh: no interior vertex of fewer than 3
-    edges, no two faces sharing two edges, and the vertex rings (hole
-    half-edges included) using every half-edge once.
+    ``twin`` and ``boundary`` as :func:`~pentanb.mesh.boundary.open_twins`
+    gives them (the boundary half-edges chained into loops, one leaving
+    every boundary vertex); then as on a closed mesh: no interior vertex of
+    fewer than 3 edges, no two faces sharing two edges, and the vertex
+    rings (hole half-edges included) using every half-edge once.
     """
-    got = open_twins(mesh._corners, mesh.head, mesh.n_vertices)
-    if got is None:
-        return False
-    twin, boundary = got
     bh, loop_off = boundary
-    H, F = twin.size, mesh.n_faces
+    c, k = mesh._corners, mesh._uniform_size
+    F, B = mesh.n_faces, bh.size
     mesh._shared.values["_boundary"] = boundary
     if strict:
         val = mesh.valences
-        inner = ~mesh.is_boundary_vertex
-        if val.size and (int(val.min()) < 1 or (inner.any() and int(val[inner].min()) < 3)):
+        if val.size and int(val.min()) < 3:  # on the boundary only, and none unused
+            low = np.flatnonzero(val < 3)
+            if int(val[low].min()) < 1 or not mesh.is_boundary_vertex[low].all():
+                return False
+        # the face across every half-edge; F + j across the boundary half-edge bh[j]
+        if k:
+            neighbour = twin // k
+        else:
+            inner = twin.copy()
+            inner[bh] = 0
+            neighbour = mesh.halfedge_face[inner]
+            del inner
+        neighbour[bh] = np.arange(F, F + B, dtype=neighbour.dtype)
+        if _repeats_in_a_face(mesh, neighbour, F + B):
             return False
-        fid = mesh.halfedge_face
-        neighbour = np.where(twin < H, fid[np.minimum(twin, H - 1)], F + (twin - H))
-        if _repeats_in_a_face(mesh, neighbour, F + bh.size):
-            return False
+        del neighbour
     mesh._shared.values["twin"] = readonly(twin)
-    ring, ring_off = open_vertex_rings(
-        mesh.rotation, mesh._corners, mesh.head, bh, loop_off, mesh.valences
+    got = walk_rings(
+        twin,
+        c,
+        k,
+        None if k else mesh.prev,
+        mesh.valences,
+        boundary,
+        heads_at(c, bh, k, None if k else mesh.head),
     )
-    seen = np.zeros(ring.size, dtype=bool)
-    seen[ring] = True
-    if not seen.all():
+    if got is None:  # the numpy path
+        ring, ring_off = open_vertex_rings(mesh.rotation, c, mesh.head, bh, loop_off, mesh.valences)
+        seen = np.zeros(ring.size, dtype=bool)
+        seen[ring] = True
+        ok = bool(seen.all())
+    else:
+        ring, ring_off, ok = got
+    if not ok:
         return False
     mesh._shared.values["vertex_ring"] = (readonly(ring), readonly(ring_off))
     return True
