@@ -58,6 +58,7 @@ __all__ = [
     "pair_twins",
     "vertex_normals",
     "open_rings",
+    "loop_order",
 ]
 
 
@@ -627,15 +628,16 @@ def honeycomb_points(vertices, corners, head, centres, face_of):
 def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
     # twin of every half-edge u -> w: the one half-edge w -> u, found among
     # w's outgoing half-edges (a counting sort by tail), or -1 when there is
-    # none (a boundary half-edge); and the number of those.  (empty, -1)
-    # when some half-edge has more than one partner, is a loop or leaves a
-    # vertex out of range.  On a closed mesh (no -1) these are the numpy
-    # path's twins exactly when its sorted keys pair; on an open one, with
-    # the boundary then chained into loops (boundary.loop_order refuses a
-    # vertex left by two boundary half-edges: a directed edge used twice
-    # without its opposite), they fail exactly where boundary.pair_open does
+    # none (a boundary half-edge); those half-edges in increasing order (int64);
+    # their number, or -1 (and empty arrays) when some half-edge has more
+    # than one partner, is a loop or leaves a vertex out of range.  On a
+    # closed mesh (no -1) these are the numpy path's twins exactly when its
+    # sorted keys pair; on an open one, with the boundary then chained into
+    # loops (which refuses a vertex two boundary half-edges leave: a directed
+    # edge used twice without its opposite), they fail exactly where
+    # boundary.pair_open does
     H = tail.size
-    fail = np.empty(0, tail.dtype)
+    fail = np.empty(0, tail.dtype), np.empty(0, np.int64), -1
     if head.size == 0:  # faces of k corners: heads from the tails
         head = np.empty_like(tail)
         for h in range(H):
@@ -644,7 +646,7 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
     for h in range(H):
         u = tail[ix(h)]
         if u < 0 or u >= n:  # out of range: no pairing (and no stray write)
-            return fail, -1
+            return fail
         start[ix(u + 1)] += 1
     # (from here on every tail, so every head, is a vertex in range)
     for v in range(n):
@@ -656,11 +658,12 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
         out_of[ix(fill[u])] = h
         fill[u] += 1
     twin = np.empty(H, tail.dtype)
-    alone = 0
+    alone = np.empty(H, np.int64)  # (pages only touched as far as written)
+    b = 0
     for h in range(H):
         u, w = tail[ix(h)], head[ix(h)]
         if u == w:
-            return fail, -1
+            return fail
         found = 0
         twin[ix(h)] = -1
         for i in range(start[ix(w)], start[ix(w + 1)]):
@@ -669,9 +672,11 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
                 twin[ix(h)] = g
                 found += 1
         if found > 1:
-            return fail, -1
-        alone += 1 - found
-    return twin, alone
+            return fail
+        if found == 0:
+            alone[ix(b)] = h
+            b += 1
+    return twin, alone[:b].copy(), b
 
 
 @jit
@@ -760,3 +765,45 @@ def open_rings(twin, tail, k, prv, after, hole_tail, ring, ring_off):  # pragma:
             else:
                 cur = twin[ix(prv[ix(cur)])]
     return ok
+
+
+@jit
+def loop_order(tail, head, n):  # pragma: no cover - compiled
+    # boundary.loop_order of the half-edges tail[j] -> head[j] (positions j,
+    # vertices in [0, n)), bit for bit: the positions loop after loop, every
+    # loop from its smallest, loops in the order of those (a walk from every
+    # position not yet met, in increasing order); the loops' offsets; -1, or
+    # the smallest vertex two of them leave (or the first head none leaves),
+    # the arrays then empty
+    B = tail.size
+    out = np.full(n, -1, np.int64)  # the position leaving every vertex
+    bad = -1
+    for j in range(B):
+        u = tail[ix(j)]
+        if out[ix(u)] >= 0 and (bad < 0 or u < bad):
+            bad = u
+        out[ix(u)] = j
+    if bad < 0:
+        for j in range(B):
+            if out[ix(head[ix(j)])] < 0:
+                bad = head[ix(j)]
+                break
+    if bad >= 0:
+        return np.empty(0, np.int64), np.zeros(1, np.int64), bad
+    order = np.empty(B, np.int64)
+    offsets = np.empty(B + 1, np.int64)
+    met = np.zeros(B, np.bool_)
+    p, loops = 0, 0
+    for j in range(B):
+        if met[ix(j)]:
+            continue
+        offsets[ix(loops)] = p
+        loops += 1
+        i = j
+        while not met[ix(i)]:
+            met[ix(i)] = True
+            order[ix(p)] = i
+            p += 1
+            i = out[ix(head[ix(i)])]
+    offsets[ix(loops)] = B
+    return order, offsets[: loops + 1].copy(), -1

@@ -197,8 +197,8 @@ def test_twins_of_indices_out_of_range_are_refused_not_written(compiled):
     from pentanb.mesh.halfedge import pair_twins as _pair_twins
 
     tail = np.array([0, 1, 2, 2, 1, 7], dtype=np.int32)  # vertex 7 of 4
-    twin, alone = compiled.pair_twins(tail, tail[:0], 3, 4)
-    assert twin.size == 0 and alone == -1
+    twin, alone, b = compiled.pair_twins(tail, tail[:0], 3, 4)
+    assert twin.size == alone.size == 0 and b == -1
     assert _pair_twins(tail, None, 4, 3) is None
 
 
@@ -257,7 +257,8 @@ def test_open_twins_loops_and_rings_are_the_numpy_ones(compiled, name):
     k, c, n = m._uniform_size, m.corners, m.n_vertices
     assert not m.is_closed
     a, b = both(lambda: pair_halfedges(c, None if k else m.head, n, k))
-    assert same_bytes(a[0], b[0]) and a[1] == b[1] == int((a[0] < 0).sum()) > 0
+    assert same_bytes(a[0], b[0]) and same_bytes(a[1], b[1])
+    assert a[1].size and np.array_equal(a[1], np.flatnonzero(a[0] < 0))
     a, b = both(lambda: open_twins(c, None if k else m.head, n, k))
     for x, y in zip([a[0], *a[1]], [b[0], *b[1]]):
         assert same_bytes(x, y)
@@ -287,6 +288,25 @@ def test_open_pairing_fails_on_the_same_meshes_both_ways(compiled, faces):
     tail = np.array(faces).reshape(-1).astype(np.int32)
     a, b = both(lambda: open_twins(tail, None, 5, 3))
     assert a is None and b is None
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    "tail, head",
+    [
+        ([5, 2, 0, 7, 1, 3, 8], [1, 5, 7, 2, 0, 8, 3]),  # loops 0 4 2 3 1 and 5 6
+        ([4, 0, 4, 2, 0], [1, 4, 3, 0, 2]),  # vertices 4 and 0 left twice: 0 named
+        ([0, 1, 2], [1, 2, 6]),  # nothing leaves vertex 6
+    ],
+)
+def test_loop_order_is_the_numpy_loop_order(compiled, tail, head):
+    from pentanb.mesh.boundary import loop_order
+
+    t, w = np.array(tail, dtype=np.int32), np.array(head, dtype=np.int32)
+    want = loop_order(t, w, np.arange(t.size), 9)
+    got = compiled.loop_order(t, w, 9)
+    assert same_bytes(got[0], want[0]) and same_bytes(got[1], want[1]) and got[2] == want[2]
+    assert (want[2] >= 0) == (len(tail) != 7)
 
 
 def _non_manifold(closed: bool):

@@ -380,8 +380,8 @@ def orientation_classes(
 
 def pair_halfedges(
     tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0
-) -> tuple[np.ndarray, int] | None:
-    """The opposite of every half-edge, closed mesh or not, and the number without one.
+) -> tuple[np.ndarray, np.ndarray] | None:
+    """The opposite of every half-edge, closed mesh or not, and the half-edges without one.
 
     One call of the compiled pairing (:mod:`pentanb._jit`) on large meshes,
     which serves closed and open meshes alike; else the numpy path: the
@@ -404,28 +404,28 @@ def pair_halfedges(
     twin : (H,) int
         ``twin[h]``, the half-edge ``head[h] -> tail[h]``, or -1 where there
         is none (a boundary half-edge).
-    alone : int
-        The number of -1 in ``twin`` (0: a closed mesh).
+    alone : (B,) int64
+        The half-edges without an opposite, in increasing order (empty: a
+        closed mesh).
 
     None when a half-edge has two opposites or is a loop (the numpy path:
     also when a directed edge is used twice; the compiled one leaves that to
     :func:`loop_order`, which refuses the vertex two boundary half-edges
     leave: :func:`open_twins` fails on the same meshes either way).
     """
-    H = tail.size
-    jit = _jit.kernels(H)
+    jit = _jit.kernels(tail.size)
     if jit is not None and n > 0:  # (compiled: closed or not, one counting sort)
-        twin, alone = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
-        return None if alone < 0 else (twin, int(alone))
+        twin, alone, b = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
+        return None if b < 0 else (twin, alone)
     twin = pair_twins(tail, head, n, k)
     if twin is not None:
-        return twin, 0
+        return twin, np.zeros(0, dtype=np.int64)
     if head is None:
         head = head_of(tail, np.empty(0), k)
     twin = pair_open(tail, head, n)
     if twin is None:
         return None
-    return twin, int(np.count_nonzero(twin < 0))
+    return twin, np.flatnonzero(twin < 0).astype(np.int64, copy=False)
 
 
 def open_twins(
@@ -457,15 +457,19 @@ def open_twins(
     got = pair_halfedges(tail, head, n, k)
     if got is None:
         return None
-    twin, alone = got
-    if not alone:
+    twin, bh = got
+    if not bh.size:
         return twin, CLOSED
-    bh = np.flatnonzero(twin < 0)
     # the loops of the few boundary half-edges (positions into bh)
-    at, off, bad = loop_order(tail[bh], heads_at(tail, bh, k, head), np.arange(bh.size), n)
+    t, w = tail[bh], heads_at(tail, bh, k, head)
+    jit = _jit.kernels(tail.size)
+    if jit is not None:  # (the same loops, by one walk)
+        at, off, bad = jit.loop_order(t, w, n)
+    else:
+        at, off, bad = loop_order(t, w, np.arange(bh.size), n)
     if bad >= 0:
         return None
-    bh = bh[at].astype(np.int64, copy=False)
+    bh = bh[at]
     twin = hole_twins(twin, bh)
     bh.setflags(write=False)
     off.setflags(write=False)

@@ -153,7 +153,7 @@ def pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) ->
         return None
     jit = _jit.kernels(H)
     if jit is not None and n > 0:  # each half-edge's partner among its head's (compiled)
-        got, alone = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
+        got, _, alone = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
         return got if alone == 0 else None
     twin = np.empty(H, dtype=tail.dtype)
     index_bits = max(int(H - 1).bit_length(), 1)

@@ -170,18 +170,24 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
             return False
         del neighbour
     mesh._shared.values["twin"] = readonly(twin)
-    # (no rotation array: a column copy of the twins walks the rings a
-    # little faster, but raises the peak of reading a 1,000,000-triangle
-    # file from 2.9x to 3.3x the arrays read)
-    if k:  # rotation[h] = twin[prev[h]], prev computed as needed (no array kept)
-        ring, ring_off = vertex_rings(RotateUniform(twin, k), c, mesh.valences)
+    got = walk_rings(twin, c, k, None if k else mesh.prev, mesh.valences)
+    if got is not None:  # (compiled: one walk round every vertex)
+        ring, ring_off, ok = got
+        if not ok:
+            return False
     else:
-        ring, ring_off = vertex_rings(rotation_of(twin, o, k, mesh), c, mesh.valences)
-    seen = np.zeros(c.size, dtype=bool)
-    for a in range(0, ring.size, BLOCK):
-        seen[ring[a : a + BLOCK]] = True
-    if not seen.all():
-        return False
+        # (no rotation array: a column copy of the twins walks the rings a
+        # little faster, but raises the peak of reading a 1,000,000-triangle
+        # file from 2.9x to 3.3x the arrays read)
+        if k:  # rotation[h] = twin[prev[h]], prev computed as needed (no array kept)
+            ring, ring_off = vertex_rings(RotateUniform(twin, k), c, mesh.valences)
+        else:
+            ring, ring_off = vertex_rings(rotation_of(twin, o, k, mesh), c, mesh.valences)
+        seen = np.zeros(c.size, dtype=bool)
+        for a in range(0, ring.size, BLOCK):
+            seen[ring[a : a + BLOCK]] = True
+        if not seen.all():
+            return False
     mesh._shared.values["vertex_ring"] = (readonly(ring), readonly(ring_off))
     return True
 
