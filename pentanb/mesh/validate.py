@@ -39,6 +39,9 @@ from .halfedge import (
 
 __all__ = ["validate", "validate_rings"]
 
+#: Values per block of :func:`_repeats_in_a_face` (a few hundred kilobytes).
+_ROWS = 1 << 16
+
 
 def validate(
     mesh: Any,
@@ -251,17 +254,26 @@ def _valid_open(
 def _repeats_in_a_face(mesh: Any, values: np.ndarray, bound: int) -> bool:
     """Whether some face holds a value twice (``values``: one per corner, in ``[0, bound)``).
 
-    Compares every corner with the corners 1, 2, ..., k // 2 places
-    further round its face (every pair once), in whole-array passes;
-    faces of more than 16 sides are checked by one sort instead.
+    Faces of k sides: every pair of columns of the (m, k) table compared,
+    block of rows by block (each block read once from memory, and a
+    column of a block is one strided pass: several times faster than
+    comparing two-dimensional slices).  Faces of several sizes: every
+    corner with the corners 1, 2, ..., k // 2 places further round its
+    face (every pair once), in whole-array passes.  Faces of more than 16
+    sides are checked by one sort instead.
     """
     k = mesh._uniform_size
     if k:
         if k <= 16:
             a = values.reshape(-1, k)
-            for s in range(1, k // 2 + 1):
-                if (a[:, s:] == a[:, :-s]).any() or (a[:, :s] == a[:, k - s :]).any():
-                    return True
+            rows = max(_ROWS // k, 1)
+            for lo in range(0, a.shape[0], rows):
+                b = a[lo : lo + rows]
+                for i in range(k - 1):
+                    col = b[:, i]
+                    for j in range(i + 1, k):
+                        if (col == b[:, j]).any():
+                            return True
             return False
     else:
         sizes = mesh.face_sizes
