@@ -173,9 +173,9 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
             return False
         del neighbour
     mesh._shared.values["twin"] = readonly(twin)
-    got = walk_rings(twin, c, k, None if k else mesh.prev, mesh.valences)
-    if got is not None:  # (compiled: one walk round every vertex)
-        ring, ring_off, ok = got
+    walked = walk_rings(twin, c, k, None if k else mesh.prev, mesh.valences)
+    if walked is not None:  # (compiled: one walk round every vertex)
+        ring, ring_off, ok = walked
         if not ok:
             return False
     else:
