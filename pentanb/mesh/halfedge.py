@@ -342,7 +342,7 @@ def ring_dtype(dtype: Any, size: int) -> Any:
     return np.result_type(dtype, np.int32 if size < 2**31 else np.int64)
 
 
-def open_extension(rotation, tail, head, bh, loop_offsets):
+def open_extension(rotation, tail, head, bh, loop_offsets, hole_tail=None):
     """The rotation and tails of all half-edges of an open mesh, hole half-edges included.
 
     Parameters
@@ -350,9 +350,12 @@ def open_extension(rotation, tail, head, bh, loop_offsets):
     rotation : (H,) int
         ``twin[prev[h]]`` of the face half-edges (hole half-edges ``>= H``).
     tail, head : (H,) int
+        (``head`` may be None when ``hole_tail`` is given.)
     bh : (B,) int
         The boundary half-edges, loop after loop.
     loop_offsets : (L + 1,) int
+    hole_tail : (B,) int, optional
+        ``head[bh]``, when the caller has it.
 
     Returns
     -------
@@ -365,24 +368,25 @@ def open_extension(rotation, tail, head, bh, loop_offsets):
     dtype = ring_dtype(rotation.dtype, tail.size + bh.size)
     rotation_all = np.concatenate([rotation, hole_rotation(bh, loop_offsets)])
     rotation_all = rotation_all.astype(dtype, copy=False)
-    tail_all = np.concatenate([tail, head[bh]]).astype(dtype, copy=False)
+    hole_tail = head[bh] if hole_tail is None else hole_tail
+    tail_all = np.concatenate([tail, hole_tail]).astype(dtype, copy=False)
     return rotation_all, tail_all
 
 
-def open_vertex_rings(rotation, tail, head, bh, loop_offsets, valences):
+def open_vertex_rings(rotation, tail, head, bh, loop_offsets, valences, hole_tail=None):
     """The vertex rings of an open mesh (:attr:`pentanb.Mesh.vertex_ring`).
 
     Every vertex's outgoing half-edges, hole half-edges included, in
     rotation order; a boundary vertex's ring starts at its hole half-edge
     (its largest), an interior vertex's at its largest half-edge, as on a
-    closed mesh.
+    closed mesh.  Arguments as for :func:`open_extension`.
 
     Returns
     -------
     ring : (H + B,) int
     ring_offsets : (n + 1,) int
     """
-    rotation_all, tail_all = open_extension(rotation, tail, head, bh, loop_offsets)
+    rotation_all, tail_all = open_extension(rotation, tail, head, bh, loop_offsets, hole_tail)
     H, dtype = tail.size, tail_all.dtype
     start = np.empty(valences.size, dtype=dtype)
     for a in range(0, H, BLOCK):

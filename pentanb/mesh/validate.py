@@ -229,17 +229,13 @@ def _valid_open(
             return False
         del neighbour
     mesh._shared.values["twin"] = readonly(twin)
-    got = walk_rings(
-        twin,
-        c,
-        k,
-        None if k else mesh.prev,
-        mesh.valences,
-        boundary,
-        heads_at(c, bh, k, None if k else mesh.head),
-    )
+    hole_tail = heads_at(c, bh, k, None if k else mesh.head)
+    prv = None if k else mesh.prev
+    got = walk_rings(twin, c, k, prv, mesh.valences, boundary, hole_tail)
     if got is None:  # the numpy path
-        ring, ring_off = open_vertex_rings(mesh.rotation, c, mesh.head, bh, loop_off, mesh.valences)
+        ring, ring_off = open_vertex_rings(
+            mesh.rotation, c, None, bh, loop_off, mesh.valences, hole_tail
+        )
         seen = np.zeros(ring.size, dtype=bool)
         seen[ring] = True
         ok = bool(seen.all())
