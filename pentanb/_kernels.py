@@ -56,9 +56,9 @@ __all__ = [
     "corner_points",
     "honeycomb_points",
     "pair_twins",
-    "vertex_normals",
     "open_rings",
     "loop_order",
+    "vertex_normals",
 ]
 
 
