@@ -438,11 +438,11 @@ def walk_rings(
     if jit is None:
         return None
     if boundary is None or not boundary[0].size:
-        dtype, after, hole_tail = tail.dtype, tail[:0], tail[:0]
+        dtype, after, hole_tail = tail.dtype, np.zeros(0, np.int64), tail[:0]
     else:
         bh, loop_offsets = boundary
         dtype = ring_dtype(twin.dtype, H + bh.size)
-        after = hole_rotation(bh, loop_offsets)
+        after = hole_rotation(bh, loop_offsets).astype(np.int64, copy=False)
         assert hole_tail is not None and hole_tail.size == bh.size
     ring_off = np.zeros(valences.size + 1, dtype=dtype)
     np.cumsum(valences, out=ring_off[1:])
