@@ -139,11 +139,14 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
     """Every check of :func:`_diagnose`, without messages.
 
     Faces of at least 3 corners; indices in range; no vertex twice in a
-    face; every directed edge once and with its opposite (one sort of
-    packed 64-bit keys, :func:`~pentanb.mesh.halfedge.pair_twins`); at least 3 edges at every
-    vertex (so none unused); no two faces sharing two edges (no face
-    twice among a face's neighbours); one fan around every vertex (the
-    vertex rings use every half-edge once).
+    face; every directed edge once and with its opposite, or on the
+    boundary (:func:`~pentanb.mesh.boundary.open_twins`: one compiled
+    counting sort, or sorts of packed 64-bit keys; a mesh with boundary
+    half-edges goes on in :func:`_valid_open`); at least 3 edges at every
+    vertex (so none unused); no two faces sharing two edges (no face twice
+    among a face's neighbours); one fan around every vertex (the vertex
+    rings, walked by one compiled kernel or in whole-array steps, use
+    every half-edge once).
     """
     n, c, o = mesh.n_vertices, mesh._corners, mesh._offsets
     if n == 0 or o.size < 2 or c.size == 0:
