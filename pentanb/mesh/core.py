@@ -646,8 +646,8 @@ class Mesh:
         """
         counts = np.bincount(self._corners, minlength=self.n_vertices)
         bh = self._boundary[0]
-        if bh.size:
-            counts += np.bincount(self._corners[bh], minlength=self.n_vertices)
+        if bh.size:  # (a few boundary vertices: no second count over every vertex)
+            np.add.at(counts, self._corners[bh], 1)
         return readonly(counts.astype(self._corners.dtype, copy=False))
 
     @_connectivity
