@@ -56,6 +56,8 @@ __all__ = [
     "corner_points",
     "honeycomb_points",
     "pair_twins",
+    "open_rings",
+    "loop_order",
     "vertex_normals",
     "open_dual_faces",
 ]
@@ -629,11 +631,17 @@ def honeycomb_points(vertices, corners, head, centres, face_of):
 @jit
 def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
     # twin of every half-edge u -> w: the one half-edge w -> u, found among
-    # w's outgoing half-edges (a counting sort by tail); an empty array when
-    # some half-edge has no such partner or more than one, or is a loop
-    # (exactly when the numpy path's sorted keys fail to pair)
+    # w's outgoing half-edges (a counting sort by tail), or -1 when there is
+    # none (a boundary half-edge); those half-edges in increasing order (int64);
+    # their number, or -1 (and empty arrays) when some half-edge has more
+    # than one partner, is a loop or leaves a vertex out of range.  On a
+    # closed mesh (no -1) these are the numpy path's twins exactly when its
+    # sorted keys pair; on an open one, with the boundary then chained into
+    # loops (which refuses a vertex two boundary half-edges leave: a directed
+    # edge used twice without its opposite), they fail exactly where
+    # boundary.pair_open does
     H = tail.size
-    fail = np.empty(0, tail.dtype)
+    fail = np.empty(0, tail.dtype), np.empty(0, np.int64), -1
     if head.size == 0:  # faces of k corners: heads from the tails
         head = np.empty_like(tail)
         for h in range(H):
@@ -654,19 +662,25 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
         out_of[ix(fill[u])] = h
         fill[u] += 1
     twin = np.empty(H, tail.dtype)
+    alone = np.empty(H, np.int64)  # (pages only touched as far as written)
+    b = 0
     for h in range(H):
         u, w = tail[ix(h)], head[ix(h)]
         if u == w:
             return fail
         found = 0
+        twin[ix(h)] = -1
         for i in range(start[ix(w)], start[ix(w + 1)]):
             g = out_of[ix(i)]
             if head[ix(g)] == u:
                 twin[ix(h)] = g
                 found += 1
-        if found != 1:
+        if found > 1:
             return fail
-    return twin
+        if found == 0:
+            alone[ix(b)] = h
+            b += 1
+    return twin, alone[:b].copy(), b
 
 
 @jit
@@ -874,3 +888,84 @@ def preserved_open_rings(ring, ring_off, eh, twin, prv, hole, dt):
     out_off = np.empty(ring_off.size + E + H, dt)
     preserved_open_fill(ring, ring_off, eh, twin, prv, hole, out, out_off)
     return out, out_off
+
+
+# -- validation: the vertex rings of a mesh with or without boundary -------------------
+
+
+@jit
+def open_rings(twin, tail, k, prv, after, hole_tail, ring, ring_off):  # pragma: no cover
+    # ring[ring_off[v]:ring_off[v + 1]] = the outgoing half-edges of v in
+    # rotation order (halfedge.open_vertex_rings; halfedge.vertex_rings when
+    # there are no hole half-edges), from v's largest: its hole half-edge
+    # H + j (tail hole_tail[j]) on the boundary, else its largest face
+    # half-edge.  rotation[h] = twin[prev[h]] (prev: h - 1, or h + k - 1 at
+    # a face's first corner; prv[h] when k is 0), rotation[H + j] = after[j]
+    # (the boundary half-edge after bh[j] in its loop).  True when the rings
+    # use every half-edge once (they hold H + B entries: none twice)
+    H, B, n = tail.size, after.size, ring_off.size - 1
+    start = np.empty(n, np.int64)
+    for h in range(H):
+        start[ix(tail[ix(h)])] = h
+    for j in range(B):
+        start[ix(hole_tail[ix(j)])] = H + j
+    seen = np.zeros(H + B, np.bool_)
+    ok = True
+    for v in range(n):
+        a, b = ring_off[ix(v)], ring_off[ix(v + 1)]
+        if a == b:
+            continue
+        cur = start[ix(v)]
+        for i in range(a, b):
+            ring[ix(i)] = cur
+            ok &= not seen[ix(cur)]
+            seen[ix(cur)] = True
+            if cur >= H:
+                cur = after[ix(cur - H)]
+            elif k:
+                cur = twin[ix(cur - 1 if cur % k else cur + k - 1)]
+            else:
+                cur = twin[ix(prv[ix(cur)])]
+    return ok
+
+
+@jit
+def loop_order(tail, head, n):  # pragma: no cover - compiled
+    # boundary.loop_order of the half-edges tail[j] -> head[j] (positions j,
+    # vertices in [0, n)), bit for bit: the positions loop after loop, every
+    # loop from its smallest, loops in the order of those (a walk from every
+    # position not yet met, in increasing order); the loops' offsets; -1, or
+    # the smallest vertex two of them leave (or the first head none leaves),
+    # the arrays then empty
+    B = tail.size
+    out = np.full(n, -1, np.int64)  # the position leaving every vertex
+    bad = -1
+    for j in range(B):
+        u = tail[ix(j)]
+        if out[ix(u)] >= 0 and (bad < 0 or u < bad):
+            bad = u
+        out[ix(u)] = j
+    if bad < 0:
+        for j in range(B):
+            if out[ix(head[ix(j)])] < 0:
+                bad = head[ix(j)]
+                break
+    if bad >= 0:
+        return np.empty(0, np.int64), np.zeros(1, np.int64), bad
+    order = np.empty(B, np.int64)
+    offsets = np.empty(B + 1, np.int64)
+    met = np.zeros(B, np.bool_)
+    p, loops = 0, 0
+    for j in range(B):
+        if met[ix(j)]:
+            continue
+        offsets[ix(loops)] = p
+        loops += 1
+        i = j
+        while not met[ix(i)]:
+            met[ix(i)] = True
+            order[ix(p)] = i
+            p += 1
+            i = out[ix(head[ix(i)])]
+    offsets[ix(loops)] = B
+    return order, offsets[: loops + 1].copy(), -1

@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 from browser_support import skip_or_fail
 from helpers import prism
+from test_open import REFUSED
 
 import pentanb
 from pentanb import _jit, shapes
@@ -196,7 +197,8 @@ def test_twins_of_indices_out_of_range_are_refused_not_written(compiled):
     from pentanb.mesh.halfedge import pair_twins as _pair_twins
 
     tail = np.array([0, 1, 2, 2, 1, 7], dtype=np.int32)  # vertex 7 of 4
-    assert compiled.pair_twins(tail, tail[:0], 3, 4).size == 0
+    twin, alone, b = compiled.pair_twins(tail, tail[:0], 3, 4)
+    assert twin.size == alone.size == 0 and b == -1
     assert _pair_twins(tail, None, 4, 3) is None
 
 
@@ -212,6 +214,157 @@ def test_bad_meshes_get_the_same_message_compiled(compiled):
             pentanb.Mesh(v, bad)
         messages.append(str(err.value))
     assert messages[0] == messages[1] and "edge" in messages[0]
+
+
+# -- open meshes: pairing, boundary loops, vertex rings --------------------------------
+
+
+def holed_grid(nx: int, ny: int, holes: list[tuple[int, int]], size: int = 2):
+    """An nx x ny grid of quads without the ``size`` x ``size`` blocks at ``holes``."""
+    xs, ys = np.meshgrid(np.arange(nx + 1.0), np.arange(ny + 1.0), indexing="ij")
+    v = np.stack([xs.ravel(), ys.ravel(), 0 * xs.ravel()], 1)
+    keep = np.ones((nx, ny), dtype=bool)
+    for x0, y0 in holes:
+        keep[x0 : x0 + size, y0 : y0 + size] = False
+    i, j = np.nonzero(keep)
+    a = i * (ny + 1) + j
+    quads = np.stack([a, a + ny + 1, a + ny + 2, a + 1], 1)
+    used, f = np.unique(quads, return_inverse=True)
+    return v[used], f.reshape(-1, 4)
+
+
+def open_meshes() -> dict[str, tuple[np.ndarray, list[list[int]]]]:
+    v, q = holed_grid(9, 8, [(2, 2), (5, 4), (1, 6)])
+    mixed = [list(f) for f in q[:20]] + [
+        f for r in q[20:] for f in ([r[0], r[1], r[2]], [r[0], r[2], r[3]])
+    ]
+    cube = shapes.cube()
+    return {
+        "holed grid": (v, q.tolist()),
+        "holed grid, quads and triangles": (v, mixed),
+        "cube without a face": (cube.vertices, [f.tolist() for f in cube.faces[:5]]),
+        "two triangles on an edge": (np.eye(4)[:, :3], [[0, 1, 2], [1, 0, 3]]),
+    }
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", list(open_meshes()))
+def test_open_twins_loops_and_rings_are_the_numpy_ones(compiled, name):
+    from pentanb.mesh.boundary import open_twins, pair_halfedges
+
+    v, faces = open_meshes()[name]
+    m = pentanb.Mesh(v, faces)
+    k, c, n = m._uniform_size, m.corners, m.n_vertices
+    assert not m.is_closed
+    a, b = both(lambda: pair_halfedges(c, None if k else m.head, n, k))
+    assert same_bytes(a[0], b[0]) and same_bytes(a[1], b[1])
+    assert a[1].size and np.array_equal(a[1], np.flatnonzero(a[0] < 0))
+    a, b = both(lambda: open_twins(c, None if k else m.head, n, k))
+    for x, y in zip([a[0], *a[1]], [b[0], *b[1]]):
+        assert same_bytes(x, y)
+    # what the constructor keeps, and a mesh's own derivation of it
+    for make in (lambda: pentanb.Mesh(v, faces), lambda: fresh(m)):
+        a, b = both(lambda make=make: make())
+        for attr in ("twin", "boundary_halfedges", "vertex_ring"):
+            x, y = getattr(a, attr), getattr(b, attr)
+            for p, q in zip(*((x, y) if isinstance(x, tuple) else ((x,), (y,)))):
+                assert same_bytes(p, q), attr
+        assert same_bytes(a._boundary[1], b._boundary[1])
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    "faces",
+    [
+        [[0, 1, 2], [0, 1, 3]],  # a boundary edge used twice: vertex 0 leaves two boundaries
+        [[0, 1, 2], [0, 1, 3], [1, 0, 4]],  # three faces on an edge
+        [[0, 1, 2], [0, 3, 4]],  # two fans at vertex 0
+        [[0, 1, 2], [2, 1, 0], [0, 1, 2], [2, 1, 0]],  # every edge four times
+    ],
+)
+def test_open_pairing_fails_on_the_same_meshes_both_ways(compiled, faces):
+    from pentanb.mesh.boundary import open_twins
+
+    tail = np.array(faces).reshape(-1).astype(np.int32)
+    a, b = both(lambda: open_twins(tail, None, 5, 3))
+    assert a is None and b is None
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    "tail, head",
+    [
+        ([5, 2, 0, 7, 1, 3, 8], [1, 5, 7, 2, 0, 8, 3]),  # loops 0 4 2 3 1 and 5 6
+        ([4, 0, 4, 2, 0], [1, 4, 3, 0, 2]),  # vertices 4 and 0 left twice: 0 named
+        ([0, 1, 2], [1, 2, 6]),  # nothing leaves vertex 6
+    ],
+)
+def test_loop_order_is_the_numpy_loop_order(compiled, tail, head):
+    from pentanb.mesh.boundary import loop_order
+
+    t, w = np.array(tail, dtype=np.int32), np.array(head, dtype=np.int32)
+    want = loop_order(t, w, np.arange(t.size), 9)
+    got = compiled.loop_order(t, w, 9)
+    assert same_bytes(got[0], want[0]) and same_bytes(got[1], want[1]) and got[2] == want[2]
+    assert (want[2] >= 0) == (len(tail) != 7)
+
+
+def _non_manifold(closed: bool):
+    """Faces with their twins paired whose vertex 0 has faces in two fans or cycles
+    (two tetrahedra sharing vertex 0; the second without a face when not closed)."""
+    tet = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]]
+    faces = tet + [[0 if x == 0 else x + 3 for x in f] for f in tet[: 4 if closed else 3]]
+    return np.array(faces).reshape(-1).astype(np.int32), 7
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("closed", [True, False])
+def test_rings_of_a_vertex_of_two_fans_are_the_numpy_ones(compiled, closed):
+    # the rings repeat half-edges: both paths write the same ones, and say so
+    from pentanb.mesh.boundary import open_twins
+    from pentanb.mesh.halfedge import (
+        heads_at,
+        open_vertex_rings,
+        rotation_of,
+        vertex_rings,
+        walk_rings,
+    )
+
+    c, n = _non_manifold(closed)
+    o = np.arange(0, c.size + 1, 3)
+    twin, boundary = open_twins(c, None, n, 3)
+    bh, off = boundary
+    assert bh.size == (0 if closed else 3)
+    val = np.bincount(c, minlength=n) + np.bincount(c[bh], minlength=n)
+    head = heads_at(c, np.arange(c.size), 3)
+    rotation = rotation_of(twin, o, 3)
+    if closed:
+        want = vertex_rings(rotation, c, val)
+        got = walk_rings(twin, c, 3, None, val)
+    else:
+        want = open_vertex_rings(rotation, c, head, bh, off, val)
+        got = walk_rings(twin, c, 3, None, val, boundary, head[bh])
+    assert got is not None
+    assert same_bytes(got[0], want[0]) and same_bytes(got[1], want[1])
+    assert got[2] is False and np.unique(want[0]).size < want[0].size
+    # and with the previous half-edges handed over (faces of several sizes)
+    prv = np.arange(-1, c.size - 1, dtype=c.dtype)
+    prv[o[:-1]] = o[1:] - 1
+    again = walk_rings(twin, c, 0, prv, val, boundary, head[bh])
+    assert again is not None and same_bytes(again[0], got[0])
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", list(REFUSED))
+def test_open_meshes_refused_get_the_same_message_compiled(compiled, name):
+    v, faces, message = REFUSED[name]
+    messages = []
+    for on in (False, True):
+        _jit.use_jit(on)
+        with pytest.raises(pentanb.MeshError, match=message) as err:
+            pentanb.Mesh(v, faces)
+        messages.append(str(err.value))
+    assert messages[0] == messages[1]
 
 
 # -- the WebGL index arrays ----------------------------------------------------------

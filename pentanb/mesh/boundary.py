@@ -12,8 +12,9 @@ every boundary loop is an implicit *hole face*, and the boundary half-edge
 half-edge then has a twin; a closed mesh is the case of no loops, and all
 its arrays are what they were before open meshes existed.
 
-:func:`pair_open` pairs the half-edges of an oriented manifold with
-boundary; :func:`loop_order` chains its boundary half-edges into loops.
+:func:`pair_halfedges` pairs the half-edges of an oriented manifold with
+or without boundary (:func:`pair_open` is its numpy path for an open
+mesh); :func:`loop_order` chains the boundary half-edges into loops.
 :func:`boundary_loops` and :func:`describe_boundary` count loops for
 messages, from plain ``tail`` and ``head`` arrays.
 """
@@ -23,13 +24,15 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .halfedge import in_parts
+from .. import _jit
+from .halfedge import head_of, heads_at, in_parts, pair_twins
 
 __all__ = [
     "boundary_edges",
     "boundary_loops",
     "describe_boundary",
     "pair_open",
+    "pair_halfedges",
     "loop_order",
     "orientation_classes",
     "open_twins",
@@ -375,15 +378,69 @@ def orientation_classes(
     return flip, conflicts
 
 
-def open_twins(
-    tail: np.ndarray, head: np.ndarray, n: int
-) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]] | None:
-    """The twins and boundary loops of an oriented manifold with boundary, or None.
+def pair_halfedges(
+    tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0
+) -> tuple[np.ndarray, np.ndarray] | None:
+    """The opposite of every half-edge, closed mesh or not, and the half-edges without one.
+
+    One call of the compiled pairing (:mod:`pentanb._jit`) on large meshes,
+    which serves closed and open meshes alike; else the numpy path: the
+    closed pairing (:func:`pentanb.mesh.halfedge.pair_twins`), then, when
+    some half-edges do not pair up, :func:`pair_open`.
 
     Parameters
     ----------
-    tail, head : (H,) int
+    tail : (H,) int
+        The half-edges' tails, vertices in ``[0, n)``.
+    head : (H,) int or None
+        Their heads; None when every face has ``k`` corners (read from ``tail``).
     n : int
+        Number of vertices.
+    k : int
+        The size of every face, or 0.
+
+    Returns
+    -------
+    twin : (H,) int
+        ``twin[h]``, the half-edge ``head[h] -> tail[h]``, or -1 where there
+        is none (a boundary half-edge).
+    alone : (B,) int64
+        The half-edges without an opposite, in increasing order (empty: a
+        closed mesh).
+
+    None when a half-edge has two opposites or is a loop (the numpy path:
+    also when a directed edge is used twice; the compiled one leaves that to
+    :func:`loop_order`, which refuses the vertex two boundary half-edges
+    leave: :func:`open_twins` fails on the same meshes either way).
+    """
+    jit = _jit.kernels(tail.size)
+    if jit is not None and n > 0:  # (compiled: closed or not, one counting sort)
+        twin, alone, b = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
+        return None if b < 0 else (twin, alone)
+    twin = pair_twins(tail, head, n, k)
+    if twin is not None:
+        return twin, np.zeros(0, dtype=np.int64)
+    if head is None:
+        head = head_of(tail, np.empty(0), k)
+    twin = pair_open(tail, head, n)
+    if twin is None:
+        return None
+    return twin, np.flatnonzero(twin < 0).astype(np.int64, copy=False)
+
+
+def open_twins(
+    tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0
+) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]] | None:
+    """The twins and boundary loops of an oriented manifold, with boundary or not, or None.
+
+    Parameters
+    ----------
+    tail : (H,) int
+    head : (H,) int or None
+        None when every face has ``k`` corners (read from ``tail``).
+    n : int
+    k : int
+        The size of every face, or 0.
 
     Returns
     -------
@@ -392,21 +449,28 @@ def open_twins(
         (its hole half-edge, see :attr:`pentanb.Mesh.twin`).
     boundary : ((B,) int, (L + 1,) int)
         The boundary half-edges loop after loop (read-only) and the loops'
-        offsets (see :func:`loop_order`).
+        offsets (see :func:`loop_order`); :data:`CLOSED` when there are none.
 
     None when a directed edge is used twice, a half-edge is a loop, or a
     vertex has more than one boundary fan.
     """
-    twin = pair_open(tail, head, n)
-    if twin is None:
+    got = pair_halfedges(tail, head, n, k)
+    if got is None:
         return None
-    bh, off, bad = loop_order(tail, head, np.flatnonzero(twin < 0), n)
+    twin, bh = got
+    if not bh.size:
+        return twin, CLOSED
+    # the loops of the few boundary half-edges (positions into bh)
+    t, w = tail[bh], heads_at(tail, bh, k, head)
+    jit = _jit.kernels(tail.size)
+    if jit is not None:  # (the same loops, by one walk)
+        at, off, bad = jit.loop_order(t, w, n)
+    else:
+        at, off, bad = loop_order(t, w, np.arange(bh.size), n)
     if bad >= 0:
         return None
-    H = tail.size
-    if H + bh.size > np.iinfo(twin.dtype).max:  # pragma: no cover - beyond 2**31 half-edges
-        twin = twin.astype(np.int64)
-    twin[bh] = np.arange(H, H + bh.size, dtype=twin.dtype)
+    bh = bh[at]
+    twin = hole_twins(twin, bh)
     bh.setflags(write=False)
     off.setflags(write=False)
     return twin, (bh, off)

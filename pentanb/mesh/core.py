@@ -54,13 +54,14 @@ from .halfedge import (
     fan_triangle_corners,
     halfedge_face,
     head_of,
+    heads_at,
     next_of,
     open_vertex_rings,
-    pair_twins,
     prev_of,
     rotation_of,
     uniform_size,
     vertex_rings,
+    walk_rings,
 )
 from .validate import validate as validate_mesh
 from .validate import validate_rings
@@ -645,8 +646,8 @@ class Mesh:
         """
         counts = np.bincount(self._corners, minlength=self.n_vertices)
         bh = self._boundary[0]
-        if bh.size:
-            counts += np.bincount(self._corners[bh], minlength=self.n_vertices)
+        if bh.size:  # (a few boundary vertices: no second count over every vertex)
+            np.add.at(counts, self._corners[bh], 1)
         return readonly(counts.astype(self._corners.dtype, copy=False))
 
     @_connectivity
@@ -792,14 +793,13 @@ class Mesh:
         half-edges have no corner and no entry in the arrays of length H.
         """
         k = self._uniform_size
-        twin = pair_twins(self._corners, None if k else self.head, self.n_vertices, k)
-        if twin is not None:
-            self._shared.values.setdefault("_boundary", _CLOSED)
-            return readonly(twin)
-        got = open_twins(self._corners, self.head, self.n_vertices)
+        got = open_twins(self._corners, None if k else self.head, self.n_vertices, k)
         if got is None:  # (only faces nothing validated: validation names the culprit)
             raise MeshError("the faces do not pair up into an oriented manifold")
-        self._shared.values["_boundary"] = got[1]
+        if got[1][0].size:
+            self._shared.values["_boundary"] = got[1]
+        else:
+            self._shared.values.setdefault("_boundary", _CLOSED)
         return readonly(got[0])
 
     @_connectivity
@@ -879,6 +879,16 @@ class Mesh:
             as many as its edges (:attr:`valences`).
         """
         bh, off = self._boundary
+        k, c = self._uniform_size, self._corners
+        if bh.size:
+            hole_tail = heads_at(c, bh, k, None if k else self.head)
+            got = walk_rings(
+                self.twin, c, k, None if k else self.prev, self.valences, (bh, off), hole_tail
+            )
+        else:
+            got = walk_rings(self.twin, c, k, None if k else self.prev, self.valences)
+        if got is not None:  # (compiled: the same arrays, without a rotation array)
+            return readonly(got[0]), readonly(got[1])
         if not bh.size:
             ring, off = vertex_rings(self.rotation, self._corners, self.valences)
             return readonly(ring), readonly(off)

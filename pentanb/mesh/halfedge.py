@@ -33,6 +33,9 @@ __all__ = [
     "vertex_rings",
     "open_extension",
     "open_vertex_rings",
+    "hole_rotation",
+    "heads_at",
+    "walk_rings",
     "multi_fan_vertex",
     "fan_triangle_corners",
 ]
@@ -150,8 +153,8 @@ def pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) ->
         return None
     jit = _jit.kernels(H)
     if jit is not None and n > 0:  # each half-edge's partner among its head's (compiled)
-        got = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
-        return got if got.size == H else None
+        got, _, alone = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
+        return got if alone == 0 else None
     twin = np.empty(H, dtype=tail.dtype)
     index_bits = max(int(H - 1).bit_length(), 1)
     vertex_bits = max(int(n - 1).bit_length(), 1)
@@ -294,7 +297,52 @@ def vertex_rings(rotation, tail, valences, start=None):
     return ring, ring_off
 
 
-def open_extension(rotation, tail, head, bh, loop_offsets):
+def hole_rotation(bh: np.ndarray, loop_offsets: np.ndarray) -> np.ndarray:
+    """(B,) int: the rotation of the hole half-edges, ``rotation[H + j]``.
+
+    The next outgoing half-edge counter-clockwise round the tail of the hole
+    half-edge ``H + j`` is the boundary half-edge after ``bh[j]`` in its loop
+    (the loop's first after its last).
+
+    Parameters
+    ----------
+    bh : (B,) int
+        The boundary half-edges, loop after loop.
+    loop_offsets : (L + 1,) int
+
+    Returns
+    -------
+    (B,) int
+    """
+    B = bh.size
+    j = np.arange(B, dtype=np.int64)
+    loop_of = np.repeat(np.arange(loop_offsets.size - 1), np.diff(loop_offsets))
+    after = j + 1
+    last = after == loop_offsets[1:][loop_of]
+    after[last] = loop_offsets[:-1][loop_of[last]]
+    return bh[after]
+
+
+def heads_at(
+    tail: np.ndarray, hs: np.ndarray, k: int, head: np.ndarray | None = None
+) -> np.ndarray:
+    """The heads of the half-edges ``hs``: ``head[hs]``, or read from ``tail`` when
+    ``head`` is None (faces of ``k`` corners: the next corner of ``h`` is ``h + 1``,
+    or ``h + 1 - k`` at a face's last)."""
+    if head is not None:
+        return head[hs]
+    nxt = hs + 1
+    nxt[nxt % k == 0] -= k
+    return tail[nxt]
+
+
+def ring_dtype(dtype: Any, size: int) -> Any:
+    """The dtype of the vertex rings of an open mesh of ``size`` half-edges
+    (hole half-edges included) whose twins have ``dtype``."""
+    return np.result_type(dtype, np.int32 if size < 2**31 else np.int64)
+
+
+def open_extension(rotation, tail, head, bh, loop_offsets, hole_tail=None):
     """The rotation and tails of all half-edges of an open mesh, hole half-edges included.
 
     Parameters
@@ -302,9 +350,12 @@ def open_extension(rotation, tail, head, bh, loop_offsets):
     rotation : (H,) int
         ``twin[prev[h]]`` of the face half-edges (hole half-edges ``>= H``).
     tail, head : (H,) int
+        (``head`` may be None when ``hole_tail`` is given.)
     bh : (B,) int
         The boundary half-edges, loop after loop.
     loop_offsets : (L + 1,) int
+    hole_tail : (B,) int, optional
+        ``head[bh]``, when the caller has it.
 
     Returns
     -------
@@ -314,38 +365,91 @@ def open_extension(rotation, tail, head, bh, loop_offsets):
         its tail is the boundary half-edge after ``bh[j]`` in its loop.
     tail_all : (H + B,) int
     """
-    B = bh.size
-    j = np.arange(B, dtype=np.int64)
-    loop_of = np.repeat(np.arange(loop_offsets.size - 1), np.diff(loop_offsets))
-    after = j + 1
-    last = after == loop_offsets[1:][loop_of]
-    after[last] = loop_offsets[:-1][loop_of[last]]
-    dtype = np.result_type(rotation.dtype, np.int32 if tail.size + B < 2**31 else np.int64)
-    rotation_all = np.concatenate([rotation, bh[after]]).astype(dtype, copy=False)
-    tail_all = np.concatenate([tail, head[bh]]).astype(dtype, copy=False)
+    dtype = ring_dtype(rotation.dtype, tail.size + bh.size)
+    rotation_all = np.concatenate([rotation, hole_rotation(bh, loop_offsets)])
+    rotation_all = rotation_all.astype(dtype, copy=False)
+    hole_tail = head[bh] if hole_tail is None else hole_tail
+    tail_all = np.concatenate([tail, hole_tail]).astype(dtype, copy=False)
     return rotation_all, tail_all
 
 
-def open_vertex_rings(rotation, tail, head, bh, loop_offsets, valences):
+def open_vertex_rings(rotation, tail, head, bh, loop_offsets, valences, hole_tail=None):
     """The vertex rings of an open mesh (:attr:`pentanb.Mesh.vertex_ring`).
 
     Every vertex's outgoing half-edges, hole half-edges included, in
     rotation order; a boundary vertex's ring starts at its hole half-edge
     (its largest), an interior vertex's at its largest half-edge, as on a
-    closed mesh.
+    closed mesh.  Arguments as for :func:`open_extension`.
 
     Returns
     -------
     ring : (H + B,) int
     ring_offsets : (n + 1,) int
     """
-    rotation_all, tail_all = open_extension(rotation, tail, head, bh, loop_offsets)
+    rotation_all, tail_all = open_extension(rotation, tail, head, bh, loop_offsets, hole_tail)
     H, dtype = tail.size, tail_all.dtype
     start = np.empty(valences.size, dtype=dtype)
     for a in range(0, H, BLOCK):
         start[tail[a : a + BLOCK]] = np.arange(a, min(a + BLOCK, H), dtype=dtype)
     start[tail_all[H:]] = np.arange(H, tail_all.size, dtype=dtype)
     return vertex_rings(rotation_all, tail_all, valences, start)
+
+
+def walk_rings(
+    twin: np.ndarray,
+    tail: np.ndarray,
+    k: int,
+    prv: np.ndarray | None,
+    valences: np.ndarray,
+    boundary: tuple[np.ndarray, np.ndarray] | None = None,
+    hole_tail: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray, bool] | None:
+    """The vertex rings by the compiled kernel, or None without it (small meshes, no numba).
+
+    The arrays of :func:`vertex_rings` (closed) or :func:`open_vertex_rings`
+    (``boundary`` given), bit for bit, without a rotation array: one walk
+    round every vertex from its largest half-edge.
+
+    Parameters
+    ----------
+    twin : (H,) int
+        The twins, ``H + j`` for ``boundary[0][j]``.
+    tail : (H,) int
+    k : int
+        The size of every face, or 0 (faces of several sizes: ``prv`` given).
+    prv : (H,) int or None
+        The previous half-edge round every face, when ``k`` is 0.
+    valences : (n,) int
+    boundary : ((B,) int, (L + 1,) int), optional
+        The boundary half-edges loop after loop and the loops' offsets.
+    hole_tail : (B,) int, optional
+        The tail of every hole half-edge: ``head[boundary[0]]``.
+
+    Returns
+    -------
+    ring : (H + B,) int
+    ring_offsets : (n + 1,) int
+    ok : bool
+        Whether the rings hold every half-edge once (else some vertex's
+        faces form more than one fan).
+    """
+    H = tail.size
+    jit = _jit.kernels(H)
+    if jit is None:
+        return None
+    if boundary is None or not boundary[0].size:
+        dtype, after, hole_tail = tail.dtype, np.zeros(0, np.int64), tail[:0]
+    else:
+        bh, loop_offsets = boundary
+        dtype = ring_dtype(twin.dtype, H + bh.size)
+        after = hole_rotation(bh, loop_offsets).astype(np.int64, copy=False)
+        assert hole_tail is not None and hole_tail.size == bh.size
+    ring_off = np.zeros(valences.size + 1, dtype=dtype)
+    np.cumsum(valences, out=ring_off[1:])
+    ring = np.empty(H + after.size, dtype=dtype)
+    prv = tail[:0] if prv is None or k else prv
+    ok = jit.open_rings(twin, tail, k, prv, after, hole_tail, ring, ring_off)
+    return ring, ring_off, bool(ok)
 
 
 def multi_fan_vertex(rotation, tail, valences) -> int:

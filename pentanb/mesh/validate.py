@@ -8,11 +8,12 @@ every check first as whole-array passes that only say yes or no
 checked again, in order, by :func:`_diagnose`, which finds the first culprit
 and raises a :class:`MeshError` naming it (a face, an edge, a vertex).
 
-A closed mesh takes the fast path it always took (one sort of packed keys
-pairs the twins); a mesh whose half-edges do not all pair up is checked
-again as a surface with boundary (:func:`_valid_open`, a slower numpy
-path): every edge with one or two faces, every vertex's faces one fan or
-one cycle.
+One pairing serves closed and open meshes
+(:func:`~pentanb.mesh.boundary.open_twins`: on large meshes one compiled
+counting sort; the numpy path sorts packed keys, for a closed mesh first);
+a mesh with boundary half-edges is then checked as a surface with boundary
+(:func:`_valid_open`): every edge with one or two faces, every vertex's
+faces one fan or one cycle.
 """
 
 from __future__ import annotations
@@ -26,15 +27,20 @@ from .coerce import MeshError, readonly
 from .halfedge import (
     BLOCK,
     RotateUniform,
+    heads_at,
     multi_fan_vertex,
     open_extension,
     open_vertex_rings,
     pair_twins,
     rotation_of,
     vertex_rings,
+    walk_rings,
 )
 
 __all__ = ["validate", "validate_rings"]
+
+#: Values per block of :func:`_repeats_in_a_face` (a few hundred kilobytes).
+_ROWS = 1 << 16
 
 
 def validate(
@@ -133,11 +139,14 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
     """Every check of :func:`_diagnose`, without messages.
 
     Faces of at least 3 corners; indices in range; no vertex twice in a
-    face; every directed edge once and with its opposite (one sort of
-    packed 64-bit keys, :func:`~pentanb.mesh.halfedge.pair_twins`); at least 3 edges at every
-    vertex (so none unused); no two faces sharing two edges (no face
-    twice among a face's neighbours); one fan around every vertex (the
-    vertex rings use every half-edge once).
+    face; every directed edge once and with its opposite, or on the
+    boundary (:func:`~pentanb.mesh.boundary.open_twins`: one compiled
+    counting sort, or sorts of packed 64-bit keys; a mesh with boundary
+    half-edges goes on in :func:`_valid_open`); at least 3 edges at every
+    vertex (so none unused); no two faces sharing two edges (no face twice
+    among a face's neighbours); one fan around every vertex (the vertex
+    rings, walked by one compiled kernel or in whole-array steps, use
+    every half-edge once).
     """
     n, c, o = mesh.n_vertices, mesh._corners, mesh._offsets
     if n == 0 or o.size < 2 or c.size == 0:
@@ -152,9 +161,12 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
     # the arrays below are not kept (only the twins and rings are): the
     # peak stays a few bytes per corner above the faces themselves
     if twin is None:
-        twin = pair_twins(c, None if k else mesh.head, n, k)
-        if twin is None:  # not closed: a surface with boundary, or no manifold
-            return _valid_open(mesh, strict)
+        got = open_twins(c, None if k else mesh.head, n, k)
+        if got is None:  # no manifold
+            return False
+        twin, boundary = got
+        if boundary[0].size:  # a surface with boundary
+            return _valid_open(mesh, twin, boundary, strict)
     mesh._shared.values.setdefault("_boundary", CLOSED)
     if strict:
         if int(mesh.valences.min()) < 3:
@@ -164,54 +176,75 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
             return False
         del neighbour
     mesh._shared.values["twin"] = readonly(twin)
-    # (no rotation array: a column copy of the twins walks the rings a
-    # little faster, but raises the peak of reading a 1,000,000-triangle
-    # file from 2.9x to 3.3x the arrays read)
-    if k:  # rotation[h] = twin[prev[h]], prev computed as needed (no array kept)
-        ring, ring_off = vertex_rings(RotateUniform(twin, k), c, mesh.valences)
+    walked = walk_rings(twin, c, k, None if k else mesh.prev, mesh.valences)
+    if walked is not None:  # (compiled: one walk round every vertex)
+        ring, ring_off, ok = walked
+        if not ok:
+            return False
     else:
-        ring, ring_off = vertex_rings(rotation_of(twin, o, k, mesh), c, mesh.valences)
-    seen = np.zeros(c.size, dtype=bool)
-    for a in range(0, ring.size, BLOCK):
-        seen[ring[a : a + BLOCK]] = True
-    if not seen.all():
-        return False
+        # (no rotation array: a column copy of the twins walks the rings a
+        # little faster, but raises the peak of reading a 1,000,000-triangle
+        # file from 2.9x to 3.3x the arrays read)
+        if k:  # rotation[h] = twin[prev[h]], prev computed as needed (no array kept)
+            ring, ring_off = vertex_rings(RotateUniform(twin, k), c, mesh.valences)
+        else:
+            ring, ring_off = vertex_rings(rotation_of(twin, o, k, mesh), c, mesh.valences)
+        seen = np.zeros(c.size, dtype=bool)
+        for a in range(0, ring.size, BLOCK):
+            seen[ring[a : a + BLOCK]] = True
+        if not seen.all():
+            return False
     mesh._shared.values["vertex_ring"] = (readonly(ring), readonly(ring_off))
     return True
 
 
-def _valid_open(mesh: Any, strict: bool) -> bool:
-    """Every check of :func:`_diagnose` on a mesh whose half-edges do not all pair up.
+def _valid_open(
+    mesh: Any, twin: np.ndarray, boundary: tuple[np.ndarray, np.ndarray], strict: bool
+) -> bool:
+    """Every check of :func:`_diagnose` on a mesh with boundary, its twins paired.
 
-    Twins found by one sort of the directed edges (none used twice), the
-    boundary half-edges chained into loops (one leaving every boundary
-    vertex), then as on a closed mesh: no interior vertex of fewer than 3
-    edges, no two faces sharing two edges, and the vertex rings (hole
-    half-edges included) using every half-edge once.
+    ``twin`` and ``boundary`` as :func:`~pentanb.mesh.boundary.open_twins`
+    gives them (the boundary half-edges chained into loops, one leaving
+    every boundary vertex); then as on a closed mesh: no interior vertex of
+    fewer than 3 edges, no two faces sharing two edges, and the vertex
+    rings (hole half-edges included) using every half-edge once.
     """
-    got = open_twins(mesh._corners, mesh.head, mesh.n_vertices)
-    if got is None:
-        return False
-    twin, boundary = got
     bh, loop_off = boundary
-    H, F = twin.size, mesh.n_faces
+    c, k = mesh._corners, mesh._uniform_size
+    F, B = mesh.n_faces, bh.size
     mesh._shared.values["_boundary"] = boundary
     if strict:
         val = mesh.valences
-        inner = ~mesh.is_boundary_vertex
-        if val.size and (int(val.min()) < 1 or (inner.any() and int(val[inner].min()) < 3)):
+        if val.size and int(val.min()) < 3:  # on the boundary only, and none unused
+            low = np.flatnonzero(val < 3)
+            if int(val[low].min()) < 1 or not mesh.is_boundary_vertex[low].all():
+                return False
+        # the face across every half-edge; F + j across the boundary half-edge bh[j]
+        if k:
+            neighbour = twin // k
+        else:
+            inner = twin.copy()
+            inner[bh] = 0
+            neighbour = mesh.halfedge_face[inner]
+            del inner
+        neighbour[bh] = np.arange(F, F + B, dtype=neighbour.dtype)
+        if _repeats_in_a_face(mesh, neighbour, F + B):
             return False
-        fid = mesh.halfedge_face
-        neighbour = np.where(twin < H, fid[np.minimum(twin, H - 1)], F + (twin - H))
-        if _repeats_in_a_face(mesh, neighbour, F + bh.size):
-            return False
+        del neighbour
     mesh._shared.values["twin"] = readonly(twin)
-    ring, ring_off = open_vertex_rings(
-        mesh.rotation, mesh._corners, mesh.head, bh, loop_off, mesh.valences
-    )
-    seen = np.zeros(ring.size, dtype=bool)
-    seen[ring] = True
-    if not seen.all():
+    hole_tail = heads_at(c, bh, k, None if k else mesh.head)
+    prv = None if k else mesh.prev
+    got = walk_rings(twin, c, k, prv, mesh.valences, boundary, hole_tail)
+    if got is None:  # the numpy path
+        ring, ring_off = open_vertex_rings(
+            mesh.rotation, c, None, bh, loop_off, mesh.valences, hole_tail
+        )
+        seen = np.zeros(ring.size, dtype=bool)
+        seen[ring] = True
+        ok = bool(seen.all())
+    else:
+        ring, ring_off, ok = got
+    if not ok:
         return False
     mesh._shared.values["vertex_ring"] = (readonly(ring), readonly(ring_off))
     return True
@@ -220,17 +253,26 @@ def _valid_open(mesh: Any, strict: bool) -> bool:
 def _repeats_in_a_face(mesh: Any, values: np.ndarray, bound: int) -> bool:
     """Whether some face holds a value twice (``values``: one per corner, in ``[0, bound)``).
 
-    Compares every corner with the corners 1, 2, ..., k // 2 places
-    further round its face (every pair once), in whole-array passes;
-    faces of more than 16 sides are checked by one sort instead.
+    Faces of k sides: every pair of columns of the (m, k) table compared,
+    block of rows by block (each block read once from memory, and a
+    column of a block is one strided pass: several times faster than
+    comparing two-dimensional slices).  Faces of several sizes: every
+    corner with the corners 1, 2, ..., k // 2 places further round its
+    face (every pair once), in whole-array passes.  Faces of more than 16
+    sides are checked by one sort instead.
     """
     k = mesh._uniform_size
     if k:
         if k <= 16:
             a = values.reshape(-1, k)
-            for s in range(1, k // 2 + 1):
-                if (a[:, s:] == a[:, :-s]).any() or (a[:, :s] == a[:, k - s :]).any():
-                    return True
+            rows = max(_ROWS // k, 1)
+            for lo in range(0, a.shape[0], rows):
+                b = a[lo : lo + rows]
+                for i in range(k - 1):
+                    col = b[:, i]
+                    for j in range(i + 1, k):
+                        if (col == b[:, j]).any():
+                            return True
             return False
     else:
         sizes = mesh.face_sizes
