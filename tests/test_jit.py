@@ -656,7 +656,7 @@ def test_kernels_run_on_the_calling_thread_over_every_item(compiled):
 # -- open meshes -----------------------------------------------------------------------
 
 
-def holed_grid(nx: int = 7, ny: int = 6) -> pentanb.Mesh:
+def two_holed_grid(nx: int = 7, ny: int = 6) -> pentanb.Mesh:
     """A planar grid of quads with two holes: corners (sharp vertices of one face)
     on its rim, boundary vertices of three faces round the holes."""
     keep = np.ones((nx, ny), dtype=bool)
@@ -678,7 +678,7 @@ def test_open_meshes_give_the_numpy_results_compiled(compiled, name, shape):
     # positions, faces, twins, boundary loops and rings of every scheme and
     # its two duals on an open mesh, each derived from its input's
     def run():
-        m = fresh(holed_grid() if shape == "holed grid" else shapes.open_disk())
+        m = fresh(two_holed_grid() if shape == "holed grid" else shapes.open_disk())
         out = pentanb.subdivide(m, name, 1, 0)
         d1 = pentanb.dual(out)
         d2 = pentanb.dual(d1)
