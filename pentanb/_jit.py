@@ -16,7 +16,12 @@ passes by one loop each, giving the *same results bit for bit*:
   hexagon preservation and honeycomb, the face of every half-edge and the
   dual's faces gathered from it;
 * twin pairing, by a counting sort of the half-edges on their tails (linear,
-  where the numpy path sorts packed keys), refusing exactly what it refuses.
+  where the numpy path sorts packed keys), refusing exactly what it refuses,
+  on closed and open meshes alike (an edge of one face is a boundary edge);
+  the boundary half-edges chained into loops, and every vertex's ring walked
+  once (the validation of :class:`pentanb.Mesh`);
+* on open meshes, the rings the paper's two schemes write for their outputs,
+  and the dual's faces, boundary vertices' included.
 
 They run only on meshes of at least :data:`MIN_CORNERS` corners, where a
 compiled loop pays for itself; smaller meshes never load numba.  The first
