@@ -666,15 +666,27 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
 
 
 @jit
-def vertex_normals(vertices, corners, offsets, out):  # pragma: no cover - compiled
+def vertex_normals(vertices, corners, offsets, rows, copies):  # pragma: no cover - compiled
     # every face's vector area by Newell's formula (its corners in order,
     # summed one by one in float64), added to each of its vertices in face
-    # order, then normalised and written as float32 into every block of n
-    # rows of out ((copies * n, 3) float32: the buffer the view sends, so no
-    # copy is made of them): the numpy path's (pentanb.viz.drawing.vertex_normals)
-    # numbers; a zero sum gives (0, 0, 1)
+    # order, then normalised and written as float32 into each of the last
+    # `copies` blocks of n rows of rows ((R, 3) float32: the buffer the view
+    # sends, so no copy is made of them): the numpy path's
+    # (pentanb.viz.drawing.vertex_normals) numbers; a zero sum gives (0, 0, 1).
+    # The float64 sums live in the bytes of rows' last 2n rows when R >= 2n
+    # (no scratch of their size: fresh memory costs a page fault per 4 KiB,
+    # 4 us each here), so the last block is written from the highest vertex
+    # down: its row u (bytes 12 (n + u) of the sums) covers the sum of vertex
+    # (n + u) // 2 >= u, already read; the other blocks are copies of it
     n = vertices.shape[0]
-    total = np.zeros((n, 3))
+    size = rows.shape[0]
+    s = size - 2 * n
+    s -= s & 1  # (an even row: float64 aligned)
+    if s >= 0:
+        total = rows.reshape(-1)[3 * s : 3 * (s + 2 * n)].view(np.float64).reshape((n, 3))
+    else:
+        total = np.empty((n, 3))
+    total[:] = 0.0
     m = offsets.size - 1
     for f in range(m):
         a, b = offsets[ix(f)], offsets[ix(f + 1)]
@@ -699,16 +711,20 @@ def vertex_normals(vertices, corners, offsets, out):  # pragma: no cover - compi
             total[u, 0] += ax
             total[u, 1] += ay
             total[u, 2] += az
-    copies = out.shape[0] // max(n, 1)
-    for u in range(n):
+    last = size - n
+    for u in range(n - 1, -1, -1):
         x, y, z = total[ix(u), 0], total[ix(u), 1], total[ix(u), 2]
         length = np.sqrt(x * x + y * y + z * z)
         if length > 0.0:
             p, q, r = np.float32(x / length), np.float32(y / length), np.float32(z / length)
         else:
             p, q, r = np.float32(0.0), np.float32(0.0), np.float32(1.0)
-        for k in range(copies):
-            row = ix(u + k * n)
-            out[row, 0] = p
-            out[row, 1] = q
-            out[row, 2] = r
+        row = ix(last + u)
+        rows[row, 0] = p
+        rows[row, 1] = q
+        rows[row, 2] = r
+    for k in range(1, copies):
+        first = last - k * n
+        for u in range(n):
+            for j in range(3):
+                rows[ix(first + u), j] = rows[ix(last + u), j]

@@ -266,23 +266,28 @@ def vertex_normals(mesh: Mesh) -> NDArray[np.float32]:
     return _vertex_normals(mesh, 1)
 
 
-def _vertex_normals(mesh: Mesh, copies: int) -> NDArray[np.float32]:
-    """(copies * n, 3) float32: :func:`vertex_normals` once per block of n rows."""
+def _vertex_normals(mesh: Mesh, copies: int, spare: int = 0) -> NDArray[np.float32]:
+    """((spare + copies) * n, 3) float32: :func:`vertex_normals` in each of the
+    last ``copies`` blocks of n rows; the first ``spare`` blocks are the
+    caller's to fill (left with any content).
+
+    The buffers of a slider move are fresh memory, which costs a page fault
+    per 4 KiB on first touch: the compiled kernel keeps its float64 sums in
+    the bytes of the rows it returns when they are at least 2n, and the
+    numpy path writes its quotients straight into them.
+    """
     n = mesh.n_vertices
+    rows = np.empty(((spare + copies) * n, 3), np.float32)
     jit = _jit.kernels(len(mesh.corners))
-    if jit is not None:  # (written straight into every copy)
-        out = np.empty((copies * n, 3), np.float32)
-        jit.vertex_normals(mesh.vertices, mesh.corners, mesh.offsets, out)
-        return out
-    normal = _numpy_vertex_normals(mesh)
-    if copies == 1:
-        return normal
-    out = np.empty((copies, n, 3), np.float32)
-    out[:] = normal  # (broadcast: every copy)
-    return out.reshape(-1, 3)
+    if jit is not None:
+        jit.vertex_normals(mesh.vertices, mesh.corners, mesh.offsets, rows, copies)
+    else:
+        _numpy_vertex_normals(mesh, rows[spare * n :], copies)
+    return rows
 
 
-def _numpy_vertex_normals(mesh: Mesh) -> NDArray[np.float32]:
+def _numpy_vertex_normals(mesh: Mesh, out: NDArray[np.float32], copies: int) -> None:
+    """Write the vertex normals into every block of n rows of ``out`` ((copies * n, 3))."""
     area = face_areas(mesh)
     owner = mesh.corners
     n = mesh.n_vertices
@@ -291,13 +296,18 @@ def _numpy_vertex_normals(mesh: Mesh) -> NDArray[np.float32]:
         total[:, k] = np.bincount(
             owner, weights=np.repeat(area[:, k], mesh.face_sizes), minlength=n
         )
+    del area
     length = np.sqrt(
         total[:, 0] * total[:, 0] + total[:, 1] * total[:, 1] + total[:, 2] * total[:, 2]
     )
     flat = ~(length > 0)
-    out = total / np.where(flat, 1.0, length)[:, None]
-    out[flat] = (0.0, 0.0, 1.0)
-    return out.astype(np.float32)
+    length[flat] = 1.0
+    first = out[:n]
+    # the float64 quotients rounded to float32 as they are written (as astype would)
+    np.divide(total, length[:, None], out=first, casting="same_kind")
+    first[flat] = (0.0, 0.0, 1.0)
+    for k in range(1, copies):
+        out[k * n : (k + 1) * n] = first
 
 
 def boundary_segments(mesh: Mesh) -> NDArray[np.float64]:
@@ -471,9 +481,24 @@ def _bytes(rgb: ArrayLike) -> NDArray[np.uint8]:
     return np.rint(np.clip(np.asarray(rgb, dtype=np.float64), 0.0, 1.0) * 255).astype(np.uint8)
 
 
+def _fill(out: NDArray[np.uint8], rgb: NDArray[np.uint8]) -> None:
+    """Set every row of ``out`` ((k, 3)) to ``rgb``: the first row, then copies
+    of the rows done, doubling (no temporary; 20x np.tile's speed)."""
+    k = len(out)
+    if k:
+        out[0] = rgb
+    done = 1
+    while done < k:
+        step = min(done, k - done)
+        out[done : done + step] = out[:step]
+        done += step
+
+
 def _same_rows(rgb: NDArray[np.uint8], n: int) -> NDArray[np.uint8]:
-    """``n`` rows of the bytes ``rgb`` (a writeable array; bytes repeated, 20x np.tile's speed)."""
-    return np.frombuffer(bytearray(rgb.tobytes() * n), dtype=np.uint8).reshape(n, 3)
+    """``n`` rows of the bytes ``rgb`` (a writeable array)."""
+    out = np.empty((n, 3), np.uint8)
+    _fill(out, rgb)
+    return out
 
 
 def _rows(colors: ArrayLike | None, default: str, n: int, repeat: int) -> NDArray[np.uint8]:
@@ -671,18 +696,21 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
         normal = _vertex_normals(mesh, 1).take(tri.reshape(-1), axis=0)
         index = _counting(len(position), 3)
     else:
+        # the normals first: with one copy, they share a block with the
+        # vertices (the kernel's sums are kept in its bytes meanwhile)
+        if copies == 1:
+            rows = _vertex_normals(mesh, 1, spare=1)
+            position, normal = rows[:n], rows[n:]
+        else:
+            normal = _vertex_normals(mesh, copies)
+            position = np.empty((copies * n, 3), np.float32)
         # the vertices cast to float32 straight into every copy (the first
         # copy is also the edges' array): the view's arrays, writeable
-        position = np.empty((copies, n, 3), np.float32)
-        position[:] = mesh.vertices  # (broadcast: every copy)
-        position = position.reshape(-1, 3)
+        position.reshape(copies, n, 3)[:] = mesh.vertices  # (broadcast: every copy)
         v = position[:n]
-        normal = _vertex_normals(mesh, copies)
-        if copies == 1:  # one size, one copy of the vertices
-            color = _same_rows(table[present[0]], n)
-        else:
-            rows = b"".join(table[p].tobytes() * n for p in present)
-            color = np.frombuffer(bytearray(rows), dtype=np.uint8).reshape(-1, 3)
+        color = np.empty((copies * n, 3), np.uint8)
+        for k, p in enumerate(present):
+            _fill(color[k * n : (k + 1) * n], table[p])
         _addressable(len(position))
         slot = np.zeros(high - low + 1, np.int64)
         slot[present] = np.arange(copies) * n
