@@ -57,6 +57,7 @@ __all__ = [
     "honeycomb_points",
     "pair_twins",
     "vertex_normals",
+    "bounds",
 ]
 
 
@@ -728,3 +729,24 @@ def vertex_normals(vertices, corners, offsets, rows, copies):  # pragma: no cove
         for u in range(n):
             for j in range(3):
                 rows[ix(first + u), j] = rows[ix(last + u), j]
+
+
+@jit
+def bounds(points, lo, hi):  # pragma: no cover - compiled
+    # the least and the greatest value of every column of points ((n, 3)
+    # float64, n >= 1) into lo and hi ((3,) float64), as numpy's min and max
+    # find them (a NaN in a column makes both NaN; of -0.0 and 0.0 either
+    # may be kept), in one pass over the rows: numpy reduces a strided
+    # column at a time, six passes over the array
+    n = points.shape[0]
+    lx, ly, lz = points[0, 0], points[0, 1], points[0, 2]
+    hx, hy, hz = lx, ly, lz
+    nx, ny, nz = False, False, False
+    for i in range(n):
+        x, y, z = points[ix(i), 0], points[ix(i), 1], points[ix(i), 2]
+        lx, hx, nx = min(lx, x), max(hx, x), nx | (x != x)
+        ly, hy, ny = min(ly, y), max(hy, y), ny | (y != y)
+        lz, hz, nz = min(lz, z), max(hz, z), nz | (z != z)
+    lo[0], hi[0] = (np.nan, np.nan) if nx else (lx, hx)
+    lo[1], hi[1] = (np.nan, np.nan) if ny else (ly, hy)
+    lo[2], hi[2] = (np.nan, np.nan) if nz else (lz, hz)

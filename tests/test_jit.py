@@ -218,6 +218,36 @@ def test_bad_meshes_get_the_same_message_compiled(compiled):
 
 
 @pytest.mark.slow
+@pytest.mark.parametrize("n", [1, 2, 7, 1000])
+def test_bounds_are_numpys_min_and_max(compiled, n):
+    # the view's frame check: every column's least and greatest value, a
+    # NaN anywhere in a column making both NaN, an infinity a bound
+    rng = np.random.default_rng(n)
+    cases = []
+    for scale in (1e-300, 1.0, 1e300):
+        p = rng.standard_normal((n, 3)) * scale
+        cases.append(p)
+        for bad in (np.nan, np.inf, -np.inf):
+            q = p.copy()
+            q[rng.integers(n), rng.integers(3)] = bad
+            cases.append(q)
+    for p in cases:
+        lo, hi = np.empty(3), np.empty(3)
+        compiled.bounds(p, lo, hi)
+        want_lo = np.array([min(p[:, k].tolist()) for k in range(3)])
+        want_hi = np.array([max(p[:, k].tolist()) for k in range(3)])
+        has_nan = np.isnan(p).any(axis=0)
+        want_lo[has_nan] = want_hi[has_nan] = np.nan
+        np.testing.assert_array_equal(lo, want_lo)
+        np.testing.assert_array_equal(hi, want_hi)
+        for frame in (drawing.IDENTITY, (np.array([1e10, 0.0, 0.0]), 5)):
+            fits = drawing.frame_fits(frame, p)
+            _jit.use_jit(False)
+            assert drawing.frame_fits(frame, p) == fits
+            _jit.use_jit(True)
+
+
+@pytest.mark.slow
 def test_edge_index_is_the_meshs_edges(corpus_mesh, compiled):
     got = compiled.edge_index(corpus_mesh.corners, corpus_mesh.offsets)
     assert got.dtype == np.uint32

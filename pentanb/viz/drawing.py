@@ -803,10 +803,23 @@ _FRAME_LIMIT = 2.0**32
 _FRAME_DETAIL = 2.0**-12
 
 
-def _bounds(points: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]] | None:
+def _bounds(
+    points: ArrayLike, signed_zeros: bool = True
+) -> tuple[NDArray[np.float64], NDArray[np.float64]] | None:
+    """(least, greatest) of every coordinate, or None for no points.
+
+    ``signed_zeros=False``: where a column holds both -0.0 and 0.0, either
+    may be returned (the optional compiled kernel, one pass over a large
+    array); a NaN or an infinity gives a NaN or an infinity all the same.
+    """
     p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     if len(p) == 0:
         return None
+    jit = None if signed_zeros else _jit.kernels(len(p))
+    if jit is not None:
+        lo, hi = np.empty(3), np.empty(3)
+        jit.bounds(np.ascontiguousarray(p), lo, hi)
+        return lo, hi
     # column by column: numpy reduces a strided column with SIMD, while
     # p.min(axis=0) walks the rows three values at a time (30-40x slower on
     # 100,000 vertices, the largest cost of a slider move); a NaN or an
@@ -897,8 +910,10 @@ def frame_fits(frame: Frame, *points: ArrayLike) -> bool:
     """
     drawn = [in_frame(p, frame) for p in points]
     # (every coordinate finite exactly when the bounds are: min and max keep
-    # a NaN, and an infinity is a bound; no pass of its own)
-    found = [b for b in (_bounds(d) for d in drawn) if b is not None]
+    # a NaN, and an infinity is a bound; no pass of its own.  The sign of a
+    # zero bound changes no answer here: the identity frame is one of
+    # magnitudes)
+    found = [b for b in (_bounds(d, signed_zeros=False) for d in drawn) if b is not None]
     if not all(np.isfinite(lo).all() and np.isfinite(hi).all() for lo, hi in found):
         return False
     frame_found = _frame_of(found)
