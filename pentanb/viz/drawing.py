@@ -217,30 +217,36 @@ def face_areas(mesh: Mesh) -> NDArray[np.float64]:
     area = np.empty((mesh.n_faces, 3))
     counts = _mesh.size_counts(mesh)
     for n, _ in counts:
-        if len(counts) == 1:
-            faces = None
-            rows = corners.astype(np.intp).reshape(-1, n)
-        else:
-            faces = np.flatnonzero(sizes == n)
-            rows = corners[offsets[faces][:, None] + np.arange(n)]
+        faces = None if len(counts) == 1 else np.flatnonzero(sizes == n)
         # (n, faces): the i-th corners of all faces side by side, contiguous
-        at = np.ascontiguousarray(rows.T)  # (a gather by a strided index is slow)
-        x, y, z = (c.take(at) for c in cols)
-        ax, ay, az = (np.zeros(len(rows)) for _ in range(3))
-        t, u = np.empty(len(rows)), np.empty(len(rows))
+        # (a gather by a strided index is slow)
+        at = np.empty((n, len(sizes) if faces is None else len(faces)), corners.dtype)
+        if faces is None:
+            at[:] = corners.reshape(-1, n).T
+        else:
+            first = offsets[faces]
+            for i in range(n):
+                np.take(corners, first + i, out=at[i])
+        k = at.shape[1]
+        ax, ay, az = (np.zeros(k) for _ in range(3))
+        t, u = np.empty(k), np.empty(k)
+        # the coordinates of two corners at a time (no (n, faces) arrays of them)
+        xi, yi, zi = start = [c.take(at[0]) for c in cols]
         for i in range(n):  # in order, corner by corner (no pairwise sums)
-            j = (i + 1) % n
-            for a, p, q in ((ax, y, z), (ay, z, x), (az, x, y)):
+            xj, yj, zj = start if i + 1 == n else [c.take(at[i + 1]) for c in cols]
+            terms = ((ax, yi, zj, zi, yj), (ay, zi, xj, xi, zj), (az, xi, yj, yi, xj))
+            for a, pi, qj, qi, pj in terms:
                 # a += p_i q_j - q_i p_j, without temporaries
-                np.multiply(p[i], q[j], out=t)
-                np.multiply(q[i], p[j], out=u)
+                np.multiply(pi, qj, out=t)
+                np.multiply(qi, pj, out=u)
                 t -= u
                 a += t
-        block = np.stack([ax, ay, az], axis=1)
-        if faces is None:
-            area = block
-        else:
-            area[faces] = block
+            xi, yi, zi = xj, yj, zj
+        for c, a in enumerate((ax, ay, az)):
+            if faces is None:
+                area[:, c] = a
+            else:
+                area[faces, c] = a
     return area
 
 
@@ -718,9 +724,10 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
             index = jit.fan_index(mesh.corners, mesh.offsets, slot if copies > 1 else slot[:0], low)
         else:
             tri, tri_face = mesh.fan_triangles()
-            if copies > 1:
-                tri = tri + slot[sizes[tri_face] - low][:, None]
-            index = tri.astype(np.uint32).reshape(-1)
+            index = tri.astype(np.uint32)  # (a copy: the mesh's cache stays as it is)
+            if copies > 1:  # (addressable: no sum wraps around)
+                index += slot.astype(np.uint32)[sizes[tri_face] - low][:, None]
+            index = index.reshape(-1)
     if jit is not None:
         edge_index = jit.edge_index(mesh.corners, mesh.offsets)
     else:
