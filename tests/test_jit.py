@@ -218,6 +218,27 @@ def test_bad_meshes_get_the_same_message_compiled(compiled):
 
 
 @pytest.mark.slow
+@pytest.mark.parametrize("text", ["C", "tI", "k4P6", "open"])
+def test_vertex_normals_in_any_block_layout_are_the_numpy_ones(compiled, text):
+    # the kernel keeps its float64 sums in the rows it returns when there are
+    # at least 2n (one block spare, or two copies): every layout, odd n and
+    # odd copies too (the sums then start a row earlier, float64-aligned)
+    m = shapes.open_disk() if text == "open" else pentanb.conway(text)
+    n = m.n_vertices
+    _jit.use_jit(False)
+    want = drawing.vertex_normals(m)
+    _jit.use_jit(True)
+    assert same_bytes(drawing.vertex_normals(m), want)
+    for copies in (1, 2, 3):
+        for spare in (0, 1):
+            rows = drawing._vertex_normals(m, copies, spare)
+            assert rows.shape == ((spare + copies) * n, 3)
+            for k in range(copies):
+                block = rows[(spare + k) * n : (spare + k + 1) * n]
+                assert same_bytes(np.ascontiguousarray(block), want), (copies, spare, k)
+
+
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [1, 2, 7, 1000])
 def test_bounds_are_numpys_min_and_max(compiled, n):
     # the view's frame check: every column's least and greatest value, a
