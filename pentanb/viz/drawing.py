@@ -540,8 +540,9 @@ class Buffers:
         point becomes one hidden point (and a degenerate triangle or
         segment on it), and these counts say how many there really are.
     normal : (P, 3) float32
-        The normal of every row: the unit normal of its face's polygon
-        (:func:`polygon_normals`), the same on every row of a face.
+        The normal of every row: its vertex's smooth normal
+        (:func:`vertex_normals`), or for a drawing without normals the unit
+        normal of its face's polygon (:func:`polygon_normals`).
     boundary_position : (max(B, 1), 2, 3) float32
         The two ends of every boundary segment (one degenerate placeholder
         when there is none).
