@@ -60,6 +60,7 @@ __all__ = [
     "loop_order",
     "vertex_normals",
     "open_dual_faces",
+    "bounds",
 ]
 
 
@@ -684,15 +685,27 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
 
 
 @jit
-def vertex_normals(vertices, corners, offsets, out):  # pragma: no cover - compiled
+def vertex_normals(vertices, corners, offsets, rows, copies):  # pragma: no cover - compiled
     # every face's vector area by Newell's formula (its corners in order,
     # summed one by one in float64), added to each of its vertices in face
-    # order, then normalised and written as float32 into every block of n
-    # rows of out ((copies * n, 3) float32: the buffer the view sends, so no
-    # copy is made of them): the numpy path's (pentanb.viz.drawing.vertex_normals)
-    # numbers; a zero sum gives (0, 0, 1)
+    # order, then normalised and written as float32 into each of the last
+    # `copies` blocks of n rows of rows ((R, 3) float32: the buffer the view
+    # sends, so no copy is made of them): the numpy path's
+    # (pentanb.viz.drawing.vertex_normals) numbers; a zero sum gives (0, 0, 1).
+    # The float64 sums live in the bytes of rows' last 2n rows when R >= 2n
+    # (no scratch of their size: fresh memory costs a page fault per 4 KiB,
+    # 4 us each here), so the last block is written from the highest vertex
+    # down: its row u (bytes 12 (n + u) of the sums) covers the sum of vertex
+    # (n + u) // 2 >= u, already read; the other blocks are copies of it
     n = vertices.shape[0]
-    total = np.zeros((n, 3))
+    size = rows.shape[0]
+    s = size - 2 * n
+    s -= s & 1  # (an even row: float64 aligned)
+    if s >= 0:
+        total = rows.reshape(-1)[3 * s : 3 * (s + 2 * n)].view(np.float64).reshape((n, 3))
+    else:
+        total = np.empty((n, 3))
+    total[:] = 0.0
     m = offsets.size - 1
     for f in range(m):
         a, b = offsets[ix(f)], offsets[ix(f + 1)]
@@ -717,8 +730,8 @@ def vertex_normals(vertices, corners, offsets, out):  # pragma: no cover - compi
             total[u, 0] += ax
             total[u, 1] += ay
             total[u, 2] += az
-    copies = out.shape[0] // max(n, 1)
-    for u in range(n):
+    last = size - n
+    for u in range(n - 1, -1, -1):
         x, y, z = total[ix(u), 0], total[ix(u), 1], total[ix(u), 2]
         length = np.sqrt(x * x + y * y + z * z)
         if length > 0.0:
@@ -969,3 +982,35 @@ def loop_order(tail, head, n):  # pragma: no cover - compiled
             i = out[ix(head[ix(i)])]
     offsets[ix(loops)] = B
     return order, offsets[: loops + 1].copy(), -1
+
+
+        row = ix(last + u)
+        rows[row, 0] = p
+        rows[row, 1] = q
+        rows[row, 2] = r
+    for k in range(1, copies):
+        first = last - k * n
+        for u in range(n):
+            for j in range(3):
+                rows[ix(first + u), j] = rows[ix(last + u), j]
+
+
+@jit
+def bounds(points, lo, hi):  # pragma: no cover - compiled
+    # the least and the greatest value of every column of points ((n, 3)
+    # float64, n >= 1) into lo and hi ((3,) float64), as numpy's min and max
+    # find them (a NaN in a column makes both NaN; of -0.0 and 0.0 either
+    # may be kept), in one pass over the rows: numpy reduces a strided
+    # column at a time, six passes over the array
+    n = points.shape[0]
+    lx, ly, lz = points[0, 0], points[0, 1], points[0, 2]
+    hx, hy, hz = lx, ly, lz
+    nx, ny, nz = False, False, False
+    for i in range(n):
+        x, y, z = points[ix(i), 0], points[ix(i), 1], points[ix(i), 2]
+        lx, hx, nx = min(lx, x), max(hx, x), nx | (x != x)
+        ly, hy, ny = min(ly, y), max(hy, y), ny | (y != y)
+        lz, hz, nz = min(lz, z), max(hz, z), nz | (z != z)
+    lo[0], hi[0] = (np.nan, np.nan) if nx else (lx, hx)
+    lo[1], hi[1] = (np.nan, np.nan) if ny else (ly, hy)
+    lo[2], hi[2] = (np.nan, np.nan) if nz else (lz, hz)

@@ -371,6 +371,57 @@ def test_open_meshes_refused_get_the_same_message_compiled(compiled, name):
 
 
 @pytest.mark.slow
+@pytest.mark.parametrize("text", ["C", "tI", "k4P6", "open"])
+def test_vertex_normals_in_any_block_layout_are_the_numpy_ones(compiled, text):
+    # the kernel keeps its float64 sums in the rows it returns when there are
+    # at least 2n (one block spare, or two copies): every layout, odd n and
+    # odd copies too (the sums then start a row earlier, float64-aligned)
+    m = shapes.open_disk() if text == "open" else pentanb.conway(text)
+    n = m.n_vertices
+    _jit.use_jit(False)
+    want = drawing.vertex_normals(m)
+    _jit.use_jit(True)
+    assert same_bytes(drawing.vertex_normals(m), want)
+    for copies in (1, 2, 3):
+        for spare in (0, 1):
+            rows = drawing._vertex_normals(m, copies, spare)
+            assert rows.shape == ((spare + copies) * n, 3)
+            for k in range(copies):
+                block = rows[(spare + k) * n : (spare + k + 1) * n]
+                assert same_bytes(np.ascontiguousarray(block), want), (copies, spare, k)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("n", [1, 2, 7, 1000])
+def test_bounds_are_numpys_min_and_max(compiled, n):
+    # the view's frame check: every column's least and greatest value, a
+    # NaN anywhere in a column making both NaN, an infinity a bound
+    rng = np.random.default_rng(n)
+    cases = []
+    for scale in (1e-300, 1.0, 1e300):
+        p = rng.standard_normal((n, 3)) * scale
+        cases.append(p)
+        for bad in (np.nan, np.inf, -np.inf):
+            q = p.copy()
+            q[rng.integers(n), rng.integers(3)] = bad
+            cases.append(q)
+    for p in cases:
+        lo, hi = np.empty(3), np.empty(3)
+        compiled.bounds(p, lo, hi)
+        want_lo = np.array([min(p[:, k].tolist()) for k in range(3)])
+        want_hi = np.array([max(p[:, k].tolist()) for k in range(3)])
+        has_nan = np.isnan(p).any(axis=0)
+        want_lo[has_nan] = want_hi[has_nan] = np.nan
+        np.testing.assert_array_equal(lo, want_lo)
+        np.testing.assert_array_equal(hi, want_hi)
+        for frame in (drawing.IDENTITY, (np.array([1e10, 0.0, 0.0]), 5)):
+            fits = drawing.frame_fits(frame, p)
+            _jit.use_jit(False)
+            assert drawing.frame_fits(frame, p) == fits
+            _jit.use_jit(True)
+
+
+@pytest.mark.slow
 def test_edge_index_is_the_meshs_edges(corpus_mesh, compiled):
     got = compiled.edge_index(corpus_mesh.corners, corpus_mesh.offsets)
     assert got.dtype == np.uint32

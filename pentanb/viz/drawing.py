@@ -217,30 +217,36 @@ def face_areas(mesh: Mesh) -> NDArray[np.float64]:
     area = np.empty((mesh.n_faces, 3))
     counts = _mesh.size_counts(mesh)
     for n, _ in counts:
-        if len(counts) == 1:
-            faces = None
-            rows = corners.astype(np.intp).reshape(-1, n)
-        else:
-            faces = np.flatnonzero(sizes == n)
-            rows = corners[offsets[faces][:, None] + np.arange(n)]
+        faces = None if len(counts) == 1 else np.flatnonzero(sizes == n)
         # (n, faces): the i-th corners of all faces side by side, contiguous
-        at = np.ascontiguousarray(rows.T)  # (a gather by a strided index is slow)
-        x, y, z = (c.take(at) for c in cols)
-        ax, ay, az = (np.zeros(len(rows)) for _ in range(3))
-        t, u = np.empty(len(rows)), np.empty(len(rows))
+        # (a gather by a strided index is slow)
+        at = np.empty((n, len(sizes) if faces is None else len(faces)), corners.dtype)
+        if faces is None:
+            at[:] = corners.reshape(-1, n).T
+        else:
+            first = offsets[faces]
+            for i in range(n):
+                np.take(corners, first + i, out=at[i])
+        k = at.shape[1]
+        ax, ay, az = (np.zeros(k) for _ in range(3))
+        t, u = np.empty(k), np.empty(k)
+        # the coordinates of two corners at a time (no (n, faces) arrays of them)
+        xi, yi, zi = start = [c.take(at[0]) for c in cols]
         for i in range(n):  # in order, corner by corner (no pairwise sums)
-            j = (i + 1) % n
-            for a, p, q in ((ax, y, z), (ay, z, x), (az, x, y)):
+            xj, yj, zj = start if i + 1 == n else [c.take(at[i + 1]) for c in cols]
+            terms = ((ax, yi, zj, zi, yj), (ay, zi, xj, xi, zj), (az, xi, yj, yi, xj))
+            for a, pi, qj, qi, pj in terms:
                 # a += p_i q_j - q_i p_j, without temporaries
-                np.multiply(p[i], q[j], out=t)
-                np.multiply(q[i], p[j], out=u)
+                np.multiply(pi, qj, out=t)
+                np.multiply(qi, pj, out=u)
                 t -= u
                 a += t
-        block = np.stack([ax, ay, az], axis=1)
-        if faces is None:
-            area = block
-        else:
-            area[faces] = block
+            xi, yi, zi = xj, yj, zj
+        for c, a in enumerate((ax, ay, az)):
+            if faces is None:
+                area[:, c] = a
+            else:
+                area[faces, c] = a
     return area
 
 
@@ -266,23 +272,28 @@ def vertex_normals(mesh: Mesh) -> NDArray[np.float32]:
     return _vertex_normals(mesh, 1)
 
 
-def _vertex_normals(mesh: Mesh, copies: int) -> NDArray[np.float32]:
-    """(copies * n, 3) float32: :func:`vertex_normals` once per block of n rows."""
+def _vertex_normals(mesh: Mesh, copies: int, spare: int = 0) -> NDArray[np.float32]:
+    """((spare + copies) * n, 3) float32: :func:`vertex_normals` in each of the
+    last ``copies`` blocks of n rows; the first ``spare`` blocks are the
+    caller's to fill (left with any content).
+
+    The buffers of a slider move are fresh memory, which costs a page fault
+    per 4 KiB on first touch: the compiled kernel keeps its float64 sums in
+    the bytes of the rows it returns when they are at least 2n, and the
+    numpy path writes its quotients straight into them.
+    """
     n = mesh.n_vertices
+    rows = np.empty(((spare + copies) * n, 3), np.float32)
     jit = _jit.kernels(len(mesh.corners))
-    if jit is not None:  # (written straight into every copy)
-        out = np.empty((copies * n, 3), np.float32)
-        jit.vertex_normals(mesh.vertices, mesh.corners, mesh.offsets, out)
-        return out
-    normal = _numpy_vertex_normals(mesh)
-    if copies == 1:
-        return normal
-    out = np.empty((copies, n, 3), np.float32)
-    out[:] = normal  # (broadcast: every copy)
-    return out.reshape(-1, 3)
+    if jit is not None:
+        jit.vertex_normals(mesh.vertices, mesh.corners, mesh.offsets, rows, copies)
+    else:
+        _numpy_vertex_normals(mesh, rows[spare * n :], copies)
+    return rows
 
 
-def _numpy_vertex_normals(mesh: Mesh) -> NDArray[np.float32]:
+def _numpy_vertex_normals(mesh: Mesh, out: NDArray[np.float32], copies: int) -> None:
+    """Write the vertex normals into every block of n rows of ``out`` ((copies * n, 3))."""
     area = face_areas(mesh)
     owner = mesh.corners
     n = mesh.n_vertices
@@ -291,13 +302,18 @@ def _numpy_vertex_normals(mesh: Mesh) -> NDArray[np.float32]:
         total[:, k] = np.bincount(
             owner, weights=np.repeat(area[:, k], mesh.face_sizes), minlength=n
         )
+    del area
     length = np.sqrt(
         total[:, 0] * total[:, 0] + total[:, 1] * total[:, 1] + total[:, 2] * total[:, 2]
     )
     flat = ~(length > 0)
-    out = total / np.where(flat, 1.0, length)[:, None]
-    out[flat] = (0.0, 0.0, 1.0)
-    return out.astype(np.float32)
+    length[flat] = 1.0
+    first = out[:n]
+    # the float64 quotients rounded to float32 as they are written (as astype would)
+    np.divide(total, length[:, None], out=first, casting="same_kind")
+    first[flat] = (0.0, 0.0, 1.0)
+    for k in range(1, copies):
+        out[k * n : (k + 1) * n] = first
 
 
 def boundary_segments(mesh: Mesh) -> NDArray[np.float64]:
@@ -471,9 +487,24 @@ def _bytes(rgb: ArrayLike) -> NDArray[np.uint8]:
     return np.rint(np.clip(np.asarray(rgb, dtype=np.float64), 0.0, 1.0) * 255).astype(np.uint8)
 
 
+def _fill(out: NDArray[np.uint8], rgb: NDArray[np.uint8]) -> None:
+    """Set every row of ``out`` ((k, 3)) to ``rgb``: the first row, then copies
+    of the rows done, doubling (no temporary; 20x np.tile's speed)."""
+    k = len(out)
+    if k:
+        out[0] = rgb
+    done = 1
+    while done < k:
+        step = min(done, k - done)
+        out[done : done + step] = out[:step]
+        done += step
+
+
 def _same_rows(rgb: NDArray[np.uint8], n: int) -> NDArray[np.uint8]:
-    """``n`` rows of the bytes ``rgb`` (a writeable array; bytes repeated, 20x np.tile's speed)."""
-    return np.frombuffer(bytearray(rgb.tobytes() * n), dtype=np.uint8).reshape(n, 3)
+    """``n`` rows of the bytes ``rgb`` (a writeable array)."""
+    out = np.empty((n, 3), np.uint8)
+    _fill(out, rgb)
+    return out
 
 
 def _rows(colors: ArrayLike | None, default: str, n: int, repeat: int) -> NDArray[np.uint8]:
@@ -509,8 +540,9 @@ class Buffers:
         point becomes one hidden point (and a degenerate triangle or
         segment on it), and these counts say how many there really are.
     normal : (P, 3) float32
-        The normal of every row: the unit normal of its face's polygon
-        (:func:`polygon_normals`), the same on every row of a face.
+        The normal of every row: its vertex's smooth normal
+        (:func:`vertex_normals`), or for a drawing without normals the unit
+        normal of its face's polygon (:func:`polygon_normals`).
     boundary_position : (max(B, 1), 2, 3) float32
         The two ends of every boundary segment (one degenerate placeholder
         when there is none).
@@ -671,18 +703,21 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
         normal = _vertex_normals(mesh, 1).take(tri.reshape(-1), axis=0)
         index = _counting(len(position), 3)
     else:
+        # the normals first: with one copy, they share a block with the
+        # vertices (the kernel's sums are kept in its bytes meanwhile)
+        if copies == 1:
+            rows = _vertex_normals(mesh, 1, spare=1)
+            position, normal = rows[:n], rows[n:]
+        else:
+            normal = _vertex_normals(mesh, copies)
+            position = np.empty((copies * n, 3), np.float32)
         # the vertices cast to float32 straight into every copy (the first
         # copy is also the edges' array): the view's arrays, writeable
-        position = np.empty((copies, n, 3), np.float32)
-        position[:] = mesh.vertices  # (broadcast: every copy)
-        position = position.reshape(-1, 3)
+        position.reshape(copies, n, 3)[:] = mesh.vertices  # (broadcast: every copy)
         v = position[:n]
-        normal = _vertex_normals(mesh, copies)
-        if copies == 1:  # one size, one copy of the vertices
-            color = _same_rows(table[present[0]], n)
-        else:
-            rows = b"".join(table[p].tobytes() * n for p in present)
-            color = np.frombuffer(bytearray(rows), dtype=np.uint8).reshape(-1, 3)
+        color = np.empty((copies * n, 3), np.uint8)
+        for k, p in enumerate(present):
+            _fill(color[k * n : (k + 1) * n], table[p])
         _addressable(len(position))
         slot = np.zeros(high - low + 1, np.int64)
         slot[present] = np.arange(copies) * n
@@ -690,9 +725,10 @@ def mesh_buffers(mesh: Mesh) -> Buffers:
             index = jit.fan_index(mesh.corners, mesh.offsets, slot if copies > 1 else slot[:0], low)
         else:
             tri, tri_face = mesh.fan_triangles()
-            if copies > 1:
-                tri = tri + slot[sizes[tri_face] - low][:, None]
-            index = tri.astype(np.uint32).reshape(-1)
+            index = tri.astype(np.uint32)  # (a copy: the mesh's cache stays as it is)
+            if copies > 1:  # (addressable: no sum wraps around)
+                index += slot.astype(np.uint32)[sizes[tri_face] - low][:, None]
+            index = index.reshape(-1)
     if jit is not None:
         edge_index = jit.edge_index(mesh.corners, mesh.offsets)
     else:
@@ -775,10 +811,23 @@ _FRAME_LIMIT = 2.0**32
 _FRAME_DETAIL = 2.0**-12
 
 
-def _bounds(points: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]] | None:
+def _bounds(
+    points: ArrayLike, signed_zeros: bool = True
+) -> tuple[NDArray[np.float64], NDArray[np.float64]] | None:
+    """(least, greatest) of every coordinate, or None for no points.
+
+    ``signed_zeros=False``: where a column holds both -0.0 and 0.0, either
+    may be returned (the optional compiled kernel, one pass over a large
+    array); a NaN or an infinity gives a NaN or an infinity all the same.
+    """
     p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     if len(p) == 0:
         return None
+    jit = None if signed_zeros else _jit.kernels(len(p))
+    if jit is not None:
+        lo, hi = np.empty(3), np.empty(3)
+        jit.bounds(np.ascontiguousarray(p), lo, hi)
+        return lo, hi
     # column by column: numpy reduces a strided column with SIMD, while
     # p.min(axis=0) walks the rows three values at a time (30-40x slower on
     # 100,000 vertices, the largest cost of a slider move); a NaN or an
@@ -869,8 +918,10 @@ def frame_fits(frame: Frame, *points: ArrayLike) -> bool:
     """
     drawn = [in_frame(p, frame) for p in points]
     # (every coordinate finite exactly when the bounds are: min and max keep
-    # a NaN, and an infinity is a bound; no pass of its own)
-    found = [b for b in (_bounds(d) for d in drawn) if b is not None]
+    # a NaN, and an infinity is a bound; no pass of its own.  The sign of a
+    # zero bound changes no answer here: the identity frame is one of
+    # magnitudes)
+    found = [b for b in (_bounds(d, signed_zeros=False) for d in drawn) if b is not None]
     if not all(np.isfinite(lo).all() and np.isfinite(hi).all() for lo, hi in found):
         return False
     frame_found = _frame_of(found)
