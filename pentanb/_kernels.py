@@ -88,9 +88,8 @@ def face_means_uniform_part(values, corners, k, out, lo, hi):  # pragma: no cove
             out[ix(f), ix(i)] = acc / k
 
 
-def face_means_uniform(values, corners, k, out=None):
-    if out is None:
-        out = np.empty((corners.size // k, values.shape[1]))
+def face_means_uniform(values, corners, k):
+    out = np.empty((corners.size // k, values.shape[1]))
     split(len(out), face_means_uniform_part, values, corners, k, out)
     return out
 
@@ -170,9 +169,8 @@ def face_means_mixed_part(values, corners, offsets, out, lo, hi):  # pragma: no 
             out[ix(f), ix(i)] = long_mean(values, corners, a, b, i)
 
 
-def face_means_mixed(values, corners, offsets, out=None):
-    if out is None:
-        out = np.empty((offsets.size - 1, values.shape[1]))
+def face_means_mixed(values, corners, offsets):
+    out = np.empty((offsets.size - 1, values.shape[1]))
     split(len(out), face_means_mixed_part, values, corners, offsets, out)
     return out
 
@@ -258,9 +256,8 @@ def start_at_max_part(ring, offsets, k, out, lo, hi):  # pragma: no cover - comp
             j += 1
 
 
-def start_at_max(ring, offsets, k, out=None):
-    if out is None:
-        out = np.empty_like(ring)
+def start_at_max(ring, offsets, k):
+    out = np.empty_like(ring)
     n = ring.size // k if offsets.size == 0 else offsets.size - 1
     split(n, start_at_max_part, ring, offsets, k, out)
     return out
@@ -632,17 +629,11 @@ def honeycomb_points(vertices, corners, head, centres, face_of):
 @jit
 def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
     # twin of every half-edge u -> w: the one half-edge w -> u, found among
-    # w's outgoing half-edges (a counting sort by tail), or -1 when there is
-    # none (a boundary half-edge); those half-edges in increasing order (int64);
-    # their number, or -1 (and empty arrays) when some half-edge has more
-    # than one partner, is a loop or leaves a vertex out of range.  On a
-    # closed mesh (no -1) these are the numpy path's twins exactly when its
-    # sorted keys pair; on an open one, with the boundary then chained into
-    # loops (which refuses a vertex two boundary half-edges leave: a directed
-    # edge used twice without its opposite), they fail exactly where
-    # boundary.pair_open does
+    # w's outgoing half-edges (a counting sort by tail); an empty array when
+    # some half-edge has no such partner or more than one, or is a loop
+    # (exactly when the numpy path's sorted keys fail to pair)
     H = tail.size
-    fail = np.empty(0, tail.dtype), np.empty(0, np.int64), -1
+    fail = np.empty(0, tail.dtype)
     if head.size == 0:  # faces of k corners: heads from the tails
         head = np.empty_like(tail)
         for h in range(H):
@@ -663,25 +654,19 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
         out_of[ix(fill[u])] = h
         fill[u] += 1
     twin = np.empty(H, tail.dtype)
-    alone = np.empty(H, np.int64)  # (pages only touched as far as written)
-    b = 0
     for h in range(H):
         u, w = tail[ix(h)], head[ix(h)]
         if u == w:
             return fail
         found = 0
-        twin[ix(h)] = -1
         for i in range(start[ix(w)], start[ix(w + 1)]):
             g = out_of[ix(i)]
             if head[ix(g)] == u:
                 twin[ix(h)] = g
                 found += 1
-        if found > 1:
+        if found != 1:
             return fail
-        if found == 0:
-            alone[ix(b)] = h
-            b += 1
-    return twin, alone[:b].copy(), b
+    return twin
 
 
 @jit
@@ -738,11 +723,36 @@ def vertex_normals(vertices, corners, offsets, rows, copies):  # pragma: no cove
             p, q, r = np.float32(x / length), np.float32(y / length), np.float32(z / length)
         else:
             p, q, r = np.float32(0.0), np.float32(0.0), np.float32(1.0)
-        for k in range(copies):
-            row = ix(u + k * n)
-            out[row, 0] = p
-            out[row, 1] = q
-            out[row, 2] = r
+        row = ix(last + u)
+        rows[row, 0] = p
+        rows[row, 1] = q
+        rows[row, 2] = r
+    for k in range(1, copies):
+        first = last - k * n
+        for u in range(n):
+            for j in range(3):
+                rows[ix(first + u), j] = rows[ix(last + u), j]
+
+
+@jit
+def bounds(points, lo, hi):  # pragma: no cover - compiled
+    # the least and the greatest value of every column of points ((n, 3)
+    # float64, n >= 1) into lo and hi ((3,) float64), as numpy's min and max
+    # find them (a NaN in a column makes both NaN; of -0.0 and 0.0 either
+    # may be kept), in one pass over the rows: numpy reduces a strided
+    # column at a time, six passes over the array
+    n = points.shape[0]
+    lx, ly, lz = points[0, 0], points[0, 1], points[0, 2]
+    hx, hy, hz = lx, ly, lz
+    nx, ny, nz = False, False, False
+    for i in range(n):
+        x, y, z = points[ix(i), 0], points[ix(i), 1], points[ix(i), 2]
+        lx, hx, nx = min(lx, x), max(hx, x), nx | (x != x)
+        ly, hy, ny = min(ly, y), max(hy, y), ny | (y != y)
+        lz, hz, nz = min(lz, z), max(hz, z), nz | (z != z)
+    lo[0], hi[0] = (np.nan, np.nan) if nx else (lx, hx)
+    lo[1], hi[1] = (np.nan, np.nan) if ny else (ly, hy)
+    lo[2], hi[2] = (np.nan, np.nan) if nz else (lz, hz)
 
 
 # Open meshes: the dual's faces
@@ -982,35 +992,3 @@ def loop_order(tail, head, n):  # pragma: no cover - compiled
             i = out[ix(head[ix(i)])]
     offsets[ix(loops)] = B
     return order, offsets[: loops + 1].copy(), -1
-
-
-        row = ix(last + u)
-        rows[row, 0] = p
-        rows[row, 1] = q
-        rows[row, 2] = r
-    for k in range(1, copies):
-        first = last - k * n
-        for u in range(n):
-            for j in range(3):
-                rows[ix(first + u), j] = rows[ix(last + u), j]
-
-
-@jit
-def bounds(points, lo, hi):  # pragma: no cover - compiled
-    # the least and the greatest value of every column of points ((n, 3)
-    # float64, n >= 1) into lo and hi ((3,) float64), as numpy's min and max
-    # find them (a NaN in a column makes both NaN; of -0.0 and 0.0 either
-    # may be kept), in one pass over the rows: numpy reduces a strided
-    # column at a time, six passes over the array
-    n = points.shape[0]
-    lx, ly, lz = points[0, 0], points[0, 1], points[0, 2]
-    hx, hy, hz = lx, ly, lz
-    nx, ny, nz = False, False, False
-    for i in range(n):
-        x, y, z = points[ix(i), 0], points[ix(i), 1], points[ix(i), 2]
-        lx, hx, nx = min(lx, x), max(hx, x), nx | (x != x)
-        ly, hy, ny = min(ly, y), max(hy, y), ny | (y != y)
-        lz, hz, nz = min(lz, z), max(hz, z), nz | (z != z)
-    lo[0], hi[0] = (np.nan, np.nan) if nx else (lx, hx)
-    lo[1], hi[1] = (np.nan, np.nan) if ny else (ly, hy)
-    lo[2], hi[2] = (np.nan, np.nan) if nz else (lz, hz)
