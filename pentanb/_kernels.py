@@ -88,8 +88,9 @@ def face_means_uniform_part(values, corners, k, out, lo, hi):  # pragma: no cove
             out[ix(f), ix(i)] = acc / k
 
 
-def face_means_uniform(values, corners, k):
-    out = np.empty((corners.size // k, values.shape[1]))
+def face_means_uniform(values, corners, k, out=None):
+    if out is None:
+        out = np.empty((corners.size // k, values.shape[1]))
     split(len(out), face_means_uniform_part, values, corners, k, out)
     return out
 
@@ -169,8 +170,9 @@ def face_means_mixed_part(values, corners, offsets, out, lo, hi):  # pragma: no 
             out[ix(f), ix(i)] = long_mean(values, corners, a, b, i)
 
 
-def face_means_mixed(values, corners, offsets):
-    out = np.empty((offsets.size - 1, values.shape[1]))
+def face_means_mixed(values, corners, offsets, out=None):
+    if out is None:
+        out = np.empty((offsets.size - 1, values.shape[1]))
     split(len(out), face_means_mixed_part, values, corners, offsets, out)
     return out
 
@@ -256,8 +258,9 @@ def start_at_max_part(ring, offsets, k, out, lo, hi):  # pragma: no cover - comp
             j += 1
 
 
-def start_at_max(ring, offsets, k):
-    out = np.empty_like(ring)
+def start_at_max(ring, offsets, k, out=None):
+    if out is None:
+        out = np.empty_like(ring)
     n = ring.size // k if offsets.size == 0 else offsets.size - 1
     split(n, start_at_max_part, ring, offsets, k, out)
     return out
@@ -629,11 +632,17 @@ def honeycomb_points(vertices, corners, head, centres, face_of):
 @jit
 def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
     # twin of every half-edge u -> w: the one half-edge w -> u, found among
-    # w's outgoing half-edges (a counting sort by tail); an empty array when
-    # some half-edge has no such partner or more than one, or is a loop
-    # (exactly when the numpy path's sorted keys fail to pair)
+    # w's outgoing half-edges (a counting sort by tail), or -1 when there is
+    # none (a boundary half-edge); those half-edges in increasing order (int64);
+    # their number, or -1 (and empty arrays) when some half-edge has more
+    # than one partner, is a loop or leaves a vertex out of range.  On a
+    # closed mesh (no -1) these are the numpy path's twins exactly when its
+    # sorted keys pair; on an open one, with the boundary then chained into
+    # loops (which refuses a vertex two boundary half-edges leave: a directed
+    # edge used twice without its opposite), they fail exactly where
+    # boundary.pair_open does
     H = tail.size
-    fail = np.empty(0, tail.dtype)
+    fail = np.empty(0, tail.dtype), np.empty(0, np.int64), -1
     if head.size == 0:  # faces of k corners: heads from the tails
         head = np.empty_like(tail)
         for h in range(H):
@@ -654,19 +663,25 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
         out_of[ix(fill[u])] = h
         fill[u] += 1
     twin = np.empty(H, tail.dtype)
+    alone = np.empty(H, np.int64)  # (pages only touched as far as written)
+    b = 0
     for h in range(H):
         u, w = tail[ix(h)], head[ix(h)]
         if u == w:
             return fail
         found = 0
+        twin[ix(h)] = -1
         for i in range(start[ix(w)], start[ix(w + 1)]):
             g = out_of[ix(i)]
             if head[ix(g)] == u:
                 twin[ix(h)] = g
                 found += 1
-        if found != 1:
+        if found > 1:
             return fail
-    return twin
+        if found == 0:
+            alone[ix(b)] = h
+            b += 1
+    return twin, alone[:b].copy(), b
 
 
 @jit
