@@ -245,7 +245,9 @@ def _open_dual_again(
     F1 = mesh.n_faces  # source's vertices
     bh1 = mesh.boundary_halfedges
     B1 = bh1.size
-    nxt = boundary_next(mesh.offsets, bh1, _mesh.uniform_size(mesh))
+    # mesh's boundary half-edges are the first one or two of their faces
+    # (see _open_dual_chain), of at least 3 sides: the next is the one after
+    nxt = bh1.astype(np.int64) + 1
     kept = corner_ids(mesh, F1 + B1, nxt)
     order = np.argsort(bh1)
     sorted_bh1 = bh1[order]
