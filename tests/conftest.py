@@ -100,6 +100,7 @@ LONG_FILES = (
     "test_browser_lab_a.py",
     "test_browser_lab_b.py",
     "test_figures.py",
+    "test_scale.py",
     "test_canonical.py",
     "test_claims.py",
 )

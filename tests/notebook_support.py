@@ -35,23 +35,24 @@ NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb")) + sorted(
     (ROOT / "tests" / "notebooks").glob("*.ipynb")
 )
 
-#: Seconds each notebook's browser test took (its run, the slider, the sweep) in
-#: a full run of the suite on 2 cores, to split the notebooks into balanced shares
-#: (:func:`browser_share`); a notebook not listed counts as the mean of these.
-#: Measure again (``--durations``) when a notebook changes much.
+#: Seconds each notebook's browser test took (its run, the slider, the sweep),
+#: the browser test files run side by side on 2 cores, to deal the notebooks into
+#: shares of about equal time (:func:`browser_share`); a notebook not listed
+#: counts as the mean of these.  Measure again (``--durations``) when a notebook
+#: changes much.
 BROWSER_SECONDS = {
-    "01_topology.ipynb": 36,
-    "02_tetrahedron_to_dodecahedron.ipynb": 27,
-    "03_cube_tilings.ipynb": 110,
-    "04_torus_hexagons.ipynb": 48,
-    "05_soccerball.ipynb": 40,
-    "06_schemes_compared.ipynb": 100,
-    "07_complex_model.ipynb": 46,
-    "08_convergence.ipynb": 60,
-    "09_continuity.ipynb": 50,
-    "10_conway.ipynb": 44,
-    "11_open_surfaces.ipynb": 40,
-    "three_widgets.ipynb": 36,
+    "01_topology.ipynb": 70,
+    "02_tetrahedron_to_dodecahedron.ipynb": 47,
+    "03_cube_tilings.ipynb": 102,
+    "04_torus_hexagons.ipynb": 55,
+    "05_soccerball.ipynb": 53,
+    "06_schemes_compared.ipynb": 89,
+    "07_complex_model.ipynb": 57,
+    "08_convergence.ipynb": 124,
+    "09_continuity.ipynb": 107,
+    "10_conway.ipynb": 60,
+    "11_open_surfaces.ipynb": 63,
+    "three_widgets.ipynb": 47,
 }
 
 #: The browser test files, each with its own JupyterLab and Chromium (so its own
