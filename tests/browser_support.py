@@ -17,6 +17,7 @@ from __future__ import annotations
 import io
 import json
 import os
+import re
 import shutil
 import socket
 import subprocess
@@ -24,6 +25,7 @@ import sys
 import tempfile
 import time
 import urllib.request
+import warnings
 from pathlib import Path
 
 import pytest
@@ -306,3 +308,322 @@ def poll(fn, timeout, interval=0.25):
         if time.monotonic() > deadline:
             return None
         time.sleep(interval)
+
+
+# -- driving a page -------------------------------------------------------------
+# The waits below poll for something the browser or the kernel must do and
+# return as soon as it is done: their limits only end a test that hangs, so
+# they are far above what a busy machine needs (a test never fails for being slow).
+
+#: Seconds a notebook may take to run its cells, and the sweep.
+RUN_TIMEOUT = 900
+#: Seconds to wait for a picture to appear or to change.
+DRAW_TIMEOUT = 180
+#: Seconds to wait for the sweep's stdout once the kernel is idle.
+SWEEP_GRACE = 180
+#: Seconds to wait for JupyterLab to start, and for a notebook page to be ready.
+START_TIMEOUT = 600
+
+
+def listen(page) -> list:
+    """The page's console messages and uncaught errors, as ``(kind, text)``, from now on."""
+    messages = []
+    page.on("console", lambda m: messages.append((m.type, m.text)))
+    page.on("pageerror", lambda e: messages.append(("pageerror", str(e))))
+    return messages
+
+
+def bad_console(messages) -> list[str]:
+    """The messages of :func:`listen` that fail a test."""
+    return [
+        f"{kind}: {text[:500]}"
+        for kind, text in messages
+        if (kind in ("error", "pageerror") and not harmless(text))
+        or any(f in text for f in FORBIDDEN_CONSOLE)
+    ]
+
+
+def wait_picture(locator, timeout=DRAW_TIMEOUT):
+    """Screenshot of an element once it is not blank (or None), and the last one taken."""
+    shots = []
+
+    def check():
+        png = locator.screenshot()
+        shots.append(png)
+        return png if nonblank(png) > 0.01 else None
+
+    return poll(check, timeout, 0.5), (shots[-1] if shots else None)
+
+
+def wait_change(locator, before, timeout=DRAW_TIMEOUT):
+    """The element's picture once it differs from ``before`` and has settled, or None."""
+
+    def check():
+        png = locator.screenshot()
+        return png if changed(before, png) > 0.0005 else None
+
+    after = poll(check, timeout, 0.5)
+    if after is None:
+        return None
+    last = [after]
+
+    def settled():
+        png = locator.screenshot()
+        same = changed(last[0], png) == 0.0
+        last[0] = png
+        return same
+
+    poll(settled, 10, 0.5)
+    return last[0]
+
+
+def move_slider(handle, target, before):
+    """One step right (left when at the maximum); the target's new picture or None."""
+    at_max = handle.get_attribute("aria-valuenow") == handle.get_attribute("aria-valuemax")
+    handle.focus()
+    handle.press("ArrowLeft" if at_max else "ArrowRight")
+    return wait_change(target, before)
+
+
+# -- the fixtures of a browser test file ------------------------------------------
+
+
+def module_fixtures(notebooks=()):
+    """The fixtures of one browser test file, each made once for the file.
+
+    Parameters
+    ----------
+    notebooks : sequence of Path
+        The notebooks the file's JupyterLab serves (none: no ``lab`` needed).
+
+    Returns
+    -------
+    browser, lab, artifacts : pytest fixtures
+        Headless Chromium; a :class:`JupyterLab` serving ``notebooks``
+        instrumented by :func:`notebook_support.instrumented`; the folder of
+        the screenshots.  Assign them to these names in the test file: each
+        file (one pytest-xdist worker) has its own Chromium and JupyterLab.
+    """
+    import notebook_support as ns
+
+    @pytest.fixture(scope="module")
+    def browser():
+        sync_playwright, path = require_browser()
+        with sync_playwright() as p:
+            b = p.chromium.launch(executable_path=path, args=CHROMIUM_FLAGS)
+            yield b
+            b.close()
+
+    @pytest.fixture(scope="module")
+    def lab(browser):
+        with JupyterLab(
+            notebooks, transform=ns.instrumented, startup_timeout=START_TIMEOUT
+        ) as server:
+            yield server
+
+    @pytest.fixture(scope="module")
+    def artifacts(tmp_path_factory):
+        path = artifact_dir(tmp_path_factory)
+        print(f"\nbrowser screenshots: {path}")
+        return path
+
+    return browser, lab, artifacts
+
+
+# -- a notebook in JupyterLab -----------------------------------------------------
+
+JS_READY = """() => {
+  const app = window.jupyterapp;
+  const w = app && app.shell.currentWidget;
+  return !!(w && w.sessionContext && w.content && w.content.widgets
+            && w.content.widgets.length && w.context && w.context.isReady);
+}"""
+
+#: Run every cell above the last one (the sweep), or only the last one.
+JS_RUN = """async (last) => {
+  const app = window.jupyterapp;
+  const w = app.shell.currentWidget;
+  await w.sessionContext.ready;
+  window.__pentanbRun = null;
+  w.content.activeCellIndex = w.content.widgets.length - 1;
+  app.commands.execute(last ? 'notebook:run-cell' : 'notebook:run-all-above').then(
+      ok => { window.__pentanbRun = {ok: ok}; },
+      err => { window.__pentanbRun = {ok: false, error: String(err)}; });
+  const k = w.sessionContext.session && w.sessionContext.session.kernel;
+  return k ? k.name : null;
+}"""
+
+JS_DONE = """() => {
+  const w = window.jupyterapp.shell.currentWidget;
+  const k = w.sessionContext.session && w.sessionContext.session.kernel;
+  return window.__pentanbRun !== null && k && k.status === 'idle';
+}"""
+
+#: Errors, cells not run (up to ``upto``), output types, and the last cell's stdout.
+JS_RESULT = """(upto) => {
+  const w = window.jupyterapp.shell.currentWidget;
+  const errors = [], missing = [], mimetypes = new Set();
+  let last = '';
+  w.content.widgets.forEach((c, i) => {
+    if (c.model.type !== 'code') return;
+    if (i < upto && c.model.sharedModel.getSource().trim() && c.model.executionCount === null)
+      missing.push(i);
+    for (const o of c.model.outputs.toJSON()) {
+      if (o.output_type === 'error')  // with the traceback's last frames, to diagnose
+        errors.push(`cell ${i}: ${o.ename}: ${o.evalue}\\n`
+                    + (o.traceback || []).slice(-6).join('\\n'));
+      for (const m of Object.keys(o.data || {})) mimetypes.add(m);
+      if (i === w.content.widgets.length - 1 && o.output_type === 'stream'
+          && o.name === 'stdout')
+        last += Array.isArray(o.text) ? o.text.join('') : o.text;
+    }
+  });
+  const tail = w.content.widgets[w.content.widgets.length - 1].model;
+  return {run: window.__pentanbRun, errors: errors, missing: missing,
+          mimetypes: [...mimetypes], cells: w.content.widgets.length, last: last,
+          tail: {count: tail.executionCount,
+                 outputs: tail.outputs.toJSON().map(o => o.output_type + ' ' + (o.name || ''))}};
+}"""
+
+JS_SHUTDOWN = """async () => {
+  const w = window.jupyterapp.shell.currentWidget;
+  if (w && w.sessionContext) await w.sessionContext.shutdown();
+}"""
+
+#: What the notebook must have shown, by output type (as tests/test_notebooks.py).
+VISUAL_MIMETYPES = ("image/png", "image/svg+xml", "application/vnd.jupyter.widget-view+json")
+
+
+def run_cells(page, last: bool, name: str) -> dict:
+    """Run the notebook's cells but the sweep (``last`` False) or the sweep alone;
+    wait until the kernel is idle; assert that no cell failed or was left out;
+    return :data:`JS_RESULT`'s facts."""
+    kernel = page.evaluate(JS_RUN, last)
+    assert kernel, f"{name}: the notebook got no kernel"
+    page.wait_for_function(JS_DONE, timeout=RUN_TIMEOUT * 1000, polling=500)
+    cells = page.evaluate(JS_RESULT, 10**6)["cells"]
+    result = page.evaluate(JS_RESULT, cells if last else cells - 1)
+    if last and not result["errors"] and "SWEEP " not in result["last"]:
+        # the kernel is idle, but its stdout may still be on its way to the
+        # page (seen twice in a busy suite: the sweep's line missing at first)
+        def arrived():
+            r = page.evaluate(JS_RESULT, cells)
+            return r if "SWEEP " in r["last"] else None
+
+        t = time.monotonic()
+        late = poll(arrived, SWEEP_GRACE)
+        result = late or page.evaluate(JS_RESULT, cells)
+        if late:  # in the warnings summary: how often, and how late
+            warnings.warn(
+                f"{name}: the sweep's line reached the page "
+                f"{time.monotonic() - t:.1f} s after the kernel went idle",
+                stacklevel=1,
+            )
+        assert late, (
+            f"{name}: the sweep's line never reached the page; its cell: {result['tail']}, "
+            f"the last cell's stdout: {result['last'][-500:]!r}"
+        )
+    errors = [re.sub(r"\x1b\[[0-9;]*m", "", e) for e in result["errors"]]  # no ANSI colours
+    assert not errors, f"{name}: cells failed:\n" + "\n".join(errors)
+    assert result["run"]["ok"], f"{name}: run failed: {result['run']}"
+    assert not result["missing"], f"{name}: cells not run: {result['missing']}"
+    return result
+
+
+def _movable_slider(cell):
+    """The first slider of a cell that is not pinned (min < max), or None."""
+    handles = cell.locator(".jp-OutputArea-output .widget-slider .noUi-handle")
+    for i in range(handles.count()):
+        h = handles.nth(i)
+        if h.get_attribute("aria-valuemin") != h.get_attribute("aria-valuemax"):
+            return h
+    return None
+
+
+def check_notebook(notebook: Path, browser, lab: JupyterLab, artifacts: Path) -> None:
+    """The browser test of one notebook (see ``tests/test_browser_lab_a.py``).
+
+    Opens ``notebook`` in ``lab`` (``?reset``), runs its cells but the sweep:
+    none fails, something is drawn, no widget fails to display, the first
+    pythreejs picture is not blank, and moving a slider changes the picture
+    beside it.  Then runs the sweep in the same kernel and checks its line
+    (:func:`notebook_support.check_sweep`), and the console.
+    """
+    import notebook_support as ns
+
+    stem = notebook.stem
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    page.set_default_timeout(START_TIMEOUT * 1000)  # (playwright's own default: 30 s)
+    messages = listen(page)
+    t0 = time.monotonic()
+    try:
+        page.goto(f"{lab.url}/lab/tree/{notebook.name}?reset")
+        page.wait_for_function(JS_READY, timeout=START_TIMEOUT * 1000)
+        result = run_cells(page, last=False, name=notebook.name)
+        page.screenshot(path=str(artifacts / f"{stem}-run.png"), full_page=True)
+        t_run = time.monotonic() - t0
+        drawn = set(result["mimetypes"]).intersection(VISUAL_MIMETYPES)
+        assert drawn, f"{notebook.name}: nothing drawn (output types {result['mimetypes']})"
+        failed = page.locator("text=Error displaying widget")
+        assert not failed.count(), f"{notebook.name}: a widget failed to display"
+
+        # every pythreejs picture shown: the first one is not blank
+        pictures = page.locator(".jupyter-threejs")
+        n_pictures = pictures.count()
+        if n_pictures:
+            renderer = page.locator(".jupyter-threejs >> visible=true").first
+            renderer.wait_for(timeout=DRAW_TIMEOUT * 1000)
+            png, last = wait_picture(renderer)
+            if last:
+                (artifacts / f"{stem}-3d.png").write_bytes(last)
+            assert png, f"{notebook.name}: the pythreejs picture stayed blank"
+
+        # move a slider: the picture beside it changes
+        moved = False
+        cells = page.locator(".jp-Cell").filter(
+            has=page.locator(".jp-OutputArea-output .widget-slider")
+        )
+        for c in range(cells.count()):
+            cell = cells.nth(c)
+            handle = _movable_slider(cell)
+            target = None
+            for selector in (
+                ".jupyter-threejs >> visible=true",
+                ".widget-output >> visible=true",  # an Output widget (ipywidgets 8)
+            ):
+                candidate = cell.locator(selector).first
+                if candidate.count():
+                    target = candidate
+                    break
+            if handle is None or target is None:
+                continue
+            target.scroll_into_view_if_needed()
+            png, _ = wait_picture(target)
+            before = png or target.screenshot()
+            after = move_slider(handle, target, before)
+            (artifacts / f"{stem}-slider.png").write_bytes(target.screenshot())
+            assert after, f"{notebook.name}: moving the slider did not change the picture"
+            moved = True
+            break
+        assert moved, f"{notebook.name}: found no slider beside a picture"
+
+        # the sweep, in the same kernel: every control to both ends
+        t_sweep = time.monotonic()
+        result = run_cells(page, last=True, name=notebook.name)
+        sweep = ns.sweep_result(result["last"])
+        summary = ns.check_sweep(notebook.name, sweep, result["last"])
+        assert n_pictures or not sweep["renderers"], (
+            f"{notebook.name}: the kernel made {sweep['renderers']} 3D views, the page shows none"
+        )
+        bad = bad_console(messages)
+        assert not bad, f"{notebook.name}: console errors: {bad}"
+        print(
+            f"\n{summary}; ran in {t_run:.1f} s, swept in {time.monotonic() - t_sweep:.1f} s, "
+            f"checked in {time.monotonic() - t0:.1f} s"
+        )
+    finally:
+        try:
+            page.evaluate(JS_SHUTDOWN)
+        except Exception:
+            pass
+        page.close()

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import sys
+from collections import Counter
 
 import pytest
 from hypothesis import HealthCheck, settings
@@ -88,3 +89,40 @@ def pytest_xdist_auto_num_workers(config) -> int:
     return (
         len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
     ) + 1
+
+
+#: The test files that take longest, longest first (measured with ``--durations``
+#: in a full run on 2 cores; each runs whole in one pytest-xdist worker).  They
+#: are started first, so that none is left to start while the others finish;
+#: every other file follows, the files with the most tests first.
+LONG_FILES = (
+    "test_docs.py",
+    "test_browser_lab_a.py",
+    "test_browser_lab_b.py",
+    "test_figures.py",
+    "test_scale.py",
+    "test_canonical.py",
+    "test_claims.py",
+)
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_collection_modifyitems(session, config, items):
+    """Order the test files as pytest-xdist should hand them out.
+
+    xdist's ``--dist loadfile`` deals whole files to the workers in the order of
+    the collection (``--no-loadscope-reorder`` in pyproject.toml: its own order,
+    most tests first, would start the browser and docs files, few tests but
+    minutes each, last): :data:`LONG_FILES` first, then the other files by
+    their number of tests, most first.  The tests of a file keep their order.
+    """
+    counts = Counter(item.nodeid.split("::")[0] for item in items)
+
+    def rank(path: str):
+        name = path.rsplit("/", 1)[-1]
+        if name in LONG_FILES:
+            return (0, LONG_FILES.index(name), path)
+        return (1, -counts[path], path)
+
+    order = {path: rank(path) for path in counts}
+    items.sort(key=lambda item: order[item.nodeid.split("::")[0]])

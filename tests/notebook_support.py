@@ -16,9 +16,10 @@ added:
   turn is swept once an earlier drop-down enables it.  It prints one line,
   ``SWEEP {json}``, read by :func:`sweep_result`.
 
-Who executes: ``tests/test_browser.py`` (in JupyterLab, headless Chromium)
-when it is selected and a browser is available, else
-``tests/test_notebooks.py`` (nbclient); :func:`executed_by_browser` decides.
+Who executes: ``tests/test_browser_lab_a.py`` or ``tests/test_browser_lab_b.py``
+(in JupyterLab, headless Chromium; :func:`browser_share` says which) when it is
+selected and a browser is available, else ``tests/test_notebooks.py``
+(nbclient); :func:`executed_by_browser` decides.
 """
 
 from __future__ import annotations
@@ -33,6 +34,62 @@ ROOT = Path(__file__).resolve().parent.parent
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb")) + sorted(
     (ROOT / "tests" / "notebooks").glob("*.ipynb")
 )
+
+#: Seconds each notebook's browser test took (its run, the slider, the sweep),
+#: the browser test files run side by side on 2 cores, to deal the notebooks into
+#: shares of about equal time (:func:`browser_share`); a notebook not listed
+#: counts as the mean of these.  Measure again (``--durations``) when a notebook
+#: changes much.
+BROWSER_SECONDS = {
+    "01_topology.ipynb": 70,
+    "02_tetrahedron_to_dodecahedron.ipynb": 47,
+    "03_cube_tilings.ipynb": 102,
+    "04_torus_hexagons.ipynb": 55,
+    "05_soccerball.ipynb": 53,
+    "06_schemes_compared.ipynb": 89,
+    "07_complex_model.ipynb": 57,
+    "08_convergence.ipynb": 124,
+    "09_continuity.ipynb": 107,
+    "10_conway.ipynb": 60,
+    "11_open_surfaces.ipynb": 63,
+    "three_widgets.ipynb": 47,
+}
+
+#: The browser test files, each with its own JupyterLab and Chromium (so its own
+#: pytest-xdist worker): ``tests/test_browser_lab_{a,b}.py`` run share 0 and 1 of
+#: :func:`browser_share`.
+BROWSER_FILES = ("test_browser_lab_a.py", "test_browser_lab_b.py")
+
+
+def browser_share(index: int, shares: int = len(BROWSER_FILES)) -> list[Path]:
+    """The notebooks of one browser test file: :data:`NOTEBOOKS` dealt into
+    ``shares`` lists of about equal :data:`BROWSER_SECONDS`, the longest first,
+    each to the share with the fewest seconds so far (ties: the lower index).
+
+    Parameters
+    ----------
+    index : int
+        Which share, ``0 <= index < shares``.
+    shares : int
+        How many.
+
+    Returns
+    -------
+    list of Path
+        That share's notebooks, in :data:`NOTEBOOKS` order.
+    """
+    if not 0 <= index < shares:
+        raise ValueError(f"share {index} of {shares}")
+    mean = sum(BROWSER_SECONDS.values()) / len(BROWSER_SECONDS)
+    cost = {p: BROWSER_SECONDS.get(p.name, mean) for p in NOTEBOOKS}
+    loads = [0.0] * shares
+    dealt: list[list[Path]] = [[] for _ in range(shares)]
+    for p in sorted(NOTEBOOKS, key=lambda p: (-cost[p], p.name)):
+        k = loads.index(min(loads))
+        loads[k] += cost[p]
+        dealt[k].append(p)
+    return [p for p in NOTEBOOKS if p in dealt[index]]
+
 
 #: Largest mesh (faces) a notebook may build, at any step, with any control anywhere.
 MAX_FACES = 100_000
@@ -180,7 +237,7 @@ def browser_available() -> bool:
     return any(c and os.path.isfile(c) and os.access(c, os.X_OK) for c in candidates)
 
 
-#: The browser test that executes a notebook (``test_browser.py``), by its name.
+#: The browser test that executes a notebook (in :data:`BROWSER_FILES`), by its name.
 BROWSER_TEST = "test_notebook_runs_and_draws_in_jupyterlab"
 
 
@@ -193,7 +250,7 @@ def executed_by_browser(session, path: Path) -> bool:
     """
     wanted = f"{BROWSER_TEST}[{path.name}]"
     selected = any(
-        item.name == wanted and item.nodeid.split("::")[0].endswith("test_browser.py")
+        item.name == wanted and Path(item.nodeid.split("::")[0]).name in BROWSER_FILES
         for item in session.items
     )
     return selected and browser_available()
