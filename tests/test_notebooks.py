@@ -9,9 +9,10 @@ accident), in the notebook's folder.  A cell that raises fails the test, so
 does a mesh of more than 100,000 faces built by anything, a control the
 sweep could not move, or a notebook that draws nothing.
 
-When ``tests/test_browser.py`` executes a notebook in JupyterLab in the same
-run, it is that run's one execution and the test here is skipped (saying
-so); ``pytest -m "not browser"`` executes them all here.
+When the browser tests (``tests/test_browser_lab_a.py``, ``_b.py``) execute
+a notebook in JupyterLab in the same run, it is that run's one execution
+and the test here is skipped (saying so); ``pytest -m "not browser"``
+executes them all here.
 
 The committed files are the notebooks' source: they must carry no outputs
 and stay small.  (``ruff check`` and ``ruff format --check`` lint them.)
@@ -165,7 +166,7 @@ def test_notebook_runs_and_every_control_moves(path: Path, kernel_dir: str, requ
     import nbformat
 
     if ns.executed_by_browser(request.session, path):
-        pytest.skip(f"{path.name} is executed once, in JupyterLab, by tests/test_browser.py")
+        pytest.skip(f"{path.name} is executed once, in JupyterLab, by the browser tests")
     start = time.perf_counter()
     try:
         nb = execute(path, kernel_dir, ns.instrumented(nbformat.read(path, as_version=4)))
