@@ -527,8 +527,9 @@ def boundary_corners(mesh: Mesh, nxt: np.ndarray | None = None) -> np.ndarray:
 def corner_ids(mesh: Mesh, first: int, nxt: np.ndarray | None = None) -> np.ndarray:
     """(n,) int: the output vertex keeping every corner (numbered from ``first``
     in vertex order), -1 at every other vertex (``nxt``: see :func:`boundary_corners`)."""
-    ids = np.full(mesh.n_vertices, -1, dtype=np.int64)
     at = boundary_corners(mesh, nxt)
+    wide = first + at.size >= np.iinfo(np.int32).max
+    ids = np.full(mesh.n_vertices, -1, dtype=np.int64 if wide else np.int32)
     ids[at] = np.arange(first, first + at.size)
     return ids
 

@@ -285,7 +285,7 @@ def _open_dual_again(
     start_at_max(source_corners, None if k else offsets_in, k, corners[:H])
     corners[H : H + 4 * B] = quads.reshape(-1)
     corners[H + 4 * B :] = ends_flat
-    offsets = np.empty(F + B + two.size + 1, dtype=np.int64)
+    offsets = np.empty(F + B + two.size + 1, dtype=dt)
     offsets[: F + 1] = offsets_in
     offsets[F + 1 : F + B + 1] = H + 4 * np.arange(1, B + 1)
     offsets[F + B + 1 :] = H + 4 * B + np.cumsum(3 + (still >= 0))
