@@ -25,7 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .. import _jit
-from .halfedge import head_of, heads_at, in_parts, pair_twins
+from .halfedge import head_of, heads_at, in_parts, key_bits, pair_twins
 
 __all__ = [
     "boundary_edges",
@@ -159,10 +159,7 @@ def pair_open(tail: np.ndarray, head: np.ndarray, n: int) -> np.ndarray | None:
         return None
     twin = np.full(H, -1, dtype=tail.dtype)
     n = max(int(n), 1)
-    index_bits = max(int(H - 1).bit_length(), 1)
-    vertex_bits = max(int(n - 1).bit_length(), 1)
-    # a key ((lo * n + hi) * 2 + flip) << index_bits with lo < 2**low_bits is below 2**63
-    low_bits = 62 - index_bits - int(n).bit_length()
+    index_bits, vertex_bits, low_bits = key_bits(H, n)
     if low_bits >= vertex_bits:
         return twin if _pair_open_part(tail, head, n, index_bits, None, None, twin) else None
     parts = vertex_bits - max(low_bits, 0)

@@ -156,10 +156,7 @@ def pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) ->
         got, _, alone = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
         return got if alone == 0 else None
     twin = np.empty(H, dtype=tail.dtype)
-    index_bits = max(int(H - 1).bit_length(), 1)
-    vertex_bits = max(int(n - 1).bit_length(), 1)
-    # a key (lo * n + hi) * 2 + flip with lo < 2**low_bits is below 2**(63 - index_bits)
-    low_bits = 62 - index_bits - int(n).bit_length()
+    index_bits, vertex_bits, low_bits = key_bits(H, n)
     if low_bits >= vertex_bits:
         return twin if _pair_part(tail, head, n, index_bits, None, None, twin, k) else None
     if head is None:
@@ -176,6 +173,19 @@ def pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) ->
         tail.dtype,
     )
     return twin if ok else None
+
+
+def key_bits(H: int, n: int) -> tuple[int, int, int]:
+    """The bits of the packed keys that pair H half-edges on n vertices.
+
+    Returns ``(index_bits, vertex_bits, low_bits)``: a key ``((lo * n + hi)
+    * 2 + flip) << index_bits | h`` stays below ``2**63`` while ``lo <
+    2**low_bits``; when ``low_bits < vertex_bits`` the half-edges are paired
+    part by part (:func:`in_parts`).
+    """
+    index_bits = max(int(H - 1).bit_length(), 1)
+    vertex_bits = max(int(n - 1).bit_length(), 1)
+    return index_bits, vertex_bits, 62 - index_bits - int(n).bit_length()
 
 
 def in_parts(tail, head, low_bits: int, parts: int, pair, dtype=None) -> bool:
