@@ -91,6 +91,40 @@ def pytest_xdist_auto_num_workers(config) -> int:
     ) + 1
 
 
+def pytest_sessionstart(session):
+    """Before pytest-xdist starts its workers: the compiled kernels built once.
+
+    With numba installed and the kernels on, two processes run
+    ``tests/warm_kernels.py`` (half the schemes each), which compiles the
+    kernels into numba's disk cache for the argument types a run gives them.
+    The workers and the notebooks' kernels then load them, instead of each
+    compiling the same kernels side by side on a fresh clone (about a
+    minute of the run on 2 cores).  With a warm cache this takes a few
+    seconds.  A failure there is left to the tests to find (they run the same
+    code).  Not in a worker, and not without workers (``-n 0``).
+    """
+    import subprocess
+
+    from pentanb import _jit
+
+    config = session.config
+    if hasattr(config, "workerinput") or not getattr(config.option, "numprocesses", None):
+        return
+    if not _jit.available() or not _jit.enabled():
+        return
+    script = os.path.join(os.path.dirname(__file__), "warm_kernels.py")
+    runs = [
+        subprocess.Popen(
+            [sys.executable, script, str(part), "2"],
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+        )
+        for part in range(2)
+    ]
+    for run in runs:
+        run.wait()
+
+
 #: The test files that take longest, longest first (measured with ``--durations``
 #: in a full run on 2 cores; each runs whole in one pytest-xdist worker).  They
 #: are started first, so that none is left to start while the others finish;

@@ -85,20 +85,46 @@ FLAT = ("fig06", "fig10")
 
 
 # ---------------------------------------------------------------------- the command
+#: What the run of :func:`figures_run` measured and drew: the claims
+#: :func:`pentanb.figures.check_all` returned to the command, and every Figure it
+#: saved, by name.  The tests of the claims and of the drawn figures read these
+#: (the command's own results) instead of measuring and drawing everything again.
+COMMAND: dict = {"claims": None, "figures": {}}
+
+
 @pytest.fixture(scope="session")
 def figures_run(tmp_path_factory):
-    """``python -m pentanb figures --out TMP`` run once (in process): (status, report, dir)."""
+    """``python -m pentanb figures --out TMP`` run once (in process): (status, report, dir).
+
+    :data:`COMMAND` keeps what it measured and drew (``check_all`` and
+    ``save_figure`` are wrapped for the run, then put back).
+    """
     out = tmp_path_factory.mktemp("figures")
     buf, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(buf), contextlib.redirect_stderr(err):
-        status = main(["figures", "--out", str(out)])
+    check_all, save_figure = figures.check_all, vz.save_figure
+
+    def measured(*args, **kwargs):
+        COMMAND["claims"] = check_all(*args, **kwargs)
+        return COMMAND["claims"]
+
+    def saved(fig, path, *args, **kwargs):
+        COMMAND["figures"][Path(path).stem] = fig
+        return save_figure(fig, path, *args, **kwargs)
+
+    figures.check_all, vz.save_figure = measured, saved
+    try:
+        with contextlib.redirect_stdout(buf), contextlib.redirect_stderr(err):
+            status = main(["figures", "--out", str(out)])
+    finally:
+        figures.check_all, vz.save_figure = check_all, save_figure
     return status, buf.getvalue(), err.getvalue(), out
 
 
 @pytest.fixture(scope="session")
-def drawn():
-    """Every figure drawn once: {name: Figure}."""
-    return {name: spec.draw() for name, spec in figures.FIGURES.items()}
+def drawn(figures_run):
+    """Every figure, as the command drew it: {name: Figure}."""
+    assert set(COMMAND["figures"]) == set(figures.FIGURES), sorted(COMMAND["figures"])
+    return dict(COMMAND["figures"])
 
 
 @pytest.mark.slow
@@ -433,7 +459,10 @@ SLOW_CLAIMS = ("lateral", "convergence", "spectra", "characteristic_maps", "open
     ],
 )
 def test_claims_are_as_recorded(name):
-    claims = figures.claims(name)
+    # as the figures command measured them, when it ran in this session (the
+    # full suite); measured here otherwise (the fast selection)
+    done = COMMAND["claims"]
+    claims = done[name] if done is not None else figures.claims(name)
     assert claims, f"{name} checks no claim"
     for c in claims:
         assert isinstance(c, figures.Claim)
