@@ -61,6 +61,8 @@ __all__ = [
     "vertex_normals",
     "open_dual_faces",
     "bounds",
+    "pentagonalized_open_rings",
+    "preserved_open_rings",
 ]
 
 
@@ -823,8 +825,6 @@ def open_dual_faces(ring, ring_off, H, k, face, enter, keep, leave, total, dtype
 # ``hole`` holds the output's hole half-edge along every piece of the
 # input's boundary half-edge j (pentagonalization: 3 a boundary half-edge,
 # pentagon preservation: 2), and the offsets are written with the rings.
-
-__all__ += ["pentagonalized_open_rings", "preserved_open_rings"]
 
 
 @jit
