@@ -136,27 +136,58 @@ LONG_FILES = (
     "test_figures.py",
     "test_scale.py",
     "test_canonical.py",
-    "test_claims.py",
 )
+
+#: Files that run in the worker of another file (every other file runs whole in
+#: one worker): ``test_claims.py`` feeds wrong inputs to the studies that
+#: ``test_figures.py``'s run of the figures command measures (the continuity
+#: table, the scale study...), which are computed once per process, so the two
+#: files share them.
+SAME_WORKER = {"test_claims.py": "test_figures.py"}
+
+
+def pytest_xdist_make_scheduler(config, log):
+    """pytest-xdist's ``--dist loadfile``, with the files of :data:`SAME_WORKER` joined.
+
+    A test file is dealt whole to one worker, in the order of the collection
+    (:func:`pytest_collection_modifyitems`); a file of :data:`SAME_WORKER`
+    goes with its partner.  (pytest-xdist's ``xdist_group`` marks would do
+    this, but their group names do not reach the scheduler under pytest 9.2.)
+    """
+    if config.getvalue("dist") != "loadfile":
+        return None
+    from xdist.scheduler import LoadFileScheduling
+
+    class Scheduling(LoadFileScheduling):
+        def _split_scope(self, nodeid: str) -> str:
+            path = nodeid.split("::", 1)[0]
+            name = path.rsplit("/", 1)[-1]
+            return path[: len(path) - len(name)] + SAME_WORKER.get(name, name)
+
+    return Scheduling(config, log)
 
 
 @pytest.hookimpl(trylast=True)
 def pytest_collection_modifyitems(session, config, items):
     """Order the test files as pytest-xdist should hand them out.
 
-    xdist's ``--dist loadfile`` deals whole files to the workers in the order of
-    the collection (``--no-loadscope-reorder`` in pyproject.toml: its own order,
-    most tests first, would start the browser and docs files, few tests but
-    minutes each, last): :data:`LONG_FILES` first, then the other files by
-    their number of tests, most first.  The tests of a file keep their order.
+    xdist's ``--dist loadfile`` deals whole files to the workers (see
+    :func:`pytest_xdist_make_scheduler`) in the order of the collection
+    (``--no-loadscope-reorder`` in pyproject.toml: its own order, most tests
+    first, would start the browser and docs files, few tests but minutes each,
+    last): :data:`LONG_FILES` first, then the other files by their number of
+    tests, most first; a file of :data:`SAME_WORKER` right after its partner.
+    The tests of a file keep their order.
     """
     counts = Counter(item.nodeid.split("::")[0] for item in items)
 
     def rank(path: str):
         name = path.rsplit("/", 1)[-1]
-        if name in LONG_FILES:
-            return (0, LONG_FILES.index(name), path)
-        return (1, -counts[path], path)
+        group = SAME_WORKER.get(name, name)
+        partner = path[: -len(name)] + group
+        if group in LONG_FILES:
+            return (0, LONG_FILES.index(group), 0, group != name, path)
+        return (1, -counts.get(partner, counts[path]), partner, group != name, path)
 
     order = {path: rank(path) for path in counts}
     items.sort(key=lambda item: order[item.nodeid.split("::")[0]])
