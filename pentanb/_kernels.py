@@ -30,6 +30,28 @@ def ix(i):  # pragma: no cover - compiled
     return numba.uint64(i)
 
 
+@inline
+def quo(h, k):  # pragma: no cover - compiled
+    # h // k for h >= 0 and k > 0: the usual face sizes as constants, which LLVM
+    # turns into a multiply and shift (a division by a variable k is an idiv,
+    # five times slower over a mesh's half-edges)
+    if k == 4:
+        return ix(h) // numba.uint64(4)
+    if k == 5:
+        return ix(h) // numba.uint64(5)
+    if k == 3:
+        return ix(h) // numba.uint64(3)
+    if k == 6:
+        return ix(h) // numba.uint64(6)
+    return ix(h) // ix(k)
+
+
+@inline
+def rem(h, k):  # pragma: no cover - compiled
+    # h % k for h >= 0 and k > 0 (see quo)
+    return h - quo(h, k) * k
+
+
 def split(n, kernel, *args):
     """Run ``kernel(*args, lo, hi)`` over all of ``range(n)``, on the calling thread."""
     kernel(*args, 0, n)
@@ -648,7 +670,7 @@ def pair_twins(tail, head, k, n):  # pragma: no cover - compiled
     if head.size == 0:  # faces of k corners: heads from the tails
         head = np.empty_like(tail)
         for h in range(H):
-            head[ix(h)] = tail[ix(h + 1)] if (h + 1) % k else tail[ix(h + 1 - k)]
+            head[ix(h)] = tail[ix(h + 1)] if rem(h + 1, k) else tail[ix(h + 1 - k)]
     start = np.zeros(n + 1, np.int64)
     for h in range(H):
         u = tail[ix(h)]
@@ -801,7 +823,7 @@ def open_dual_faces_part(
             a += 1
         if k > 0:
             for i in range(a, b):
-                out[ix(p)] = ring[ix(i)] // k
+                out[ix(p)] = quo(ring[ix(i)], k)
                 p += 1
         else:
             for i in range(a, b):
@@ -961,7 +983,7 @@ def open_rings(twin, tail, k, prv, after, hole_tail, ring, ring_off):  # pragma:
             if cur >= H:
                 cur = after[ix(cur - H)]
             elif k:
-                cur = twin[ix(cur - 1 if cur % k else cur + k - 1)]
+                cur = twin[ix(cur - 1 if rem(cur, k) else cur + k - 1)]
             else:
                 cur = twin[ix(prv[ix(cur)])]
     return ok
