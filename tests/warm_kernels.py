@@ -68,6 +68,7 @@ def warm(part: int = 0, parts: int = 1) -> None:
             if name == names[0]:
                 drawing.mesh_buffers(out)
                 drawing.vertex_normals(out)
+                drawing.frame_fits(drawing.IDENTITY, out.vertices)
 
 
 if __name__ == "__main__":
