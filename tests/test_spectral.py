@@ -578,6 +578,26 @@ def test_threshold_fails_on_four_duals():
     assert th.status == "never" and th.value is None
 
 
+def test_a_grid_asked_for_again_gives_the_same_moduli_as_a_new_family():
+    grid = np.linspace(0.005, 0.995, 41)
+    fam = scale_family("face", 5, 2)
+    first = fam.moduli_grid(grid)
+    fam.moduli(0.3)  # one scale between: the grid is still known
+    again = fam.moduli_grid(grid.copy())
+    new = scale_family("face", 5, 2).moduli_grid(grid)
+    for a, b, c in zip(first, again, new):
+        assert a is not b  # a copy: the caller may write into it
+        np.testing.assert_array_equal(a, c)
+        np.testing.assert_array_equal(b, c)
+    first[0][:] = -1.0
+    np.testing.assert_array_equal(fam.moduli_grid(grid)[0], new[0])
+    other = grid[::2]
+    np.testing.assert_array_equal(fam.moduli_grid(other)[0], new[0][::2])
+    np.testing.assert_array_equal(
+        fam.standard_grid(grid), scale_family("face", 5, 2).standard_grid(grid)
+    )
+
+
 def test_scale_family_is_affine_in_the_scale():
     fam = scale_family("vertex", 4, 2)
     sp = local_spectrum("preserve_pentagons", "vertex", 4, scale=0.6)

@@ -2341,6 +2341,8 @@ class ScaleFamily:
     perm: list[int] | None
     _exact_pieces: tuple | None = field(default=None, repr=False)
     _blocks: tuple | None = field(default=None, repr=False)
+    # the last grid of several scales given to moduli_grid, with its answer
+    _grid: tuple | None = field(default=None, repr=False, compare=False)
 
     def exact_matrix(self, s) -> list[list[Fraction]]:
         """``A(s)``, one step, exactly.
@@ -2394,6 +2396,9 @@ class ScaleFamily:
     def moduli_grid(self, scales) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
         """:meth:`moduli` at every scale of ``scales`` at once.
 
+        The answer for the last grid of several scales is kept: the same grid
+        again (a plot redrawn as a slider moves) costs a copy.
+
         Parameters
         ----------
         scales : (g,) float array
@@ -2405,6 +2410,9 @@ class ScaleFamily:
         modes : (g, n) int ndarray
         """
         s = np.asarray(scales, dtype=np.float64)
+        last = self._grid  # a plot's grid, asked for again at every move of a slider
+        if last is not None and last[0].shape == s.shape and np.array_equal(last[0], s):
+            return last[1].copy(), last[2].copy()
         if self._blocks is None:
             perm = None if self.perm is None else np.asarray(self.perm, dtype=np.int64)
             b0 = _fourier_blocks(self.base, perm, self.size) if perm is not None else None
@@ -2424,7 +2432,12 @@ class ScaleFamily:
         p = ctx.steps_per_match if ctx is not None else 1
         m = np.abs(lam) ** (1.0 / p)
         order = np.argsort(-np.round(m, 12), axis=1, kind="stable")
-        return np.take_along_axis(m, order, axis=1), np.take_along_axis(mode, order, axis=1)
+        moduli = np.take_along_axis(m, order, axis=1)
+        sorted_modes = np.take_along_axis(mode, order, axis=1)
+        if s.size > 1:  # (one scale: moduli(s), cheap; the grid stays)
+            self._grid = (s.copy(), moduli, sorted_modes)
+            return moduli.copy(), sorted_modes.copy()
+        return moduli, sorted_modes
 
     def standard(self, s: float) -> bool:
         """Reif's standard setting at scale ``s``, in floating point (:data:`TOL`).
