@@ -1,6 +1,7 @@
 """Helpers for the browser tests: headless Chromium, a JupyterLab server, pixels.
 
-Used by ``tests/test_browser.py``; no pytest plugin, no conftest.
+Used by ``tests/test_browser.py``, ``tests/test_browser_lab_{a,b}.py`` and
+``tests/test_docs.py``; no pytest plugin, no conftest.
 
 * :func:`require_browser` finds Debian's Chromium (``/usr/bin/chromium``, or
   ``$PENTANB_CHROMIUM``) and Python's playwright, and skips the test with a
@@ -9,6 +10,9 @@ Used by ``tests/test_browser.py``; no pytest plugin, no conftest.
 * :class:`JupyterLab` runs ``jupyter lab`` on 127.0.0.1 on a free port, with
   no token, in a scratch folder with its own config, data, settings and
   workspaces (a ``python3`` kernel spec for the running Python), and stops it.
+* :class:`LabPage` keeps one page of that JupyterLab open in Chromium (the
+  application loaded once) and opens notebooks in it in turn;
+  :func:`check_notebook` is the browser test of one notebook.
 * :func:`nonblank` and :func:`changed` compare screenshots.
 """
 
@@ -559,6 +563,10 @@ def run_cells(page, last: bool, name: str) -> dict:
     return result
 
 
+#: The size of the JupyterLab page, in CSS pixels.
+VIEWPORT = {"width": 1400, "height": 1000}
+
+
 class LabPage:
     """One JupyterLab page in Chromium, in which notebooks are opened in turn.
 
@@ -583,7 +591,7 @@ class LabPage:
         self.messages: list = []
 
     def _load(self):
-        page = self.browser.new_page(viewport={"width": 1400, "height": 1000})
+        page = self.browser.new_page(viewport=VIEWPORT)
         page.set_default_timeout(START_TIMEOUT * 1000)  # (playwright's own default: 30 s)
         self.messages = listen(page)
         self.page = page
@@ -705,7 +713,7 @@ def check_notebook(notebook: Path, lab_page: LabPage, artifacts: Path) -> None:
             png, _ = wait_picture(target)
             before = png or target.screenshot()
             after = move_slider(handle, target, before)
-            (artifacts / f"{stem}-slider.png").write_bytes(target.screenshot())
+            (artifacts / f"{stem}-slider.png").write_bytes(after or target.screenshot())
             assert after, f"{notebook.name}: moving the slider did not change the picture"
             moved = True
             break

@@ -6,15 +6,19 @@ widget notebook of ``tests/notebooks/``) are split between this file and
 (about equal measured times): each file has its own JupyterLab and Chromium,
 so the two run side by side in two pytest-xdist workers.
 
-Every notebook is opened in JupyterLab (``?reset``) with the face guard
-added first and the control sweep last (see :mod:`notebook_support`).  Its
+The file's notebooks are opened in turn in one JupyterLab page (the
+application loaded once, ``?reset``; see :class:`browser_support.LabPage`),
+each with the face guard added first and the control sweep last (see
+:mod:`notebook_support`), in a tab of its own; after its checks its kernel is
+shut down and its tab closed (after a failure the page is loaded again).  Its
 own cells are run: none may fail, no widget may fail to display, a pythreejs
 picture must not be blank, and moving a slider must change the picture next
 to it.  Then the sweep cell moves every control to both ends in the same
 kernel.  This is the notebook's one execution of the run
 (``tests/test_notebooks.py`` skips the notebooks executed here).  The
-console must hold no error but the known harmless ones
-(:data:`browser_support.HARMLESS_CONSOLE`); see :func:`browser_support.check_notebook`.
+console messages logged since the notebook was opened must hold no error but
+the known harmless ones (:data:`browser_support.HARMLESS_CONSOLE`); see
+:func:`browser_support.check_notebook`.
 
 Needs Debian's ``chromium`` and Python's ``playwright`` (run
 ``.ci/browser-setup.sh``); without them the tests skip with a message, except
