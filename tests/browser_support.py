@@ -573,9 +573,9 @@ class LabPage:
     The application is loaded once (``/lab?reset``, every tab closed) and
     kept: :meth:`open` opens a notebook in a tab of its own and starts its
     kernel; :meth:`close_notebook` shuts the kernel down and closes the tab,
-    so the next notebook starts in an empty shell.  After a failure,
-    :meth:`discard` closes the page and the next :meth:`open` loads the
-    application again.
+    so the next notebook starts in a shell with no other notebook (JupyterLab
+    shows its launcher when no tab is left).  After a failure, :meth:`discard`
+    closes the page and the next :meth:`open` loads the application again.
 
     Parameters
     ----------
@@ -587,7 +587,8 @@ class LabPage:
         self.browser = browser
         self.lab = lab
         self.page = None
-        #: The page's console messages since the last :meth:`open` (see :func:`listen`).
+        #: The page's console messages (see :func:`listen`) since the last
+        #: :meth:`open`, or since the page was loaded if it loaded for it.
         self.messages: list = []
 
     def _load(self):
@@ -603,11 +604,13 @@ class LabPage:
 
     def open(self, name: str):
         """Open the notebook ``name`` and wait until it is the current widget,
-        its file read; the console messages start afresh.  Returns the page and
+        its file read; the console messages start afresh (a page loaded for
+        this notebook: with the messages of its loading).  Returns the page and
         a locator of the notebook's panel."""
         if self.page is None:
             self._load()
-        self.messages.clear()
+        else:
+            self.messages.clear()
         widget = self.page.evaluate(JS_OPEN, name)
         self.page.wait_for_function(JS_READY, arg=name, timeout=START_TIMEOUT * 1000, polling=250)
         return self.page, self.page.locator(f"[id='{widget}']")
