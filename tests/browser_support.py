@@ -663,7 +663,8 @@ def check_notebook(notebook: Path, lab_page: LabPage, artifacts: Path) -> None:
     picture is not blank, and moving a slider changes the picture beside it.
     Then runs the sweep in the same kernel and checks its line
     (:func:`notebook_support.check_sweep`), and the console messages logged
-    since the notebook was opened.  Last, shuts its kernel down and closes its
+    since the notebook was opened (and while the page loaded, if it loaded for
+    this notebook).  Last, shuts its kernel down and closes its
     tab; after a failure, the page is closed (the next notebook loads the
     application again).
     """
