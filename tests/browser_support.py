@@ -1,6 +1,7 @@
 """Helpers for the browser tests: headless Chromium, a JupyterLab server, pixels.
 
-Used by ``tests/test_browser.py``; no pytest plugin, no conftest.
+Used by ``tests/test_browser.py``, ``tests/test_browser_lab_{a,b}.py`` and
+``tests/test_docs.py``; no pytest plugin, no conftest.
 
 * :func:`require_browser` finds Debian's Chromium (``/usr/bin/chromium``, or
   ``$PENTANB_CHROMIUM``) and Python's playwright, and skips the test with a
@@ -9,6 +10,9 @@ Used by ``tests/test_browser.py``; no pytest plugin, no conftest.
 * :class:`JupyterLab` runs ``jupyter lab`` on 127.0.0.1 on a free port, with
   no token, in a scratch folder with its own config, data, settings and
   workspaces (a ``python3`` kernel spec for the running Python), and stops it.
+* :class:`LabPage` keeps one page of that JupyterLab open in Chromium (the
+  application loaded once) and opens notebooks in it in turn;
+  :func:`check_notebook` is the browser test of one notebook.
 * :func:`nonblank` and :func:`changed` compare screenshots.
 """
 
@@ -398,11 +402,13 @@ def module_fixtures(notebooks=()):
 
     Returns
     -------
-    browser, lab, artifacts : pytest fixtures
+    browser, lab, lab_page, artifacts : pytest fixtures
         Headless Chromium; a :class:`JupyterLab` serving ``notebooks``
-        instrumented by :func:`notebook_support.instrumented`; the folder of
-        the screenshots.  Assign them to these names in the test file: each
-        file (one pytest-xdist worker) has its own Chromium and JupyterLab.
+        instrumented by :func:`notebook_support.instrumented`; a
+        :class:`LabPage` of that JupyterLab in that Chromium (the application
+        loaded once, the notebooks opened in it in turn); the folder of the
+        screenshots.  Assign them to these names in the test file: each file
+        (one pytest-xdist worker) has its own Chromium and JupyterLab.
     """
     import notebook_support as ns
 
@@ -422,24 +428,45 @@ def module_fixtures(notebooks=()):
             yield server
 
     @pytest.fixture(scope="module")
+    def lab_page(browser, lab):
+        page = LabPage(browser, lab)
+        yield page
+        page.close()
+
+    @pytest.fixture(scope="module")
     def artifacts(tmp_path_factory):
         path = artifact_dir(tmp_path_factory)
         print(f"\nbrowser screenshots: {path}")
         return path
 
-    return browser, lab, artifacts
+    return browser, lab, lab_page, artifacts
 
 
 # -- a notebook in JupyterLab -----------------------------------------------------
 
-JS_READY = """() => {
+#: The application is there and can open documents (then await its ``restored``).
+JS_APP = """() => {
+  const app = window.jupyterapp;
+  return !!(app && app.commands.hasCommand('docmanager:open'));
+}"""
+
+#: Open a notebook (a path in the server's root) in a tab of its own; its id.
+JS_OPEN = """async (path) => {
+  const app = window.jupyterapp;
+  const w = await app.commands.execute('docmanager:open', {path: path, factory: 'Notebook'});
+  app.shell.activateById(w.id);
+  return w.id;
+}"""
+
+#: The current widget is the notebook ``path``, its cells shown and its file read.
+JS_READY = """(path) => {
   const app = window.jupyterapp;
   const w = app && app.shell.currentWidget;
   return !!(w && w.sessionContext && w.content && w.content.widgets
-            && w.content.widgets.length && w.context && w.context.isReady);
+            && w.content.widgets.length && w.context && w.context.isReady
+            && w.context.path === path);
 }"""
 
-#: Run every cell above the last one (the sweep), or only the last one.
 JS_RUN = """async (last) => {
   const app = window.jupyterapp;
   const w = app.shell.currentWidget;
@@ -485,9 +512,15 @@ JS_RESULT = """(upto) => {
                  outputs: tail.outputs.toJSON().map(o => o.output_type + ' ' + (o.name || ''))}};
 }"""
 
-JS_SHUTDOWN = """async () => {
-  const w = window.jupyterapp.shell.currentWidget;
-  if (w && w.sessionContext) await w.sessionContext.shutdown();
+#: Shut down the kernels of the main area's tabs and close the tabs (without
+#: saving); how many tabs are left.
+JS_CLOSE_ALL = """async () => {
+  const app = window.jupyterapp;
+  for (const w of [...app.shell.widgets('main')]) {
+    if (w.sessionContext) await w.sessionContext.shutdown();
+    w.dispose();
+  }
+  return [...app.shell.widgets('main')].length;
 }"""
 
 #: What the notebook must have shown, by output type (as tests/test_notebooks.py).
@@ -530,6 +563,87 @@ def run_cells(page, last: bool, name: str) -> dict:
     return result
 
 
+#: The size of the JupyterLab page, in CSS pixels.
+VIEWPORT = {"width": 1400, "height": 1000}
+
+
+class LabPage:
+    """One JupyterLab page in Chromium, in which notebooks are opened in turn.
+
+    The application is loaded once (``/lab?reset``, every tab closed) and
+    kept: :meth:`open` opens a notebook in a tab of its own and starts its
+    kernel; :meth:`close_notebook` shuts the kernel down and closes the tab,
+    so the next notebook starts in a shell with no other notebook (JupyterLab
+    shows its launcher when no tab is left).  After a failure, :meth:`discard`
+    closes the page and the next :meth:`open` loads the application again.
+
+    Parameters
+    ----------
+    browser : playwright Browser
+    lab : JupyterLab
+    """
+
+    def __init__(self, browser, lab: JupyterLab):
+        self.browser = browser
+        self.lab = lab
+        self.page = None
+        #: The page's console messages (see :func:`listen`) since the last
+        #: :meth:`open`, or since the page was loaded if it loaded for it.
+        self.messages: list = []
+
+    def _load(self):
+        page = self.browser.new_page(viewport=VIEWPORT)
+        page.set_default_timeout(START_TIMEOUT * 1000)  # (playwright's own default: 30 s)
+        self.messages = listen(page)
+        self.page = page
+        page.goto(f"{self.lab.url}/lab?reset")
+        page.wait_for_function(JS_APP, timeout=START_TIMEOUT * 1000, polling=250)
+        page.evaluate("async () => { await window.jupyterapp.restored; }")
+        left = page.evaluate(JS_CLOSE_ALL)  # the launcher
+        assert not left, f"JupyterLab: {left} tabs left open at the start"
+
+    def open(self, name: str):
+        """Open the notebook ``name`` and wait until it is the current widget,
+        its file read; the console messages start afresh (a page loaded for
+        this notebook: with the messages of its loading).  Returns the page and
+        a locator of the notebook's panel."""
+        if self.page is None:
+            self._load()
+        else:
+            self.messages.clear()
+        widget = self.page.evaluate(JS_OPEN, name)
+        self.page.wait_for_function(JS_READY, arg=name, timeout=START_TIMEOUT * 1000, polling=250)
+        return self.page, self.page.locator(f"[id='{widget}']")
+
+    def close_notebook(self):
+        """Shut the notebook's kernel down and close its tab; on any trouble
+        (a tab left open), :meth:`discard` the page."""
+        if self.page is None:
+            return
+        try:
+            left = self.page.evaluate(JS_CLOSE_ALL)
+        except Exception:
+            left = -1
+        if left:
+            self.discard()
+
+    def discard(self):
+        """Shut the kernels down and close the page (the next notebook loads a new one)."""
+        if self.page is None:
+            return
+        try:
+            self.page.evaluate(JS_CLOSE_ALL)
+        except Exception:
+            pass
+        try:
+            self.page.close()
+        except Exception:
+            pass
+        self.page = None
+
+    close = discard
+
+
 def _movable_slider(cell):
     """The first slider of a cell that is not pinned (min < max), or None."""
     handles = cell.locator(".jp-OutputArea-output .widget-slider .noUi-handle")
@@ -540,25 +654,27 @@ def _movable_slider(cell):
     return None
 
 
-def check_notebook(notebook: Path, browser, lab: JupyterLab, artifacts: Path) -> None:
+def check_notebook(notebook: Path, lab_page: LabPage, artifacts: Path) -> None:
     """The browser test of one notebook (see ``tests/test_browser_lab_a.py``).
 
-    Opens ``notebook`` in ``lab`` (``?reset``), runs its cells but the sweep:
-    none fails, something is drawn, no widget fails to display, the first
-    pythreejs picture is not blank, and moving a slider changes the picture
-    beside it.  Then runs the sweep in the same kernel and checks its line
-    (:func:`notebook_support.check_sweep`), and the console.
+    Opens ``notebook`` in the JupyterLab of ``lab_page`` (a tab of its own in
+    an otherwise empty shell), runs its cells but the sweep: none fails,
+    something is drawn, no widget fails to display, the first pythreejs
+    picture is not blank, and moving a slider changes the picture beside it.
+    Then runs the sweep in the same kernel and checks its line
+    (:func:`notebook_support.check_sweep`), and the console messages logged
+    since the notebook was opened (and while the page loaded, if it loaded for
+    this notebook).  Last, shuts its kernel down and closes its
+    tab; after a failure, the page is closed (the next notebook loads the
+    application again).
     """
     import notebook_support as ns
 
     stem = notebook.stem
-    page = browser.new_page(viewport={"width": 1400, "height": 1000})
-    page.set_default_timeout(START_TIMEOUT * 1000)  # (playwright's own default: 30 s)
-    messages = listen(page)
     t0 = time.monotonic()
+    passed = False
     try:
-        page.goto(f"{lab.url}/lab/tree/{notebook.name}?reset")
-        page.wait_for_function(JS_READY, timeout=START_TIMEOUT * 1000)
+        page, panel = lab_page.open(notebook.name)
         result = run_cells(page, last=False, name=notebook.name)
         page.screenshot(path=str(artifacts / f"{stem}-run.png"), full_page=True)
         t_run = time.monotonic() - t0
@@ -568,10 +684,10 @@ def check_notebook(notebook: Path, browser, lab: JupyterLab, artifacts: Path) ->
         assert not failed.count(), f"{notebook.name}: a widget failed to display"
 
         # every pythreejs picture shown: the first one is not blank
-        pictures = page.locator(".jupyter-threejs")
+        pictures = panel.locator(".jupyter-threejs")
         n_pictures = pictures.count()
         if n_pictures:
-            renderer = page.locator(".jupyter-threejs >> visible=true").first
+            renderer = panel.locator(".jupyter-threejs >> visible=true").first
             renderer.wait_for(timeout=DRAW_TIMEOUT * 1000)
             png, last = wait_picture(renderer)
             if last:
@@ -580,7 +696,7 @@ def check_notebook(notebook: Path, browser, lab: JupyterLab, artifacts: Path) ->
 
         # move a slider: the picture beside it changes
         moved = False
-        cells = page.locator(".jp-Cell").filter(
+        cells = panel.locator(".jp-Cell").filter(
             has=page.locator(".jp-OutputArea-output .widget-slider")
         )
         for c in range(cells.count()):
@@ -601,7 +717,7 @@ def check_notebook(notebook: Path, browser, lab: JupyterLab, artifacts: Path) ->
             png, _ = wait_picture(target)
             before = png or target.screenshot()
             after = move_slider(handle, target, before)
-            (artifacts / f"{stem}-slider.png").write_bytes(target.screenshot())
+            (artifacts / f"{stem}-slider.png").write_bytes(after or target.screenshot())
             assert after, f"{notebook.name}: moving the slider did not change the picture"
             moved = True
             break
@@ -615,15 +731,15 @@ def check_notebook(notebook: Path, browser, lab: JupyterLab, artifacts: Path) ->
         assert n_pictures or not sweep["renderers"], (
             f"{notebook.name}: the kernel made {sweep['renderers']} 3D views, the page shows none"
         )
-        bad = bad_console(messages)
+        bad = bad_console(lab_page.messages)
         assert not bad, f"{notebook.name}: console errors: {bad}"
         print(
             f"\n{summary}; ran in {t_run:.1f} s, swept in {time.monotonic() - t_sweep:.1f} s, "
             f"checked in {time.monotonic() - t0:.1f} s"
         )
+        passed = True
     finally:
-        try:
-            page.evaluate(JS_SHUTDOWN)
-        except Exception:
-            pass
-        page.close()
+        if passed:
+            lab_page.close_notebook()
+        else:
+            lab_page.discard()

@@ -30,7 +30,7 @@ import notebook_support as ns
 # (``--dist loadfile`` in pyproject.toml)
 pytestmark = pytest.mark.browser
 
-browser, _lab, artifacts = bs.module_fixtures()
+browser, _lab, _lab_page, artifacts = bs.module_fixtures()
 
 
 def test_the_shares_hold_every_notebook_once():

@@ -24,9 +24,9 @@ pytestmark = pytest.mark.browser
 
 NOTEBOOKS = ns.browser_share(1)
 
-browser, lab, artifacts = bs.module_fixtures(NOTEBOOKS)
+browser, lab, lab_page, artifacts = bs.module_fixtures(NOTEBOOKS)
 
 
 @pytest.mark.parametrize("notebook", NOTEBOOKS, ids=[p.name for p in NOTEBOOKS])
-def test_notebook_runs_and_draws_in_jupyterlab(notebook, browser, lab, artifacts):
-    bs.check_notebook(notebook, browser, lab, artifacts)
+def test_notebook_runs_and_draws_in_jupyterlab(notebook, lab_page, artifacts):
+    bs.check_notebook(notebook, lab_page, artifacts)
