@@ -91,6 +91,11 @@ def pytest_xdist_auto_num_workers(config) -> int:
     ) + 1
 
 
+#: Seconds the kernels' warm-up may take: a hang guard, not a speed limit (a minute
+#: on a fresh clone of a busy 2-core machine).
+WARM_TIMEOUT = 900
+
+
 def pytest_sessionstart(session):
     """Before pytest-xdist starts its workers: the compiled kernels built once.
 
@@ -122,7 +127,11 @@ def pytest_sessionstart(session):
         for part in range(2)
     ]
     for run in runs:
-        run.wait()
+        try:
+            run.wait(timeout=WARM_TIMEOUT)
+        except subprocess.TimeoutExpired:  # a hang guard: the tests compile what is missing
+            run.kill()
+            run.wait()
 
 
 #: The test files that take longest, longest first (measured with ``--durations``
