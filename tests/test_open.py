@@ -1106,19 +1106,3 @@ def test_the_dual_of_an_open_scheme_output_does_not_write_its_twins(scheme, monk
 
 def _arrays(m: Mesh) -> tuple[np.ndarray, list[list[int]]]:
     return m.vertices, face_lists(m)
-
-
-@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons", None])
-@pytest.mark.parametrize("name", list(WRITTEN))
-def test_the_dual_of_an_open_dual_is_the_dual_of_its_faces_read_again(name, scheme):
-    # dual(dual(m)) is built from the record the first dual keeps (no pass over
-    # its rings); it must be the dual of the same mesh read from its arrays
-    m = WRITTEN[name]()
-    if scheme is not None:
-        m = pb.SCHEMES[scheme](m)
-    d1 = pb.dual(m)
-    again = pb.dual(d1)
-    plain = pb.dual(Mesh(d1.vertices, face_lists(d1)))
-    for attr in ("vertices", "corners", "offsets"):
-        assert np.array_equal(getattr(again, attr), getattr(plain, attr)), attr
-    assert again.boundary_halfedges.tolist() == plain.boundary_halfedges.tolist()
