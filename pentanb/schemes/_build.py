@@ -585,8 +585,7 @@ def open_vertex_faces(
     corners : int64 array
     offsets : (n + 1,) int64
     """
-    out, offsets, _ = placed_vertex_faces(mesh, items, entering, leaving, kept)
-    return out, offsets
+    return placed_vertex_faces(mesh, items, entering, leaving, kept)
 
 
 def open_dual_faces(
@@ -620,9 +619,7 @@ def open_dual_faces(
     ring, ring_off = mesh.vertex_ring
     jit = _jit.kernels(ring.size)
     if jit is None:
-        corners, offsets, _ = placed_vertex_faces(
-            mesh, (mesh.halfedge_face,), mids, mids, kept, n_out
-        )
+        corners, offsets = placed_vertex_faces(mesh, (mesh.halfedge_face,), mids, mids, kept, n_out)
         return corners, offsets
     if nxt is None:
         nxt = boundary_next(mesh.offsets, bh, _mesh.uniform_size(mesh))
@@ -645,30 +642,34 @@ def open_dual_faces(
     )
 
 
-def placed_vertex_faces(
-    mesh: Mesh,
-    items: tuple[np.ndarray, ...],
-    entering: np.ndarray,
-    leaving: np.ndarray,
-    kept: np.ndarray | None = None,
-    n_out: int | None = None,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """:func:`open_vertex_faces`, and where every vertex ring entry went.
+def ring_places(
+    mesh: Mesh, kept: np.ndarray | None, per: int, n_out: int | None = None
+) -> tuple[np.ndarray, int, np.dtype, np.ndarray, np.ndarray, np.ndarray]:
+    """Where every vertex ring entry of an open mesh goes in :func:`open_vertex_faces`.
 
-    ``n_out``, the output's number of vertices when known, makes ``corners``
-    and ``at`` of the output's index dtype (:func:`index_dtype`) instead of int64.
+    A face half-edge gives ``per`` items, a hole half-edge 2 (3 where its
+    tail is kept: ``kept`` not -1 there).  ``n_out``, the output's number of
+    vertices when known, gives the output's index dtype
+    (:func:`index_dtype`) instead of int64.
 
     Returns
     -------
-    corners : int array
-    offsets : (n + 1,) int64
     at : (H + B,) int
-        The position in ``corners`` of what every entry of
-        :attr:`~pentanb.Mesh.vertex_ring` contributes: a face half-edge's
-        first item, a hole half-edge's ``entering`` point.
+        The position in the faces' corners of what every entry of
+        :attr:`~pentanb.Mesh.vertex_ring` contributes first.
+    total : int
+        The number of corners.
+    dtype : numpy dtype
+        Of ``at`` and of the corners.
+    hp : (B,) int
+        The places of the hole half-edges in the rings.
+    j : (B,) int
+        Which boundary half-edge each is the hole half-edge of (``H + j``).
+    keep : (B,) int
+        ``kept`` at its tail (the head of ``bh[j]``), or -1.
     """
-    ring, ring_off = mesh.vertex_ring
-    H, per, N = mesh.n_halfedges, len(items), ring.size
+    ring, _ = mesh.vertex_ring
+    H, N = mesh.n_halfedges, ring.size
     hp = np.flatnonzero(ring >= H)  # the hole half-edges' places: few
     j = ring[hp].astype(np.int64) - H
     if kept is None:
@@ -685,6 +686,23 @@ def placed_vertex_faces(
     dt = np.dtype(np.int64) if n_out is None else index_dtype(n_out, total)
     at = np.repeat(shift.astype(dt), np.diff(bounds))
     at += np.arange(0, per * N, per, dtype=dt)
+    return at, total, dt, hp, j, keep
+
+
+def placed_vertex_faces(
+    mesh: Mesh,
+    items: tuple[np.ndarray, ...],
+    entering: np.ndarray,
+    leaving: np.ndarray,
+    kept: np.ndarray | None = None,
+    n_out: int | None = None,
+) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`open_vertex_faces`, the corners of the output's index dtype when
+    ``n_out``, its number of vertices, is given (else int64)."""
+    ring, ring_off = mesh.vertex_ring
+    H, per, N = mesh.n_halfedges, len(items), ring.size
+    at, total, dt, hp, j, keep = ring_places(mesh, kept, per, n_out)
+    count = 2 + (keep >= 0)  # what every hole half-edge gives, the others ``per``
     out = np.empty(total, dtype=dt)
     safe = np.minimum(ring, H - 1)  # a hole half-edge's items: any, written over below
     for s, item in enumerate(items):
@@ -699,4 +717,4 @@ def placed_vertex_faces(
     out[base + count - 1] = leaving[loop_successor(mesh)[j]]
     ends = np.asarray(ring_off, dtype=np.int64)
     offsets = np.where(ends < N, at.take(np.minimum(ends, max(N - 1, 0))), total) if N else ends
-    return out, offsets, at
+    return out, offsets

@@ -50,7 +50,7 @@ from ._build import (
     open_dual_faces,
     open_twins_from,
     output,
-    placed_vertex_faces,
+    ring_places,
     start_at_max,
 )
 
@@ -151,7 +151,7 @@ def _open_dual(mesh: Mesh) -> Mesh:
     kept = corner_ids(mesh, F + B, nxt)
     n_out = F + B + int(np.count_nonzero(kept >= 0))
     corners, offsets = open_dual_faces(mesh, kept, n_out, nxt)
-    return _open_dual_output(mesh, kept, corners, offsets, None, nxt)
+    return _open_dual_output(mesh, kept, corners, offsets, nxt)
 
 
 def _open_dual_output(
@@ -159,13 +159,11 @@ def _open_dual_output(
     kept: np.ndarray,
     corners: np.ndarray,
     offsets: np.ndarray,
-    placed: np.ndarray | None,
     nxt: np.ndarray,
 ) -> Mesh:
-    """The dual of the open ``mesh`` from its faces (``placed``: where its vertex
-    ring entries went, None to find out when the twins are asked for; ``nxt``:
-    ``next`` of its boundary half-edges), with producers of its twins, rings
-    and boundary, and a record for its own dual."""
+    """The dual of the open ``mesh`` from its faces (``nxt``: ``next`` of its
+    boundary half-edges), with producers of its twins, rings and boundary, and
+    a record for its own dual."""
     F, bh = mesh.n_faces, mesh.boundary_halfedges
     B = bh.size
     at = np.flatnonzero(kept >= 0)
@@ -181,13 +179,8 @@ def _open_dual_output(
     n_out, size = vertices.shape[0], corners.size
     dt = index_dtype(n_out, size)
 
-    def connectivity() -> Several:
-        where = placed
-        if where is None:  # the faces made again, for where the ring entries went
-            mids = np.arange(F, F + B, dtype=np.int64)
-            halfedge_face = faces.halfedge_face
-            where = placed_vertex_faces(faces, (halfedge_face,), mids, mids, kept, n_out)[2]
-        return _open_dual_connectivity(faces, where, one, size, dt)
+    def connectivity() -> Several:  # from where the ring entries went in the faces
+        return _open_dual_connectivity(faces, ring_places(faces, kept, 1, n_out)[0], one, size, dt)
 
     written = functools.cache(connectivity)
     out = output(vertices, corners, offsets, twin=written, rings=written)
@@ -289,7 +282,7 @@ def _open_dual_again(
     offsets[: F + 1] = offsets_in
     offsets[F + 1 : F + B + 1] = H + 4 * np.arange(1, B + 1)
     offsets[F + B + 1 :] = H + 4 * B + np.cumsum(3 + (still >= 0))
-    return _open_dual_output(mesh, kept, corners, offsets, None, nxt)
+    return _open_dual_output(mesh, kept, corners, offsets, nxt)
 
 
 def _open_dual_connectivity(
@@ -299,7 +292,7 @@ def _open_dual_connectivity(
     written from its rings.
 
     ``at`` is where every vertex ring entry of ``mesh`` went in the dual's
-    corners (:func:`~pentanb.schemes._build.placed_vertex_faces`); ``one``
+    corners (:func:`~pentanb.schemes._build.ring_places`); ``one``
     is 1 where the face of ``head[bh[j]]`` has one boundary half-edge, 0
     where it has two (a corner kept); ``size`` and ``dt`` are the dual's
     number of half-edges and index dtype.  The dual half-edge at the centroid
