@@ -347,9 +347,12 @@ def face_of(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
     return f
 
 
-def boundary_prev(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
-    """(k,) int64: ``prev[h]`` of a few half-edges ``h``, from the faces' offsets alone."""
+def boundary_prev(offsets: np.ndarray, h: np.ndarray, k: int = 0) -> np.ndarray:
+    """(k,) int64: ``prev[h]`` of a few half-edges ``h``, from the faces' offsets alone
+    (``k``: every face has k sides, when the caller knows it; 0: read the offsets)."""
     h = np.asarray(h, dtype=np.int64)
+    if k:
+        return np.where(h % k == 0, h + (k - 1), h - 1)
     o = np.asarray(offsets)
     f = face_of(o, h)
     first = o[f].astype(np.int64)

@@ -244,22 +244,13 @@ def _hole_of(chain: np.ndarray, offsets: np.ndarray, H: int) -> np.ndarray:
     return q.reshape(chain.shape)
 
 
-def _boundary_prev(mesh, bh: np.ndarray) -> np.ndarray:
-    """(B,) int64: ``prev`` of the boundary half-edges ``bh`` of ``mesh``."""
-    k = _mesh.uniform_size(mesh)
-    if not k:
-        return boundary_prev(mesh.offsets, bh)
-    h = bh.astype(np.int64)
-    return np.where(h % k == 0, h + (k - 1), h - 1)
-
-
 def _pentagonalized_chain(mesh) -> np.ndarray:
     """(B, 3): the output's boundary half-edges along every boundary half-edge ``b`` of the
     input, in loop order: ``5 prev[b] + 2`` (its first third, on the pentagon of
     ``prev[b]``), ``5b`` and ``5b + 1``."""
     bh = mesh.boundary_halfedges
     chain = np.empty((bh.size, 3), dtype=np.int64)
-    chain[:, 0] = 5 * _boundary_prev(mesh, bh) + 2
+    chain[:, 0] = 5 * boundary_prev(mesh.offsets, bh, _mesh.uniform_size(mesh)) + 2
     chain[:, 1] = 5 * bh
     chain[:, 2] = chain[:, 1] + 1
     return chain
@@ -511,7 +502,7 @@ def _preserved_chain(mesh) -> np.ndarray:
     ``prev[b]``) and ``H + 5b``."""
     H, bh = mesh.n_halfedges, mesh.boundary_halfedges
     chain = np.empty((bh.size, 2), dtype=np.int64)
-    chain[:, 0] = H + 5 * _boundary_prev(mesh, bh) + 1
+    chain[:, 0] = H + 5 * boundary_prev(mesh.offsets, bh, _mesh.uniform_size(mesh)) + 1
     chain[:, 1] = H + 5 * bh.astype(np.int64)
     return chain
 
