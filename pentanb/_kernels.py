@@ -49,7 +49,7 @@ def quo(h, k):  # pragma: no cover - compiled
 @inline
 def rem(h, k):  # pragma: no cover - compiled
     # h % k for h >= 0 and k > 0 (see quo)
-    return h - quo(h, k) * k
+    return h - numba.int64(quo(h, k)) * k  # (int64: int64 - uint64 would be a float)
 
 
 def split(n, kernel, *args):
