@@ -52,6 +52,24 @@ def cube_split() -> Mesh:
     return Mesh(v, faces)
 
 
+def holed_grid(
+    nx: int, ny: int, holes: list[tuple[int, ...]], size: int = 2
+) -> tuple[np.ndarray, np.ndarray]:
+    """An nx x ny grid of unit quads in the plane z = 0 without a block of quads at
+    every hole ``(x0, y0)`` (``size`` x ``size``) or ``(x0, y0, s)`` (s x s);
+    the vertices no face uses left out.  Returns ``(vertices, quads)``."""
+    xs, ys = np.meshgrid(np.arange(nx + 1.0), np.arange(ny + 1.0), indexing="ij")
+    v = np.stack([xs.ravel(), ys.ravel(), 0 * xs.ravel()], 1)
+    keep = np.ones((nx, ny), dtype=bool)
+    for x0, y0, s in ((*hole, size)[:3] for hole in holes):
+        keep[x0 : x0 + s, y0 : y0 + s] = False
+    i, j = np.nonzero(keep)
+    a = i * (ny + 1) + j
+    quads = np.stack([a, a + ny + 1, a + ny + 2, a + 1], 1)
+    used, f = np.unique(quads, return_inverse=True)
+    return v[used], f.reshape(-1, 4)
+
+
 def prism(n: int) -> Mesh:
     """A prism over a regular n-gon: two n-gons and n quads; V = 2n, E = 3n, F = n + 2."""
     t = 2 * np.pi * np.arange(n) / n

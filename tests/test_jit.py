@@ -20,7 +20,7 @@ import threading
 import numpy as np
 import pytest
 from browser_support import skip_or_fail
-from helpers import prism
+from helpers import holed_grid, prism
 from test_open import REFUSED
 
 import pentanb
@@ -217,20 +217,6 @@ def test_bad_meshes_get_the_same_message_compiled(compiled):
 
 
 # -- open meshes: pairing, boundary loops, vertex rings --------------------------------
-
-
-def holed_grid(nx: int, ny: int, holes: list[tuple[int, int]], size: int = 2):
-    """An nx x ny grid of quads without the ``size`` x ``size`` blocks at ``holes``."""
-    xs, ys = np.meshgrid(np.arange(nx + 1.0), np.arange(ny + 1.0), indexing="ij")
-    v = np.stack([xs.ravel(), ys.ravel(), 0 * xs.ravel()], 1)
-    keep = np.ones((nx, ny), dtype=bool)
-    for x0, y0 in holes:
-        keep[x0 : x0 + size, y0 : y0 + size] = False
-    i, j = np.nonzero(keep)
-    a = i * (ny + 1) + j
-    quads = np.stack([a, a + ny + 1, a + ny + 2, a + 1], 1)
-    used, f = np.unique(quads, return_inverse=True)
-    return v[used], f.reshape(-1, 4)
 
 
 def open_meshes() -> dict[str, tuple[np.ndarray, list[list[int]]]]:
@@ -708,18 +694,12 @@ def test_kernels_run_on_the_calling_thread_over_every_item(compiled):
 
 
 def two_holed_grid(nx: int = 7, ny: int = 6) -> pentanb.Mesh:
-    """A planar grid of quads with two holes: corners (sharp vertices of one face)
-    on its rim, boundary vertices of three faces round the holes."""
-    keep = np.ones((nx, ny), dtype=bool)
-    keep[1:3, 1:3] = False
-    keep[4, 3] = False
-    i, j = np.nonzero(keep)
-    a = i * (ny + 1) + j
-    f = np.stack([a, a + ny + 1, a + ny + 2, a + 1], axis=1)
-    used, f = np.unique(f, return_inverse=True)
-    xs, ys = np.divmod(used, ny + 1)
-    v = np.stack([xs, ys, 0.1 * np.sin(xs + ys)], axis=1).astype(float)
-    return pentanb.Mesh(v, f.reshape(-1, 4))
+    """A grid of quads with two holes, lifted a little out of its plane: corners
+    (sharp vertices of one face) on its rim, boundary vertices of three faces
+    round the holes."""
+    v, f = holed_grid(nx, ny, [(1, 1), (4, 3, 1)])
+    v[:, 2] = 0.1 * np.sin(v[:, 0] + v[:, 1])
+    return pentanb.Mesh(v, f)
 
 
 @pytest.mark.slow

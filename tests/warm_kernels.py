@@ -16,29 +16,11 @@ from __future__ import annotations
 
 import sys
 
-import numpy as np
+from helpers import holed_grid
 
 import pentanb
 from pentanb import Mesh, shapes
 from pentanb.viz import drawing
-
-
-def holed_grid(n: int = 90, hole: int = 6) -> Mesh:
-    """An open n x n grid of quads with a square hole in each quarter."""
-    xs, ys = np.meshgrid(np.arange(n + 1.0), np.arange(n + 1.0), indexing="ij")
-    vertices = np.stack([xs.ravel(), ys.ravel(), np.zeros(xs.size)], axis=1)
-    i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
-    cut = np.zeros((n, n), dtype=bool)
-    for a in (n // 4, 3 * n // 4):
-        for b in (n // 4, 3 * n // 4):
-            cut[a : a + hole, b : b + hole] = True
-    i, j = i[~cut], j[~cut]
-    v = i * (n + 1) + j
-    faces = np.stack([v, v + n + 1, v + n + 2, v + 1], axis=1)
-    used = np.unique(faces)
-    renumber = np.full(vertices.shape[0], -1)
-    renumber[used] = np.arange(used.size)
-    return Mesh(vertices[used], renumber[faces])
 
 
 def inputs() -> list[Mesh]:
@@ -51,8 +33,8 @@ def inputs() -> list[Mesh]:
         tri,  # triangles
         pentanb.subdivide(shapes.cube(), "preserve_pentagons", 4, 0),  # mixed faces
         shapes.hexagonal_torus(60, 50),  # hexagons
-        holed_grid(),  # open quads
-        pentanb.subdivide(holed_grid(40), "preserve_pentagons", 1, 0),  # open, mixed
+        Mesh(*holed_grid(90, 90, [(22, 22), (22, 67), (67, 22), (67, 67)], 6)),  # open quads
+        pentanb.preserve_pentagons(Mesh(*holed_grid(40, 40, [(10, 10), (30, 30)], 6))),  # mixed
     ]
 
 
