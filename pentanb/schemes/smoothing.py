@@ -92,7 +92,9 @@ def dual(mesh: Mesh) -> Mesh:
     in face order, go round the dual vertex of that face.  The dual of a
     closed dual reuses the connectivity of the mesh it came from.  On an
     open mesh the twins, boundary loops and rings are written from the
-    input's rings and loops too (no sorting).
+    input's rings and loops too (no sorting); the dual of an open dual has
+    the faces of the mesh it came from first, as they are (each face's
+    corners in that mesh's order), then those of the boundary.
 
     Raises
     ------
@@ -160,10 +162,16 @@ def _open_dual_output(
     corners: np.ndarray,
     offsets: np.ndarray,
     nxt: np.ndarray,
+    turned: tuple[np.ndarray, np.ndarray, int] | None = None,
 ) -> Mesh:
     """The dual of the open ``mesh`` from its faces (``nxt``: ``next`` of its
     boundary half-edges), with producers of its twins, rings and boundary, and
-    a record for its own dual."""
+    a record for its own dual.
+
+    The faces of ``mesh``'s vertices go round their rings, from where the
+    rings start; ``turned`` (the corners, offsets and size of the faces of
+    the mesh ``mesh`` is the dual of) says that the first faces are those
+    faces instead, as they are (:func:`_open_dual_again`)."""
     F, bh = mesh.n_faces, mesh.boundary_halfedges
     B = bh.size
     at = np.flatnonzero(kept >= 0)
@@ -180,7 +188,11 @@ def _open_dual_output(
     dt = index_dtype(n_out, size)
 
     def connectivity() -> Several:  # from where the ring entries went in the faces
-        return _open_dual_connectivity(faces, ring_places(faces, kept, 1, n_out)[0], one, size, dt)
+        at = ring_places(faces, kept, 1, n_out)[0]
+        if turned is not None:
+            H = turned[0].size
+            at[:H] = _unturned(*turned).take(at[:H])
+        return _open_dual_connectivity(faces, at, one, size, dt)
 
     written = functools.cache(connectivity)
     out = output(vertices, corners, offsets, twin=written, rings=written)
@@ -227,8 +239,8 @@ def _open_dual_again(
 
     ``mesh``'s vertex f (``f`` < F, the centroid of ``source``'s face f) is
     interior; its ring's faces are ``source``'s face f's vertices, from its
-    largest: the dual's face f is ``source``'s face f turned to start
-    there.  ``mesh``'s vertex ``F + j`` (the midpoint of ``source``'s
+    largest: the dual's face f is ``source``'s face f, kept as it is (as
+    the dual of a closed dual keeps its source's faces).  ``mesh``'s vertex ``F + j`` (the midpoint of ``source``'s
     boundary half-edge ``b = bh[j]``) gives the quad of the midpoints of its
     two boundary edges, ``head[b]`` and ``tail[b]``; the corner of
     ``source`` kept as ``mesh``'s vertex ``F + B + c`` gives the midpoints
@@ -275,14 +287,38 @@ def _open_dual_again(
     total = H + 4 * B + ends_flat.size
     dt = index_dtype(n_out, total)
     corners = np.empty(total, dtype=dt)
-    start_at_max(source_corners, None if k else offsets_in, k, corners[:H])
+    corners[:H] = source_corners  # (the dual of the dual's rings would turn them)
     corners[H : H + 4 * B] = quads.reshape(-1)
     corners[H + 4 * B :] = ends_flat
     offsets = np.empty(F + B + two.size + 1, dtype=dt)
     offsets[: F + 1] = offsets_in
     offsets[F + 1 : F + B + 1] = H + 4 * np.arange(1, B + 1)
     offsets[F + B + 1 :] = H + 4 * B + np.cumsum(3 + (still >= 0))
-    return _open_dual_output(mesh, kept, corners, offsets, nxt)
+    turned = (source_corners, source_offsets, k)
+    return _open_dual_output(mesh, kept, corners, offsets, nxt, turned)
+
+
+def _unturned(corners: np.ndarray, offsets: np.ndarray, k: int) -> np.ndarray:
+    """(H,) int64: where every corner of the faces turned to start at their
+    largest vertex (:func:`~pentanb.schemes._build.start_at_max`) sits in
+    the faces as they are (``k``: their one size, or 0)."""
+    H = corners.size
+    if k:
+        rows = corners.reshape(-1, k)
+        place = np.arange(k, dtype=np.int64) + rows.argmax(axis=1)[:, None]
+        place %= k
+        place += np.arange(0, H, k, dtype=np.int64)[:, None]
+        return place.reshape(-1)
+    start = offsets[:-1].astype(np.int64)
+    sizes = np.diff(offsets).astype(np.int64)
+    top = np.maximum.reduceat(corners, start)
+    shift = np.flatnonzero(corners == np.repeat(top, sizes)) - start  # (a face's corners differ)
+    first = np.repeat(start, sizes)
+    place = np.arange(H, dtype=np.int64) - first
+    place += np.repeat(shift, sizes)
+    place %= np.repeat(sizes, sizes)
+    place += first
+    return place
 
 
 def _open_dual_connectivity(
