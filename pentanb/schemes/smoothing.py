@@ -240,12 +240,13 @@ def _open_dual_again(
     ``mesh``'s vertex f (``f`` < F, the centroid of ``source``'s face f) is
     interior; its ring's faces are ``source``'s face f's vertices, from its
     largest: the dual's face f is ``source``'s face f, kept as it is (as
-    the dual of a closed dual keeps its source's faces).  ``mesh``'s vertex ``F + j`` (the midpoint of ``source``'s
-    boundary half-edge ``b = bh[j]``) gives the quad of the midpoints of its
-    two boundary edges, ``head[b]`` and ``tail[b]``; the corner of
-    ``source`` kept as ``mesh``'s vertex ``F + B + c`` gives the midpoints
-    of its two boundary edges, itself when it is still a corner, and the
-    face it is a vertex of.  ``base`` and ``one`` are as in :func:`_open_dual_chain`.
+    the dual of a closed dual keeps its source's faces).  ``mesh``'s
+    vertex ``F + j`` (the midpoint of ``source``'s boundary half-edge
+    ``b = bh[j]``) gives the quad of the midpoints of its two boundary
+    edges, ``head[b]`` and ``tail[b]``; the corner of ``source`` kept as
+    ``mesh``'s vertex ``F + B + c`` gives the midpoints of its two
+    boundary edges, itself when it is still a corner, and the face it is
+    a vertex of.  ``base`` and ``one`` are as in :func:`_open_dual_chain`.
     """
     F1 = mesh.n_faces  # source's vertices
     bh1 = mesh.boundary_halfedges
