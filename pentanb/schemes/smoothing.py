@@ -179,9 +179,9 @@ def _open_dual_output(
     vertices = np.empty((F + B + at.size, 3))
     _mesh.face_centroids_into(mesh, vertices[:F])
     heads = mesh.corners[nxt]
-    a, b = v[mesh.corners[bh]], v[heads]
+    a, b = v.take(mesh.corners[bh], axis=0), v.take(heads, axis=0)
     vertices[F : F + B] = 0.5 * a + 0.5 * b  # (no sum that could overflow)
-    vertices[F + B :] = v[at]
+    v.take(at, axis=0, out=vertices[F + B :])
     faces = _mesh.faces_only(mesh)
     one = (kept[heads] < 0).astype(np.int64)  # boundary half-edges at head(bh[j]): 1 or 2
     n_out, size = vertices.shape[0], corners.size
