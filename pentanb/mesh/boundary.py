@@ -499,10 +499,33 @@ def canonical_loops(chain: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray,
         The offsets of the loops in ``loops`` (read-only).
     """
     chain = np.asarray(chain, dtype=np.int64)
+    if chain.size == 0:
+        return CLOSED
+    order, new_off = canonical_order(chain, offsets)
+    loops = chain[order]
+    loops.setflags(write=False)
+    new_off.setflags(write=False)
+    return loops, new_off
+
+
+def canonical_order(chain: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Where :func:`canonical_loops` takes its loops from: ``chain[order]`` are they.
+
+    Parameters
+    ----------
+    chain : (B,) int
+        Boundary half-edges, loop after loop (B > 0), as :func:`canonical_loops` takes them.
+    offsets : (L + 1,) int
+
+    Returns
+    -------
+    order : (B,) int64
+        The place in ``chain`` of every half-edge of the canonical loops.
+    loop_offsets : (L + 1,) int64
+        Their offsets.
+    """
     offsets = np.asarray(offsets, dtype=np.int64)
     B, L = chain.size, offsets.size - 1
-    if B == 0:
-        return CLOSED
     start, sizes = offsets[:-1], np.diff(offsets)
     least = np.minimum.reduceat(chain, start)
     at = np.flatnonzero(chain == np.repeat(least, sizes))  # one per loop: half-edges differ
@@ -515,10 +538,8 @@ def canonical_loops(chain: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray,
     within = np.arange(B, dtype=np.int64) - np.repeat(new_off[:-1], new_sizes)
     within += shift[src_loop]
     within %= sizes[src_loop]
-    loops = chain[start[src_loop] + within]
-    loops.setflags(write=False)
-    new_off.setflags(write=False)
-    return loops, new_off
+    within += start[src_loop]
+    return within, new_off
 
 
 def hole_twins(twin: np.ndarray, bh: np.ndarray) -> np.ndarray:

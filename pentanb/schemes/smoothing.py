@@ -37,7 +37,7 @@ import numpy as np
 from .._checks import MAX_STEPS
 from ..mesh import Mesh, Several
 from ..mesh import build as _mesh
-from ..mesh.boundary import canonical_loops
+from ..mesh.boundary import canonical_loops, canonical_order
 from ._build import (
     boundary_next,
     check_count,
@@ -255,11 +255,16 @@ def _open_dual_again(
     # (see _open_dual_chain), of at least 3 sides: the next is the one after
     nxt = bh1.astype(np.int64) + 1
     kept = corner_ids(mesh, F1 + B1, nxt)
-    order = np.argsort(bh1)
-    sorted_bh1 = bh1[order]
+    # where mesh's boundary half-edges base[j] (and base[j] + 1) are in bh1
+    chain, chain_off = _open_dual_chain(base, one, loops)
+    where = np.empty(B1, dtype=np.int64)
+    where[canonical_order(chain, chain_off)[0]] = np.arange(F1, F1 + B1)
+    first = np.zeros(base.size, dtype=np.int64)  # where base[j] is in the chain
+    np.cumsum(2 - one[:-1], out=first[1:])
 
-    def index(x: np.ndarray) -> np.ndarray:  # mesh's boundary half-edge x: the dual's vertex
-        return order[np.searchsorted(sorted_bh1, x)] + F1
+    def index(j: np.ndarray, second: np.ndarray | int = 0) -> np.ndarray:
+        # the dual's vertex at mesh's boundary half-edge base[j] (+ 1 with second)
+        return where[first[j] + second]
 
     F, B = source_offsets.size - 1, bh.size
     tail = source_corners[bh].astype(np.int64)
@@ -267,17 +272,17 @@ def _open_dual_again(
     before = np.arange(-1, B - 1, dtype=np.int64)  # the loop predecessor of every j
     before[loops[:-1]] = loops[1:] - 1
     quads = np.empty((B, 4), dtype=np.int64)
-    quads[:, 0] = index(base[before] + 1 - one[before])
-    quads[:, 1] = index(base)
+    quads[:, 0] = index(before, 1 - one[before])
+    quads[:, 1] = where[first]
     quads[:, 2] = head
     quads[:, 3] = tail
     two = np.flatnonzero(one == 0)
     two = two[np.argsort(head[two], kind="stable")]  # source's corners in vertex order
     still = kept[F + B + np.arange(two.size)]
     ends = np.empty((two.size, 4), dtype=np.int64)
-    ends[:, 0] = index(base[two])
+    ends[:, 0] = index(two)
     ends[:, 1] = still
-    ends[:, 2] = index(base[two] + 1)
+    ends[:, 2] = index(two, 1)
     ends[:, 3] = head[two]
     ends_flat = ends.reshape(-1)
     ends_flat = ends_flat[ends_flat >= 0]
