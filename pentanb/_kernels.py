@@ -797,47 +797,72 @@ def bounds(points, lo, hi):  # pragma: no cover - compiled
 # Open meshes: the dual's faces
 
 
+@inline
+def faces_of_run(ring, a, b, k, face, out, d):  # pragma: no cover - compiled
+    # out[i + d] = the face of half-edge ring[i] for i in a:b: ring[i] // k when
+    # every face is a k-gon (a loop per usual k, which LLVM vectorizes: a
+    # constant divisor inside the loop, not a test of k per entry), else face[ring[i]]
+    if k == 4:
+        for i in range(a, b):
+            out[ix(i + d)] = ring[ix(i)] // 4
+    elif k == 5:
+        for i in range(a, b):
+            out[ix(i + d)] = ring[ix(i)] // 5
+    elif k == 3:
+        for i in range(a, b):
+            out[ix(i + d)] = ring[ix(i)] // 3
+    elif k > 0:
+        for i in range(a, b):
+            out[ix(i + d)] = quo(ring[ix(i)], k)
+    else:
+        for i in range(a, b):
+            out[ix(i + d)] = face[ix(ring[ix(i)])]
+
+
 @jit
-def open_dual_faces_part(
-    ring, ring_off, H, k, face, enter, keep, leave, out, offsets, lo, hi
+def open_dual_faces_fill(
+    ring, ring_off, k, face, bv, bj, enter, keep, leave, out, offsets
 ):  # pragma: no cover - compiled
-    # the face of every vertex v in lo:hi of an open mesh, written from
-    # offsets[lo] on: round its ring, the face of every face half-edge r
-    # (r // k when every face is a k-gon, else face[r]); a hole half-edge
-    # H + j gives enter[j], keep[j] when it is not -1, then leave[j]
-    # (the numpy path's placed_vertex_faces with one item); offsets[lo]
-    # is given, offsets[lo + 1:hi + 1] are written
-    # (a boundary vertex's ring starts at its hole half-edge, its only one)
-    p = offsets[ix(lo)]
-    for v in range(lo, hi):
-        a, b = ring_off[ix(v)], ring_off[ix(v + 1)]
-        if b > a and ring[ix(a)] >= H:
-            j = ix(ring[ix(a)] - H)
-            out[ix(p)] = enter[j]
-            p += 1
-            if keep[j] >= 0:
-                out[ix(p)] = keep[j]
-                p += 1
-            out[ix(p)] = leave[j]
-            p += 1
-            a += 1
-        if k > 0:
-            for i in range(a, b):
-                out[ix(p)] = quo(ring[ix(i)], k)
-                p += 1
-        else:
-            for i in range(a, b):
-                out[ix(p)] = face[ix(ring[ix(i)])]
-                p += 1
-        offsets[ix(v + 1)] = p
-
-
-def open_dual_faces(ring, ring_off, H, k, face, enter, keep, leave, total, dtype):
+    # the face of every vertex v of an open mesh: round its ring, the face
+    # of every face half-edge r (r // k when every face is a k-gon, else
+    # face[r]); a boundary vertex bv[t] (ascending) starts its ring with its
+    # hole half-edge H + bj[t], which gives enter[j], keep[j] when it is not
+    # -1, then leave[j] (the numpy path's placed_vertex_faces with one item).
+    # The interior vertices between two boundary vertices are one run of the
+    # rings, written shifted by what the boundary inserted before them: a
+    # flat loop LLVM vectorizes, where a loop per vertex does not
     n = ring_off.size - 1
-    out = np.empty(total, dtype)
-    offsets = np.empty(n + 1, dtype)
+    p, v0 = 0, 0
     offsets[0] = 0
-    split(n, open_dual_faces_part, ring, ring_off, H, k, face, enter, keep, leave, out, offsets)
+    for t in range(bv.size + 1):
+        v1 = bv[ix(t)] if t < bv.size else n
+        a, b = ring_off[ix(v0)], ring_off[ix(v1)]
+        d = p - a
+        faces_of_run(ring, a, b, k, face, out, d)
+        for v in range(v0 + 1, v1 + 1):
+            offsets[ix(v)] = ring_off[ix(v)] + d
+        p += b - a
+        if t == bv.size:
+            break
+        j = bj[ix(t)]
+        out[ix(p)] = enter[ix(j)]
+        p += 1
+        if keep[ix(j)] >= 0:
+            out[ix(p)] = keep[ix(j)]
+            p += 1
+        out[ix(p)] = leave[ix(j)]
+        p += 1
+        a, b = ring_off[ix(v1)] + 1, ring_off[ix(v1 + 1)]  # (after the hole half-edge)
+        faces_of_run(ring, a, b, k, face, out, p - a)
+        p += b - a
+        offsets[ix(v1 + 1)] = p
+        v0 = v1 + 1
+
+
+def open_dual_faces(ring, ring_off, k, face, bv, bj, enter, keep, leave, total, dtype):
+    out = np.empty(total, dtype)
+    offsets = np.empty(ring_off.size, dtype)
+    open_dual_faces_fill(ring, ring_off, k, face, bv, bj, enter, keep, leave, out, offsets)
     return out, offsets
 
 

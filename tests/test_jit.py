@@ -559,6 +559,54 @@ def test_the_open_rings_the_paper_schemes_write_are_the_numpy_ones(compiled, op,
         assert same_bytes(x, y)
 
 
+@pytest.mark.parametrize("sides", [3, 4, 5, 6, "mixed"])
+def test_the_open_dual_faces_are_the_numpy_ones_for_every_face_size(compiled, sides):
+    # the compiled pass divides by the face size, a constant for each of the
+    # usual ones, and reads the face of every half-edge otherwise
+    m = {
+        3: lambda: pentanb.Mesh(*tri(holed())),
+        4: lambda: pentanb.Mesh(*holed_grid(9, 8, [(2, 2), (5, 4)])),
+        5: lambda: pentanb.pentagonalize(holed_grid_mesh()),
+        6: hexagons,
+        "mixed": holed,
+    }[sides]()
+    assert not m.is_closed
+    assert m.offsets.size and (sides == "mixed") == (len(set(np.diff(m.offsets).tolist())) > 1)
+
+    def run():
+        d = pentanb.dual(fresh(m))
+        return d.vertices, d.corners, d.offsets
+
+    a, b = both(run)
+    for x, y in zip(a, b):
+        assert same_bytes(x, y)
+
+
+def holed_grid_mesh() -> pentanb.Mesh:
+    return pentanb.Mesh(*holed_grid(9, 8, [(2, 2), (5, 4)]))
+
+
+def hexagons() -> pentanb.Mesh:
+    """A patch of 6 x 5 regular hexagons (open: one boundary loop)."""
+    corners = [
+        (np.cos(np.pi / 3 * i + np.pi / 6), np.sin(np.pi / 3 * i + np.pi / 6)) for i in range(6)
+    ]
+    index: dict[tuple[float, float], int] = {}
+    faces = []
+    for i in range(6):
+        for j in range(5):
+            cx, cy = np.sqrt(3) * (i + 0.5 * (j % 2)), 1.5 * j
+            key = [(round(cx + x, 6), round(cy + y, 6)) for x, y in corners]
+            faces.append([index.setdefault(q, len(index)) for q in key])
+    v = np.array([[x, y, 0.0] for x, y in index], dtype=float)
+    return pentanb.Mesh(v, faces)
+
+
+def tri(m: pentanb.Mesh) -> tuple[np.ndarray, list[list[int]]]:
+    """``m``'s vertices and its faces cut into fans of triangles."""
+    return m.vertices, [[f[0], f[i], f[i + 1]] for f in m.faces for i in range(1, len(f) - 1)]
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("dt", [np.int32, np.int64])
 def test_the_open_rings_are_the_numpy_ones_in_either_index_dtype(compiled, dt):

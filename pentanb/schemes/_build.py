@@ -633,17 +633,20 @@ def open_dual_faces(
         return corners, offsets
     if nxt is None:
         nxt = boundary_next(mesh.offsets, bh, _mesh.uniform_size(mesh))
-    keep = kept[mesh.corners[nxt]]  # at the head of bh[j]
+    heads = mesh.corners[nxt]  # the boundary vertices: hole half-edge H + j starts at heads[j]
+    keep = kept[heads]
     leave = mids[loop_successor(mesh)]
     total = ring.size + bh.size + int(np.count_nonzero(keep >= 0))
     k = _mesh.uniform_size(mesh)
     face = ring[:0] if k else mesh.halfedge_face
+    bj = np.argsort(heads)
     return jit.open_dual_faces(
         ring,
         ring_off,
-        mesh.n_halfedges,
         k,
         face,
+        heads[bj],
+        bj,
         mids,
         keep,
         leave,
