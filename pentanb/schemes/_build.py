@@ -185,10 +185,11 @@ def turned(cols: list[np.ndarray], out: np.ndarray) -> None:
     turned to start at its largest entry (the first of equal ones, as argmax).
 
     Column ``s`` of a row whose largest is in column ``r`` is ``cols[(r + s) % k]``:
-    written with branch-free selects on whole columns (``col += (a - col) * m``,
-    wrapping included, is exact), about five times faster on 12 million
-    entries than an argmax along rows of 3 and a take_along_axis, or than
-    ``np.where`` (which mispredicts on a mask of no pattern).
+    written with branch-free selects on whole columns (``col += (a - col) * m``),
+    the last column as what the row sums to less the others (integer
+    arithmetic wraps around: both exact), about five times faster on 12
+    million entries than an argmax along rows of 3 and a take_along_axis,
+    or than ``np.where`` (which mispredicts on a mask of no pattern).
 
     Parameters
     ----------
@@ -199,19 +200,25 @@ def turned(cols: list[np.ndarray], out: np.ndarray) -> None:
     """
     k = len(cols)
     top = cols[0].copy()
+    rest = cols[0].copy()  # the row's sum less its columns written so far
     for c in cols[1:]:
         np.maximum(top, c, out=top)
+        rest += c
     at_top = [c == top for c in cols[:-1]]  # (the last column: where no other is)
     out[:, 0] = top
+    rest -= top
     del top
     col, step = np.empty_like(cols[0]), np.empty_like(cols[0])
-    for s in range(1, k):
+    for s in range(1, k - 1):
         col[...] = cols[(k - 1 + s) % k]  # the largest in the last column...
         for r in range(k - 2, -1, -1):  # ...or in the first column r holding it
             np.subtract(cols[(r + s) % k], col, out=step)
             step *= at_top[r]
             col += step
         out[:, s] = col
+        rest -= col
+    if k > 1:
+        out[:, k - 1] = rest
 
 
 def start_at_max(
@@ -671,7 +678,9 @@ def open_dual_faces(
     if jit is None:
         # the face of every ring entry, as the closed dual's corners (a hole
         # half-edge's: any, written over)
-        face = ring // k if k else mesh.halfedge_face.take(ring, mode="clip")
+        if k:
+            return opened_ring_items(mesh, ring, 1, mids, mids, kept, n_out, nxt, k)
+        face = mesh.halfedge_face.take(ring, mode="clip")
         return opened_ring_items(mesh, face, 1, mids, mids, kept, n_out, nxt)
     keep = kept[mesh.corners[nxt]]  # at the head of bh[j]
     leave = mids[loop_successor(mesh)]
@@ -752,10 +761,10 @@ def placed_vertex_faces(
     ring, _ = mesh.vertex_ring
     # what every ring entry gives, in ring order (a hole half-edge's: any,
     # written over): gathers in ring order, no scatter
-    got = [item.take(ring, mode="clip") for item in items]
-    values = got[0] if len(got) == 1 else columns(got[0].dtype, ring.size, *got).reshape(-1)
-    del got
-    return opened_ring_items(mesh, values, len(items), entering, leaving, kept, n_out)
+    values = np.empty((ring.size, len(items)), dtype=np.result_type(*items))
+    for s, item in enumerate(items):
+        values[:, s] = item.take(ring, mode="clip")
+    return opened_ring_items(mesh, values.reshape(-1), len(items), entering, leaving, kept, n_out)
 
 
 def opened_ring_items(
@@ -767,6 +776,7 @@ def opened_ring_items(
     kept: np.ndarray | None = None,
     n_out: int | None = None,
     nxt: np.ndarray | None = None,
+    k: int = 1,
 ) -> tuple[np.ndarray, np.ndarray]:
     """The faces of :func:`open_vertex_faces` from the items of every vertex ring entry.
 
@@ -793,6 +803,10 @@ def opened_ring_items(
         dtype (:func:`index_dtype`), else int64.
     nxt : (B,) int, optional
         ``next`` of every boundary half-edge (:func:`boundary_next`).
+    k : int
+        The items are ``values // k``, divided in place in the corners (the
+        faces of the ring entries of a mesh of k-gons from the ring itself,
+        without an array of them the ring's size).
 
     Returns
     -------
@@ -825,6 +839,8 @@ def opened_ring_items(
         del taken
     else:
         out[...] = values
+    if k > 1:
+        out //= k
     out[base] = entering
     out[base[keep >= 0] + 1] = keep[keep >= 0]
     out[base + count - 1] = leaving[loop_successor(mesh)]
