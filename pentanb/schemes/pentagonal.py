@@ -313,7 +313,7 @@ def _pentagonalized_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
     old[hp] = hole[ring[hp] - H, 2]
     # round the trisection points, 3 each ((E, 2, 3): the edge's points 2e,
     # 2e + 1), every row turned to start at its largest
-    back = mesh.twin.astype(dt, copy=True)[eh]
+    back = mesh.twin[eh].astype(dt, copy=False)  # (a new array: written below)
     edge_of_b = mesh.halfedge_edge[bh].astype(np.int64)
     back[edge_of_b] = eh[edge_of_b]  # (any face half-edge: written over below)
     pts = np.empty((E, 2, 3), dtype=dt)
@@ -556,13 +556,13 @@ def _preserved_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
         return jit.preserved_open_rings(ring, ring_off, eh, mesh.twin, prv, hole.reshape(-1), dt)
     n = ring_off.size - 1
     # round an old vertex: H + 5 prev[h] + 1, the hole half-edge for the input's
-    old = prv.take(np.minimum(ring, H - 1))
+    old = prv.take(ring, mode="clip")  # (a hole half-edge: any, written over)
     old *= 5
     old += H + 1
     hp = np.flatnonzero(ring >= H)
     old[hp] = hole[ring[hp] - H, 1]
     # round the midpoints, 4 each (3 on the boundary)
-    back = mesh.twin.astype(dt, copy=True)[eh]
+    back = mesh.twin[eh].astype(dt, copy=False)  # (a new array: written below)
     edge_of_b = mesh.halfedge_edge[bh].astype(np.int64)
     back[edge_of_b] = eh[edge_of_b]  # (any face half-edge: written over below)
     mids = np.empty((E, 4), dtype=dt)
@@ -576,7 +576,7 @@ def _preserved_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
     mid_ring = np.delete(start_at_max(mids.reshape(-1), None, 4), 4 * edge_of_b + 3)
     # round the copy vertex of h: h, H + 5 prev[h] + 3, H + 5h + 4
     copies = _copy_rings(prv, H, dt)
-    sizes = np.full(E, 4, dtype=np.int64)
+    sizes = np.full(E, 4, dtype=dt)
     sizes[edge_of_b] = 3
     out_off = np.empty(n + E + H + 1, dtype=dt)
     out_off[: n + 1] = ring_off
