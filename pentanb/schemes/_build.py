@@ -626,7 +626,7 @@ def open_vertex_faces(
     ----------
     mesh : Mesh
         An open mesh.
-    items : tuple of (H,) int
+    items : tuple of one or two (H,) int
         What every face half-edge of a ring contributes, in order.
     entering, leaving : (B,) int
         What every boundary edge contributes to the face of its head, of its tail.
