@@ -1080,6 +1080,35 @@ def test_start_at_max_turns_every_row_to_its_largest_in_blocks_of_one_size_or_no
     assert got.tolist() == want and got.dtype == ring.dtype
 
 
+@pytest.mark.parametrize("dt", [np.int32, np.int64])
+@pytest.mark.parametrize("k", [1, 2, 3, 4, 6, 7])
+def test_start_at_max_turns_rows_of_one_size_with_ties_and_extreme_values(k, dt):
+    # rows of up to 6 are turned by selects and sums that wrap around: the
+    # first of equal largest entries must lead, whatever the values
+    from pentanb import _jit
+    from pentanb.schemes._build import start_at_max
+
+    rng = np.random.default_rng(k)
+    low, high = np.iinfo(dt).min, np.iinfo(dt).max
+    rows = np.concatenate(
+        [
+            rng.integers(-1, 3, (200, k)),  # many ties
+            rng.choice([low, high, -1, 0], (200, k)),
+            rng.integers(low, high, (200, k), endpoint=True),
+        ]
+    ).astype(dt)
+    want = []
+    for row in rows.tolist():
+        top = row.index(max(row))
+        want.extend(row[top:] + row[:top])
+    before = _jit.use_jit(False)
+    try:
+        got = start_at_max(rows.reshape(-1), None, k)
+    finally:
+        _jit.use_jit(before)
+    assert got.tolist() == want and got.dtype == dt
+
+
 @pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
 @pytest.mark.parametrize("first", ["vertex_ring", "twin", "boundary_halfedges", "n_edges"])
 @pytest.mark.parametrize("name", list(WRITTEN))

@@ -37,6 +37,7 @@ from ._build import (
     remeshed,
     scale_safe,
     start_at_max,
+    turned,
 )
 
 __all__ = ["pentagonalize", "preserve_pentagons"]
@@ -300,26 +301,33 @@ def _pentagonalized_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
             hole.reshape(-1),
             dt,
         )
-    n = ring_off.size - 1
+    n, N, B = ring_off.size - 1, ring.size, bh.size
+    P = 6 * E - B  # the trisection points' ring entries: 3 each, 2 for t2 of a boundary edge
+    rings = np.empty(N + P + H, dtype=dt)  # old vertices, trisection points, centres
     # round an old vertex: 5 prev[h] + 2, the hole half-edge for the input's
-    old = prv.take(np.minimum(ring, H - 1))
+    old = rings[:N]
+    prv.take(ring, mode="clip", out=old)  # (a hole half-edge: any, written over)
     old *= 5
     old += 2
     hp = np.flatnonzero(ring >= H)
     old[hp] = hole[ring[hp] - H, 2]
-    # round the trisection points, 3 each ((E, 2, 3): the edge's points 2e, 2e + 1)
-    back = mesh.twin.astype(dt, copy=True)[eh]
+    # round the trisection points, 3 each ((E, 2, 3): the edge's points 2e,
+    # 2e + 1), every row turned to start at its largest
+    back = mesh.twin[eh].astype(dt, copy=False)  # (a new array: written below)
     edge_of_b = mesh.halfedge_edge[bh].astype(np.int64)
     back[edge_of_b] = eh[edge_of_b]  # (any face half-edge: written over below)
     pts = np.empty((E, 2, 3), dtype=dt)
-    for s, (part, add) in enumerate(((eh, 0), (prv[eh], 3), (back, 1))):
-        col = part * 5
-        col += add
-        pts[:, 0, s] = col
-    for s, (part, add) in enumerate(((back, 0), (prv[back], 3), (eh, 1))):
-        col = part * 5
-        col += add
-        pts[:, 1, s] = col
+    for p, parts in enumerate(
+        (((eh, 0), (prv[eh], 3), (back, 1)), ((back, 0), (prv[back], 3), (eh, 1)))
+    ):
+        cols = []
+        for part, add in parts:
+            col = part * 5
+            col += add
+            cols.append(col)
+        turned(cols, pts[:, p])
+        del cols
+    # on the boundary, rows that start at their largest (the hole half-edge)
     b = bh.astype(np.int64)
     t1 = (mesh.corners[bh] > mesh.head[bh]).astype(np.int64)  # t1 is 2e + 1 when b runs down
     pb = prv[bh].astype(np.int64)
@@ -328,14 +336,21 @@ def _pentagonalized_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
     pts[edge_of_b, t1, 2] = 5 * pb + 3
     pts[edge_of_b, 1 - t1, 0] = hole[:, 1]
     pts[edge_of_b, 1 - t1, 1] = 5 * b + 1
-    pts[edge_of_b, 1 - t1, 2] = -1  # t2: two half-edges
-    flat = start_at_max(pts.reshape(-1), None, 3)  # (a hole half-edge is the largest)
-    pad = 3 * (2 * edge_of_b + 1 - t1) + 2  # where the -1 sits: the last of t2's row
-    points = np.delete(flat, pad)
-    # round the centre of f: 5h + 4 for f's half-edges
-    offsets, k = mesh.offsets, _mesh.uniform_size(mesh)
-    centres = start_at_max(np.arange(4, 5 * H, 5, dtype=dt), offsets, k)
-    sizes = np.full(2 * E, 3, dtype=np.int64)
+    # t2: two half-edges, its row's last place left out
+    written = np.ones(6 * E, dtype=bool)
+    written[3 * (2 * edge_of_b + 1 - t1) + 2] = False
+    rings[N : N + P] = pts.reshape(-1)[written]
+    del pts, written
+    # round the centre of f: 5h + 4 for f's half-edges, from its last (the
+    # largest) on: 5 (h - 1) + 4, and 5 (last h) + 4 at its first
+    offsets = mesh.offsets
+    centres = rings[N + P :]
+    centres[:] = np.arange(-1, 5 * H - 1, 5, dtype=dt)
+    last = offsets[1:].astype(dt)
+    last *= 5
+    last -= 1
+    centres[offsets[:-1]] = last
+    sizes = np.full(2 * E, 3, dtype=dt)
     sizes[2 * edge_of_b + 1 - t1] = 2
     out_off = np.empty(n + 2 * E + mesh.n_faces + 1, dtype=dt)
     out_off[: n + 1] = ring_off
@@ -343,7 +358,7 @@ def _pentagonalized_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
     out_off[n + 1 : n + 2 * E + 1] += ring_off[-1]
     out_off[n + 2 * E + 1 :] = offsets[1:]
     out_off[n + 2 * E + 1 :] += out_off[n + 2 * E]
-    return np.concatenate([old, points, centres]), out_off
+    return rings, out_off
 
 
 def _pentagonalized_rings(mesh, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
@@ -541,13 +556,13 @@ def _preserved_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
         return jit.preserved_open_rings(ring, ring_off, eh, mesh.twin, prv, hole.reshape(-1), dt)
     n = ring_off.size - 1
     # round an old vertex: H + 5 prev[h] + 1, the hole half-edge for the input's
-    old = prv.take(np.minimum(ring, H - 1))
+    old = prv.take(ring, mode="clip")  # (a hole half-edge: any, written over)
     old *= 5
     old += H + 1
     hp = np.flatnonzero(ring >= H)
     old[hp] = hole[ring[hp] - H, 1]
     # round the midpoints, 4 each (3 on the boundary)
-    back = mesh.twin.astype(dt, copy=True)[eh]
+    back = mesh.twin[eh].astype(dt, copy=False)  # (a new array: written below)
     edge_of_b = mesh.halfedge_edge[bh].astype(np.int64)
     back[edge_of_b] = eh[edge_of_b]  # (any face half-edge: written over below)
     mids = np.empty((E, 4), dtype=dt)
@@ -561,7 +576,7 @@ def _preserved_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
     mid_ring = np.delete(start_at_max(mids.reshape(-1), None, 4), 4 * edge_of_b + 3)
     # round the copy vertex of h: h, H + 5 prev[h] + 3, H + 5h + 4
     copies = _copy_rings(prv, H, dt)
-    sizes = np.full(E, 4, dtype=np.int64)
+    sizes = np.full(E, 4, dtype=dt)
     sizes[edge_of_b] = 3
     out_off = np.empty(n + E + H + 1, dtype=dt)
     out_off[: n + 1] = ring_off
