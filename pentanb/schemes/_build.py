@@ -561,9 +561,15 @@ def boundary_corners(mesh: Mesh, nxt: np.ndarray | None = None) -> np.ndarray:
     -------
     (C,) int
     """
-    bh = mesh.boundary_halfedges
-    if not bh.size:
+    if not mesh.boundary_halfedges.size:
         return np.zeros(0, dtype=np.int64)
+    head, corner = _corner_heads(mesh, nxt)
+    return np.sort(head[corner]).astype(np.int64)
+
+
+def _corner_heads(mesh: Mesh, nxt: np.ndarray | None) -> tuple[np.ndarray, np.ndarray]:
+    """The head of every boundary half-edge ``bh[j]`` and whether it is a corner ((B,) bool)."""
+    bh = mesh.boundary_halfedges
     v = mesh.vertices
     if nxt is None:
         nxt = boundary_next(mesh.offsets, bh, _mesh.uniform_size(mesh))
@@ -582,17 +588,42 @@ def boundary_corners(mesh: Mesh, nxt: np.ndarray | None = None) -> np.ndarray:
         cos = np.einsum("ij,ij->i", a, b) / (norm(a) * norm(b))
     sharp = cos < np.cos(np.radians(CORNER_ANGLE))  # (NaN, a zero-length edge: no corner)
     one_face = nxt == bh[after]  # the edge leaving head[bh[j]] is on the same face
-    return np.sort(head[sharp & one_face]).astype(np.int64)
+    return head, sharp & one_face
 
 
-def corner_ids(mesh: Mesh, first: int, nxt: np.ndarray | None = None) -> np.ndarray:
-    """(n,) int: the output vertex keeping every corner (numbered from ``first``
-    in vertex order), -1 at every other vertex (``nxt``: see :func:`boundary_corners`)."""
-    at = boundary_corners(mesh, nxt)
-    wide = first + at.size >= np.iinfo(np.int32).max
-    ids = np.full(mesh.n_vertices, -1, dtype=np.int64 if wide else np.int32)
-    ids[at] = np.arange(first, first + at.size)
-    return ids
+def corner_ids(
+    mesh: Mesh, first: int, nxt: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """The output vertices that keep the corners of an open mesh's boundary.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        An open mesh (B boundary edges, C corners).
+    first : int
+        The output vertex of the first corner; the corners are numbered on
+        from it in vertex order.
+    nxt : (B,) int, optional
+        ``next`` of every boundary half-edge (:func:`boundary_next`).
+
+    Returns
+    -------
+    keep : (B,) int64
+        For every boundary half-edge ``bh[j]``, the output vertex keeping
+        its head, -1 where that is not a corner (a boundary vertex is the
+        head of one boundary half-edge: no array the size of the mesh).
+    at : (C,) int64
+        The corners in increasing order (:func:`boundary_corners`).
+    """
+    bh = mesh.boundary_halfedges
+    if not bh.size:
+        return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
+    head, corner = _corner_heads(mesh, nxt)
+    js = np.flatnonzero(corner)
+    js = js[np.argsort(head[js])]
+    keep = np.full(bh.size, -1, dtype=np.int64)
+    keep[js] = np.arange(first, first + js.size)
+    return keep, head[js].astype(np.int64)
 
 
 def loop_successor(mesh: Mesh) -> np.ndarray:
@@ -615,7 +646,7 @@ def open_vertex_faces(
     items: tuple[np.ndarray, ...],
     entering: np.ndarray,
     leaving: np.ndarray,
-    kept: np.ndarray | None = None,
+    keep: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """A face round every vertex of an open mesh, from its vertex ring (CSR, int64).
 
@@ -624,7 +655,7 @@ def open_vertex_faces(
     writes.  Round a boundary vertex v, whose ring is its hole half-edge
     ``H + j`` then its face half-edges from the boundary edge it leaves
     by: ``entering[j]`` (a point for the boundary edge ``bh[j]`` that
-    enters v), ``kept[v]`` when it is not -1 (v itself, kept: a corner),
+    enters v), ``keep[j]`` when it is not -1 (v itself, kept: a corner),
     ``leaving[j']`` (a point for the boundary edge ``bh[j']`` that leaves
     v), then the items of the face half-edges.  Counter-clockwise, as the
     faces round interior vertices.
@@ -637,20 +668,20 @@ def open_vertex_faces(
         What every face half-edge of a ring contributes, in order.
     entering, leaving : (B,) int
         What every boundary edge contributes to the face of its head, of its tail.
-    kept : (n,) int, optional
-        The output vertex that keeps a boundary vertex, -1 where none does
-        (:func:`corner_ids`).
+    keep : (B,) int, optional
+        The output vertex that keeps the head of ``bh[j]``, -1 where none
+        does (:func:`corner_ids`).
 
     Returns
     -------
     corners : int64 array
     offsets : (n + 1,) int64
     """
-    return placed_vertex_faces(mesh, items, entering, leaving, kept)
+    return placed_vertex_faces(mesh, items, entering, leaving, keep)
 
 
 def open_dual_faces(
-    mesh: Mesh, kept: np.ndarray, n_out: int, nxt: np.ndarray | None = None
+    mesh: Mesh, keep: np.ndarray, n_out: int, nxt: np.ndarray | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """The faces of the dual of an open mesh: :func:`open_vertex_faces` with the
     face of every ring half-edge, ``F + j`` for the boundary edge ``bh[j]``.
@@ -662,7 +693,7 @@ def open_dual_faces(
     ----------
     mesh : Mesh
         An open mesh (F faces, B boundary edges).
-    kept : (n,) int
+    keep : (B,) int
         :func:`corner_ids` of ``mesh`` (numbered from ``F + B``).
     n_out : int
         The dual's number of vertices.
@@ -686,11 +717,10 @@ def open_dual_faces(
         # the face of every ring entry, as the closed dual's corners (a hole
         # half-edge's: any, written over)
         if k:
-            return opened_ring_items(mesh, ring, 1, mids, mids, kept, n_out, nxt, k)
+            return opened_ring_items(mesh, ring, 1, mids, mids, keep, n_out, nxt, k)
         face = mesh.halfedge_face.take(ring, mode="clip")
-        return opened_ring_items(mesh, face, 1, mids, mids, kept, n_out, nxt)
+        return opened_ring_items(mesh, face, 1, mids, mids, keep, n_out, nxt)
     heads = mesh.corners[nxt]  # the boundary vertices: hole half-edge H + j starts at heads[j]
-    keep = kept[heads]
     leave = mids[loop_successor(mesh)]
     total = ring.size + bh.size + int(np.count_nonzero(keep >= 0))
     face = ring[:0] if k else mesh.halfedge_face
@@ -711,12 +741,13 @@ def open_dual_faces(
 
 
 def ring_places(
-    mesh: Mesh, kept: np.ndarray | None, per: int, n_out: int | None = None
+    mesh: Mesh, keep: np.ndarray | None, per: int, n_out: int | None = None
 ) -> tuple[np.ndarray, int, np.dtype, np.ndarray, np.ndarray, np.ndarray]:
     """Where every vertex ring entry of an open mesh goes in :func:`open_vertex_faces`.
 
-    A face half-edge gives ``per`` items, a hole half-edge 2 (3 where its
-    tail is kept: ``kept`` not -1 there).  ``n_out``, the output's number of
+    A face half-edge gives ``per`` items, a hole half-edge ``H + j`` 2 (3
+    where its tail, the head of ``bh[j]``, is kept: ``keep[j]`` not -1,
+    :func:`corner_ids`).  ``n_out``, the output's number of
     vertices when known, gives the output's index dtype
     (:func:`index_dtype`) instead of int64.
 
@@ -734,17 +765,13 @@ def ring_places(
     j : (B,) int
         Which boundary half-edge each is the hole half-edge of (``H + j``).
     keep : (B,) int
-        ``kept`` at its tail (the head of ``bh[j]``), or -1.
+        ``keep[j]`` of every one (the output vertex keeping its tail), or -1.
     """
     ring, _ = mesh.vertex_ring
     H, N = mesh.n_halfedges, ring.size
     hp = np.flatnonzero(ring >= H)  # the hole half-edges' places: few
     j = ring[hp].astype(np.int64) - H
-    if kept is None:
-        keep = np.full(j.size, -1, dtype=np.int64)
-    else:  # v, the hole half-edge's tail: the head of bh[j] (next's tail)
-        bh = mesh.boundary_halfedges
-        keep = kept[mesh.corners[boundary_next(mesh.offsets, bh[j], _mesh.uniform_size(mesh))]]
+    keep = np.full(j.size, -1, dtype=np.int64) if keep is None else keep[j]
     count = 2 + (keep >= 0)  # what every hole half-edge gives, the others ``per``
     # at[i] = per * i + what the hole half-edges before i give beyond ``per``
     shift = np.zeros(hp.size + 1, dtype=np.int64)
@@ -763,7 +790,7 @@ def placed_vertex_faces(
     items: tuple[np.ndarray, ...],
     entering: np.ndarray,
     leaving: np.ndarray,
-    kept: np.ndarray | None = None,
+    keep: np.ndarray | None = None,
     n_out: int | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """:func:`open_vertex_faces`, the corners of the output's index dtype when
@@ -774,7 +801,7 @@ def placed_vertex_faces(
     values = np.empty((ring.size, len(items)), dtype=np.result_type(*items))
     for s, item in enumerate(items):
         values[:, s] = item.take(ring, mode="clip")
-    return opened_ring_items(mesh, values.reshape(-1), len(items), entering, leaving, kept, n_out)
+    return opened_ring_items(mesh, values.reshape(-1), len(items), entering, leaving, keep, n_out)
 
 
 def opened_ring_items(
@@ -783,7 +810,7 @@ def opened_ring_items(
     per: int,
     entering: np.ndarray,
     leaving: np.ndarray,
-    kept: np.ndarray | None = None,
+    keep: np.ndarray | None = None,
     n_out: int | None = None,
     nxt: np.ndarray | None = None,
     k: int = 1,
@@ -806,7 +833,7 @@ def opened_ring_items(
         What every ring entry gives (a hole half-edge's: any).
     per : int
         1 or 2.
-    entering, leaving, kept
+    entering, leaving, keep
         As for :func:`open_vertex_faces`.
     n_out : int, optional
         The output's number of vertices: the corners are of its index
@@ -829,7 +856,8 @@ def opened_ring_items(
     if nxt is None:
         nxt = boundary_next(mesh.offsets, bh, _mesh.uniform_size(mesh))
     v = mesh.corners[nxt]  # the tail of the hole half-edge H + j: first in its ring
-    keep = np.full(bh.size, -1, dtype=np.int64) if kept is None else kept[v]
+    if keep is None:
+        keep = np.full(bh.size, -1, dtype=np.int64)
     count = 2 + (keep >= 0)  # what every hole half-edge gives, the others ``per``
     total = per * ring.size + int(np.sum(count - per))
     dt = np.dtype(np.int64) if n_out is None else index_dtype(n_out, total)

@@ -403,7 +403,7 @@ def _open_corner_cutting(mesh: Mesh, s: float) -> Mesh:
     H, E = mesh.n_halfedges, mesh.n_edges
     bh = mesh.boundary_halfedges
     B = bh.size
-    kept = corner_ids(mesh, H + 2 * B)
+    keep, at = corner_ids(mesh, H + 2 * B)
     nxt, twin = mesh.next.astype(np.int64), mesh.twin.astype(np.int64)
     eh = mesh.edge_halfedge.astype(np.int64)
     t = twin[eh]
@@ -420,13 +420,12 @@ def _open_corner_cutting(mesh: Mesh, s: float) -> Mesh:
     quads[~inner, 3] = H + 2 * jb + 1
     h = np.arange(H, dtype=np.int64)
     near_tail = H + 2 * np.arange(B, dtype=np.int64)
-    faces, face_off = open_vertex_faces(mesh, (h,), near_tail + 1, near_tail, kept)
+    faces, face_off = open_vertex_faces(mesh, (h,), near_tail + 1, near_tail, keep)
     corners = np.concatenate([h, quads.reshape(-1), faces])
     offsets = np.concatenate(
         [mesh.offsets, np.arange(H + 4, H + 4 * E + 1, 4), H + 4 * E + face_off[1:]]
     )
     v = mesh.vertices
-    at = np.flatnonzero(kept >= 0)
     points = np.empty((H + 2 * B + at.size, 3))
     points[:H] = _corner_points(mesh, s)
     a, b = v[mesh.corners[bh]], v[mesh.head[bh]]
@@ -691,12 +690,11 @@ def _open_honeycomb(mesh: Mesh) -> Mesh:
     B = bh.size
     h = np.arange(H, dtype=np.int64)
     mids = np.arange(H, H + B, dtype=np.int64)
-    kept = corner_ids(mesh, H + B)
-    faces, face_off = open_vertex_faces(mesh, (h, mesh.prev.astype(np.int64)), mids, mids, kept)
+    keep, at = corner_ids(mesh, H + B)
+    faces, face_off = open_vertex_faces(mesh, (h, mesh.prev.astype(np.int64)), mids, mids, keep)
     corners = np.concatenate([h, faces])
     offsets = np.concatenate([mesh.offsets, H + face_off[1:]])
     v, centres = mesh.vertices, mesh.face_centroids
-    at = np.flatnonzero(kept >= 0)
     points = np.empty((H + B + at.size, 3))
     points[:H] = (v[mesh.corners] + v[mesh.head] + centres[mesh.halfedge_face]) / 3.0
     a, b = v[mesh.corners[bh]], v[mesh.head[bh]]

@@ -150,14 +150,14 @@ def _open_dual(mesh: Mesh) -> Mesh:
     F, bh = mesh.n_faces, mesh.boundary_halfedges
     B = bh.size
     nxt = boundary_next(mesh.offsets, bh, _mesh.uniform_size(mesh))
-    kept = corner_ids(mesh, F + B, nxt)
-    n_out = F + B + int(np.count_nonzero(kept >= 0))
-    corners, offsets = open_dual_faces(mesh, kept, n_out, nxt)
-    return _open_dual_output(mesh, kept, corners, offsets, nxt)
+    keep, kept = corner_ids(mesh, F + B, nxt)
+    corners, offsets = open_dual_faces(mesh, keep, F + B + kept.size, nxt)
+    return _open_dual_output(mesh, keep, kept, corners, offsets, nxt)
 
 
 def _open_dual_output(
     mesh: Mesh,
+    keep: np.ndarray,
     kept: np.ndarray,
     corners: np.ndarray,
     offsets: np.ndarray,
@@ -166,7 +166,7 @@ def _open_dual_output(
 ) -> Mesh:
     """The dual of the open ``mesh`` from its faces (``nxt``: ``next`` of its
     boundary half-edges), with producers of its twins, rings and boundary, and
-    a record for its own dual.
+    a record for its own dual.  ``keep`` and ``kept``: :func:`corner_ids`.
 
     The faces of ``mesh``'s vertices go round their rings, from where the
     rings start; ``turned`` (the corners, offsets and size of the faces of
@@ -174,21 +174,20 @@ def _open_dual_output(
     faces instead, as they are (:func:`_open_dual_again`)."""
     F, bh = mesh.n_faces, mesh.boundary_halfedges
     B = bh.size
-    at = np.flatnonzero(kept >= 0)
     v = mesh.vertices
-    vertices = np.empty((F + B + at.size, 3))
+    vertices = np.empty((F + B + kept.size, 3))
     _mesh.face_centroids_into(mesh, vertices[:F])
     heads = mesh.corners[nxt]
     a, b = v.take(mesh.corners[bh], axis=0), v.take(heads, axis=0)
     vertices[F : F + B] = 0.5 * a + 0.5 * b  # (no sum that could overflow)
-    v.take(at, axis=0, out=vertices[F + B :])
+    v.take(kept, axis=0, out=vertices[F + B :])
     faces = _mesh.faces_only(mesh)
-    one = (kept[heads] < 0).astype(np.int64)  # boundary half-edges at head(bh[j]): 1 or 2
+    one = (keep < 0).astype(np.int64)  # boundary half-edges at head(bh[j]): 1 or 2
     n_out, size = vertices.shape[0], corners.size
     dt = index_dtype(n_out, size)
 
     def connectivity() -> Several:  # from where the ring entries went in the faces
-        at = ring_places(faces, kept, 1, n_out)[0]
+        at = ring_places(faces, keep, 1, n_out)[0]
         if turned is not None:
             H = turned[0].size
             at[:H] = _unturned(*turned).take(at[:H])
@@ -254,7 +253,7 @@ def _open_dual_again(
     # mesh's boundary half-edges are the first one or two of their faces
     # (see _open_dual_chain), of at least 3 sides: the next is the one after
     nxt = bh1.astype(np.int64) + 1
-    kept = corner_ids(mesh, F1 + B1, nxt)
+    keep, kept = corner_ids(mesh, F1 + B1, nxt)
     # where mesh's boundary half-edges base[j] (and base[j] + 1) are in bh1
     chain, chain_off = _open_dual_chain(base, one, loops)
     where = np.empty(B1, dtype=np.int64)
@@ -278,7 +277,7 @@ def _open_dual_again(
     quads[:, 3] = tail
     two = np.flatnonzero(one == 0)
     two = two[np.argsort(head[two], kind="stable")]  # source's corners in vertex order
-    still = kept[F + B + np.arange(two.size)]
+    still = keep[where[first[two]] - F1]  # at mesh's vertex F + B + c, the head of base[j]
     ends = np.empty((two.size, 4), dtype=np.int64)
     ends[:, 0] = index(two)
     ends[:, 1] = still
@@ -288,8 +287,7 @@ def _open_dual_again(
     ends_flat = ends_flat[ends_flat >= 0]
     offsets_in = source_offsets
     H = int(offsets_in[-1])
-    at = np.flatnonzero(kept >= 0)
-    n_out = F1 + B1 + at.size
+    n_out = F1 + B1 + kept.size
     total = H + 4 * B + ends_flat.size
     dt = index_dtype(n_out, total)
     corners = np.empty(total, dtype=dt)
@@ -301,7 +299,7 @@ def _open_dual_again(
     offsets[F + 1 : F + B + 1] = H + 4 * np.arange(1, B + 1)
     offsets[F + B + 1 :] = H + 4 * B + np.cumsum(3 + (still >= 0))
     turned = (source_corners, source_offsets, k)
-    return _open_dual_output(mesh, kept, corners, offsets, nxt, turned)
+    return _open_dual_output(mesh, keep, kept, corners, offsets, nxt, turned)
 
 
 def _unturned(corners: np.ndarray, offsets: np.ndarray, k: int) -> np.ndarray:
