@@ -468,6 +468,22 @@ def turn3(x0, x1, x2):  # pragma: no cover - compiled
 
 
 @inline
+def turn3_with(x0, x1, x2, f0, f1, f2):  # pragma: no cover - compiled
+    # turn3 of (x0, x1, x2), and (f0, f1, f2) turned alike
+    up = x1 > x0
+    top, ftop = (x1, f1) if up else (x0, f0)
+    last = x2 > top
+    return (
+        x2 if last else top,
+        x0 if last else (x2 if up else x1),
+        x1 if last else (x0 if up else x2),
+        f2 if last else ftop,
+        f0 if last else (f2 if up else f1),
+        f1 if last else (f0 if up else f2),
+    )
+
+
+@inline
 def rows4(x0, x1, x2, x3):  # pragma: no cover - compiled
     # as rows3, for four entries
     top, best = 0, x0
@@ -815,7 +831,8 @@ def bounds(points, lo, hi):  # pragma: no cover - compiled
 def faces_of_run(ring, a, b, k, face, out, d):  # pragma: no cover - compiled
     # out[i + d] = the face of half-edge ring[i] for i in a:b: ring[i] // k when
     # every face is a k-gon (a loop per usual k, which LLVM vectorizes: a
-    # constant divisor inside the loop, not a test of k per entry), else face[ring[i]]
+    # constant divisor inside the loop, not a test of k per entry), face[i]
+    # when k < 0 (the faces of the ring entries), else face[ring[i]]
     if k == 4:
         for i in range(a, b):
             out[ix(i + d)] = ring[ix(i)] // 4
@@ -828,6 +845,9 @@ def faces_of_run(ring, a, b, k, face, out, d):  # pragma: no cover - compiled
     elif k > 0:
         for i in range(a, b):
             out[ix(i + d)] = quo(ring[ix(i)], k)
+    elif k < 0:  # face[i]: the face of ring entry i, written with the rings
+        for i in range(a, b):
+            out[ix(i + d)] = face[ix(i)]
     else:
         for i in range(a, b):
             out[ix(i + d)] = face[ix(ring[ix(i)])]
@@ -946,13 +966,23 @@ def pentagonalized_open_rings(ring, ring_off, eh, twin, prv, tail, head, offsets
 
 
 @jit
-def preserved_open_fill(ring, ring_off, eh, twin, prv, hole, out, out_off):  # pragma: no cover
+def preserved_open_fill(
+    ring, ring_off, eh, twin, prv, hole, face_in, F, out, out_off, faces
+):  # pragma: no cover - compiled
+    # with the face of every ring entry, as the closed kernels write it (a
+    # hole half-edge's: 0, which the dual writes over)
     H, N, n = prv.size, ring.size, ring_off.size - 1
-    # round an old vertex: H + 5 prev[h] + 1 in its order; its hole
-    # half-edge's: the hole half-edge along the second half of the input's
+    # round an old vertex: H + 5 prev[h] + 1 in its order (pentagon F +
+    # prev[h]); its hole half-edge's: the hole half-edge along the second
+    # half of the input's
     for i in range(N):
         h = ring[ix(i)]
-        out[ix(i)] = H + 5 * prv[ix(h)] + 1 if h < H else hole[ix(2 * (h - H) + 1)]
+        if h < H:
+            out[ix(i)] = H + 5 * prv[ix(h)] + 1
+            faces[ix(i)] = F + prv[ix(h)]
+        else:
+            out[ix(i)] = hole[ix(2 * (h - H) + 1)]
+            faces[ix(i)] = 0
     for v in range(n + 1):
         out_off[ix(v)] = ring_off[ix(v)]
     # round the midpoint of edge e (h = eh[e]): H + 5h, H + 5 prev[h] + 2,
@@ -967,28 +997,39 @@ def preserved_open_fill(ring, ring_off, eh, twin, prv, hole, out, out_off):  # p
             x0, x1, x2, x3 = H + 5 * h, H + 5 * p + 2, H + 5 * t, H + 5 * prv[ix(t)] + 2
             p0, p1, p2, p3 = rows4(x0, x1, x2, x3)
             out[ix(r + p0)], out[ix(r + p1)], out[ix(r + p2)], out[ix(r + p3)] = x0, x1, x2, x3
+            faces[ix(r + p0)], faces[ix(r + p1)] = F + h, F + p
+            faces[ix(r + p2)], faces[ix(r + p3)] = F + t, F + prv[ix(t)]
             r += 4
         else:
             out[ix(r)], out[ix(r + 1)] = hole[ix(2 * (t - H))], H + 5 * h
             out[ix(r + 2)] = H + 5 * p + 2
+            faces[ix(r)], faces[ix(r + 1)], faces[ix(r + 2)] = 0, F + h, F + p
             r += 3
         out_off[ix(n + 1 + e)] = r
     # round the copy vertex of h: h, H + 5 prev[h] + 3, H + 5h + 4, turned
+    # (faces: the copy of h's face, the pentagons F + prev[h] and F + h)
     k = n + 1 + eh.size
     for h in range(H):
-        out[ix(r)], out[ix(r + 1)], out[ix(r + 2)] = turn3(h, H + 5 * prv[ix(h)] + 3, H + 5 * h + 4)
+        p = prv[ix(h)]
+        y0, y1, y2, f0, f1, f2 = turn3_with(
+            h, H + 5 * p + 3, H + 5 * h + 4, face_in[ix(h)], F + p, F + h
+        )
+        out[ix(r)], out[ix(r + 1)], out[ix(r + 2)] = y0, y1, y2
+        faces[ix(r)], faces[ix(r + 1)], faces[ix(r + 2)] = f0, f1, f2
         r += 3
         out_off[ix(k + h)] = r
 
 
-def preserved_open_rings(ring, ring_off, eh, twin, prv, hole, dt):
+def preserved_open_rings(ring, ring_off, eh, twin, prv, hole, face_in, F, dt):
     # the vertex rings of preserve_pentagons(mesh) for an open mesh and their
-    # offsets (pentagonal._preserved_open_rings): 6H + 2B entries, n + E + H rings
+    # offsets (pentagonal._preserved_open_rings): 6H + 2B entries, n + E + H
+    # rings; and the face of every entry (the dual's corners, but at the boundary)
     H, B, E = prv.size, ring.size - prv.size, eh.size
     out = np.empty(6 * H + 2 * B, dt)
     out_off = np.empty(ring_off.size + E + H, dt)
-    preserved_open_fill(ring, ring_off, eh, twin, prv, hole, out, out_off)
-    return out, out_off
+    faces = np.empty(out.size, dt)
+    preserved_open_fill(ring, ring_off, eh, twin, prv, hole, face_in, F, out, out_off, faces)
+    return out, out_off, faces
 
 
 # -- validation: the vertex rings of a mesh with or without boundary -------------------

@@ -174,6 +174,14 @@ def face_centroids_into(mesh: Mesh, out: np.ndarray) -> np.ndarray:
     )
 
 
+def written_ring_faces(mesh: Mesh) -> IntArray | None:
+    """The face of every entry of an open ``mesh``'s vertex rings (a hole
+    half-edge's: any), when the operator that made it wrote them with its
+    rings; taken (the array becomes the caller's), else None.  Ask for
+    :attr:`Mesh.vertex_ring` first."""
+    return mesh._shared.values.pop("_ring_faces", None)
+
+
 def extent(mesh: Mesh) -> float:
     """The largest absolute coordinate of ``mesh`` (an upper bound for operator outputs)."""
     return float(mesh._extent)

@@ -712,10 +712,13 @@ def open_dual_faces(
     k = _mesh.uniform_size(mesh)
     if nxt is None:
         nxt = boundary_next(mesh.offsets, bh, k)
+    written = _mesh.written_ring_faces(mesh)  # the face of every ring entry, or None
     jit = _jit.kernels(ring.size)
     if jit is None:
         # the face of every ring entry, as the closed dual's corners (a hole
         # half-edge's: any, written over)
+        if written is not None:
+            return opened_ring_items(mesh, written, 1, mids, mids, keep, n_out, nxt)
         if k:
             return opened_ring_items(mesh, ring, 1, mids, mids, keep, n_out, nxt, k)
         face = mesh.halfedge_face.take(ring, mode="clip")
@@ -723,7 +726,10 @@ def open_dual_faces(
     heads = mesh.corners[nxt]  # the boundary vertices: hole half-edge H + j starts at heads[j]
     leave = mids[loop_successor(mesh)]
     total = ring.size + bh.size + int(np.count_nonzero(keep >= 0))
-    face = ring[:0] if k else mesh.halfedge_face
+    if written is not None:
+        face, k = written, -1  # (the kernel reads face[i] for ring entry i)
+    else:
+        face = ring[:0] if k else mesh.halfedge_face
     bj = np.argsort(heads)
     return jit.open_dual_faces(
         ring,

@@ -213,7 +213,11 @@ def _open_output(mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_
 
     def rings() -> Several:
         hole, loops = boundary()
-        return Several(vertex_ring=rings_of(faces, hole, dt), _boundary=loops)
+        made = rings_of(faces, hole, dt)
+        if isinstance(made, Several):  # with the face of every ring entry
+            made["_boundary"] = loops
+            return made
+        return Several(vertex_ring=made, _boundary=loops)
 
     out = output(vertices, corners, offsets, twin=twin, rings=rings, **kw)
     _mesh.note_boundary(out, lambda: boundary()[1])
@@ -536,7 +540,7 @@ def _preserved_open_twin(mesh, bh_out: np.ndarray, dt: np.dtype) -> np.ndarray:
     return hole_twins(out, bh_out)
 
 
-def _preserved_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
+def _preserved_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings | Several:
     """The vertex rings of ``preserve_pentagons(mesh)`` for an open ``mesh``.
 
     The rings are :func:`_preserved_rings`', each turned to start at its
@@ -552,8 +556,14 @@ def _preserved_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
     ring, ring_off = mesh.vertex_ring
     eh = mesh.edge_halfedge.astype(dt, copy=False)
     jit = _jit.kernels(6 * H)
-    if jit is not None:  # the same rings and offsets, written in one pass
-        return jit.preserved_open_rings(ring, ring_off, eh, mesh.twin, prv, hole.reshape(-1), dt)
+    if jit is not None:  # the same rings and offsets, written in one pass, with
+        # the face of every ring entry (the open dual's corners but at the
+        # boundary), as the closed kernels write them
+        face_in = mesh.halfedge_face.astype(dt, copy=False)
+        rings, offsets, faces = jit.preserved_open_rings(
+            ring, ring_off, eh, mesh.twin, prv, hole.reshape(-1), face_in, mesh.n_faces, dt
+        )
+        return Several(vertex_ring=(rings, offsets), _ring_faces=faces)
     n = ring_off.size - 1
     # round an old vertex: H + 5 prev[h] + 1, the hole half-edge for the input's
     old = prv.take(ring, mode="clip")  # (a hole half-edge: any, written over)
