@@ -345,7 +345,8 @@ def test_pairing_in_small_blocks_finds_the_boundary_and_every_third_half_edge(
     assert np.array_equal(pair_open(tail, head, n), want)
     twin, alone = pair_halfedges(tail, head, n)
     assert np.array_equal(twin, want) and alone.tolist() == np.flatnonzero(want < 0).tolist()
-    lone = [[], [n, n + 1]]  # an odd number of half-edges, or an even one
+    v = m.n_vertices
+    lone = [[], [v, v + 1]]  # an odd number of half-edges, or an even one
     for h in range(tail.size):
         u, w = int(tail[h]), int(head[h])
         for t, hd in ([u], [w]), ([w], [u]), ([u], [u]):
@@ -357,6 +358,36 @@ def test_pairing_in_small_blocks_finds_the_boundary_and_every_third_half_edge(
                     assert np.array_equal(got, reference_twins(more_t, more_h))
                 else:  # a directed edge twice, three half-edges on one edge, a loop
                     assert got is None, (h, t, hd, extra)
+
+
+@pytest.mark.parametrize("block", [4, 12])
+def test_pairing_quads_in_small_blocks_reads_the_heads_from_the_tails(block, monkeypatch):
+    # faces of 4 corners, their heads read from the tails (also where the
+    # sorted keys stop falling into pairs after blocks of interior edges)
+    from helpers import holed_grid
+
+    from pentanb.mesh import halfedge
+    from pentanb.mesh.boundary import pair_halfedges
+
+    monkeypatch.setattr(halfedge, "BLOCK", block)
+    v, q = holed_grid(4, 4, [(1, 1, 1)])
+    n = len(v)
+    inner = int(np.flatnonzero(~Mesh(v, q).is_boundary_vertex)[0])
+    quads = (q - inner) % n  # vertex 0 inside: the first edges are interior ones
+    tail, head = quads.reshape(-1), quads[:, [1, 2, 3, 0]].reshape(-1)
+    want = reference_twins(tail, head)
+    twin, alone = pair_halfedges(tail, None, n, 4)
+    assert np.array_equal(twin, want) and alone.tolist() == np.flatnonzero(want < 0).tolist()
+    for h in range(tail.size):
+        u, w = int(tail[h]), int(head[h])
+        for quad in [u, w, n, n + 1], [w, u, n, n + 1]:  # a quad on the edge, either way
+            got = pair_halfedges(np.append(tail, quad), None, n + 2, 4)
+            if want[h] < 0 and quad[0] == w:  # the boundary edge's other half
+                more_h = np.append(head, quad[1:] + quad[:1])
+                assert got is not None
+                assert np.array_equal(got[0], reference_twins(np.append(tail, quad), more_h))
+            else:  # a directed edge twice: three half-edges on one edge
+                assert got is None, (h, quad)
 
 
 @pytest.mark.parametrize("n_extra", [0, 2**28])  # a vertex count that splits the keys in parts

@@ -281,15 +281,9 @@ def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0, alone=None) -> b
     for a in range(0, size, step):
         t = tail[a : a + step]
         h = head_of(t, np.empty(0), k) if head is None else head[a : a + step]
-        lo = np.minimum(t, h)
-        part = key[a : a + step]
-        np.multiply(lo & mask if mask is not None else lo, np.int64(n), out=part)
-        part += np.maximum(t, h)
-        part <<= 1
-        part |= t > h
-        part <<= index_bits
-        part |= np.arange(a, a + part.size, dtype=np.int64)
-        del t, h, lo, part
+        at = np.arange(a, a + t.size, dtype=np.int64)
+        _pack(t, h, n, mask, index_bits, at, key[a : a + step])
+        del t, h, at
     key.sort()
     # the two halves of every edge must sit side by side: keys 2K and 2K + 1,
     # which differ in their lowest bit only; then the low bits say which
@@ -300,18 +294,36 @@ def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0, alone=None) -> b
             a += BLOCK
     if a >= size:
         return True
-    return alone is not None and _pair_rest(key, a, index_bits, ids, twin, alone)
+    if alone is None:
+        return False
+    if a:  # the last key paired (unpacked in place) packed again: its edge ends the pairs
+        h = key[a - 1 : a].copy()
+        _pack(tail[h], heads_at(tail, h, k, head), n, mask, index_bits, h, key[a - 1 : a])
+    return _pair_rest(key, a, index_bits, ids, twin, alone)
+
+
+def _pack(tail, head, n, mask, index_bits, at, out) -> None:
+    """Write the keys of :func:`pair_twins` of the half-edges ``tail -> head``
+    numbered ``at`` into ``out`` (``mask`` None: all bits of the smaller vertex)."""
+    lo = np.minimum(tail, head)
+    np.multiply(lo & mask if mask is not None else lo, np.int64(n), out=out)
+    out += np.maximum(tail, head)
+    out <<= 1
+    out |= tail > head
+    out <<= index_bits
+    out |= at
 
 
 def _pair_block(key: np.ndarray, index_bits: int, ids, twin: np.ndarray) -> bool:
     """Pair sorted keys two by two (see :func:`_pair_part`); False, writing nothing,
-    unless every two are the two half-edges of one edge."""
+    unless every two are the two half-edges of one edge.  The keys paired are
+    unpacked in place (left holding their half-edges)."""
     pair = np.bitwise_xor(key[0::2], key[1::2])
     pair >>= index_bits
     if not (pair == 1).all():
         return False
-    low = np.int64((1 << index_bits) - 1)
-    first, second = key[0::2] & low, key[1::2] & low
+    key &= np.int64((1 << index_bits) - 1)
+    first, second = key[0::2], key[1::2]
     if ids is not None:
         first, second = ids[first], ids[second]
     twin[first] = second
@@ -368,10 +380,12 @@ def vertex_rings(rotation, tail, valences, start=None):
     largest valence, not over vertices).  On a non-manifold vertex the orbit
     closes early; the ring then repeats half-edges, which ``_validate``
     detects.  ``start`` (n,), when given, is every vertex's first
-    half-edge; by default its last (largest) outgoing half-edge.
+    half-edge (then ``rotation`` may number more half-edges than ``tail``:
+    the ring holds ``valences.sum()`` of them, of ``start``'s dtype); by
+    default its last (largest) outgoing half-edge.
     """
     n = valences.size
-    dtype = tail.dtype
+    dtype = tail.dtype if start is None else start.dtype
     ring_off = np.zeros(n + 1, dtype=dtype)
     np.cumsum(valences, out=ring_off[1:])
     if start is None:
@@ -380,30 +394,45 @@ def vertex_rings(rotation, tail, valences, start=None):
         # numpy widens a scatter's index array, the whole of it at once otherwise)
         for a in range(0, tail.size, BLOCK):
             start[tail[a : a + BLOCK]] = np.arange(a, min(a + BLOCK, tail.size), dtype=dtype)
-    ring = np.empty(tail.size, dtype=dtype)
+    size = int(ring_off[-1])
     if n == 0:
-        return ring, ring_off
-    # every vertex has at least `low` edges: the first `low` steps run over
-    # all vertices in index order (writes in increasing order of address)
+        return np.empty(size, dtype=dtype), ring_off
     low, top = int(valences.min()), int(valences.max())
+    # the first steps run over all vertices in index order (writes in
+    # increasing order of address): `low` of them, or, when all but a few
+    # vertices (an eighth) have more edges, as many as those have; the few
+    # (none unused: every vertex has a start) write their extra steps to a
+    # spare slot past the end
+    full = low
+    if 0 < low < top:
+        ended = np.cumsum(np.bincount(valences))  # the vertices of at most k edges
+        while full < top and ended[full] <= n // 8:
+            full += 1
+    ring = np.empty(size + (full > low), dtype=dtype)
+    shorter = np.flatnonzero(valences < full) if full > low else None
     base = ring_off[:-1]
     cur = start
-    for k in range(low):
+    for k in range(full):
         if k:
             cur = rotation[cur]
-        ring[base + k] = cur
-    if top == low:
+        at = base + k
+        if shorter is not None and k >= low:
+            at[shorter[valences[shorter] <= k]] = size
+        ring[at] = cur
+    if shorter is not None:
+        ring = ring[:size]
+    if top == full:
         return ring, ring_off
     # the rest, for the vertices of more edges, by valence (a radix sort on
     # small ints): at step k the vertices still walking are a suffix
-    more = np.flatnonzero(valences > low).astype(dtype)
+    more = np.flatnonzero(valences > full).astype(dtype)
     small = valences[more].astype(np.uint16 if top < 65536 else np.int64)
     order = np.argsort(small, kind="stable").astype(dtype)
     more = more[order]
     first = np.searchsorted(small[order], np.arange(top), side="right")
     cur = cur[more]
     base = base[more]
-    for k in range(low, top):
+    for k in range(full, top):
         lo = int(first[k])
         c = rotation[cur[lo:]] if k else cur[lo:]
         cur[lo:] = c
@@ -500,13 +529,16 @@ def open_vertex_rings(rotation, tail, head, bh, loop_offsets, valences, hole_tai
     ring : (H + B,) int
     ring_offsets : (n + 1,) int
     """
-    rotation_all, tail_all = open_extension(rotation, tail, head, bh, loop_offsets, hole_tail)
-    H, dtype = tail.size, tail_all.dtype
+    H, B = tail.size, bh.size
+    dtype = ring_dtype(rotation.dtype, H + B)
+    rotation_all = np.empty(H + B, dtype=dtype)
+    rotation_all[:H] = rotation
+    rotation_all[H:] = hole_rotation(bh, loop_offsets)
     start = np.empty(valences.size, dtype=dtype)
     for a in range(0, H, BLOCK):
         start[tail[a : a + BLOCK]] = np.arange(a, min(a + BLOCK, H), dtype=dtype)
-    start[tail_all[H:]] = np.arange(H, tail_all.size, dtype=dtype)
-    return vertex_rings(rotation_all, tail_all, valences, start)
+    start[head[bh] if hole_tail is None else hole_tail] = np.arange(H, H + B, dtype=dtype)
+    return vertex_rings(rotation_all, tail, valences, start)
 
 
 def walk_rings(
