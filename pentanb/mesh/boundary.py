@@ -13,8 +13,10 @@ half-edge then has a twin; a closed mesh is the case of no loops, and all
 its arrays are what they were before open meshes existed.
 
 :func:`pair_halfedges` pairs the half-edges of an oriented manifold with
-or without boundary (:func:`pair_open` is its numpy path for an open
-mesh); :func:`loop_order` chains the boundary half-edges into loops.
+or without boundary (on the numpy path, one sort of packed keys read on
+past where they stop falling into pairs; :func:`pair_open` gives the same
+twins on their own); :func:`loop_order` chains the boundary half-edges
+into loops.
 :func:`boundary_loops` and :func:`describe_boundary` count loops for
 messages, from plain ``tail`` and ``head`` arrays.
 """
@@ -347,9 +349,11 @@ def pair_halfedges(
     """The opposite of every half-edge, closed mesh or not, and the half-edges without one.
 
     One call of the compiled pairing (:mod:`pentanb._jit`) on large meshes,
-    which serves closed and open meshes alike; else the numpy path: the
-    closed pairing (:func:`pentanb.mesh.halfedge.pair_twins`), then, when
-    some half-edges do not pair up, :func:`pair_open`.
+    which serves closed and open meshes alike; else the numpy path, one
+    sort of packed keys (:func:`pentanb.mesh.halfedge.pair_sorted`) that
+    serves them alike too: the keys of a closed mesh fall into pairs, and
+    where they stop doing so the same sorted keys are read on for the
+    boundary half-edges.
 
     Parameters
     ----------

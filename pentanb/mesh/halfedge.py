@@ -6,7 +6,8 @@ vertex, the vertex rings and the twins are derived here from ``corners`` and
 ``offsets`` (the optional compiled kernels of :mod:`pentanb._jit` take over
 some passes on large meshes, with the same results bit for bit).  Twins are
 paired by one function per path: :func:`pair_twins` (numpy: one sort of
-packed keys; compiled: a counting sort on the tails).
+packed keys, which :func:`pair_sorted` reads on when some half-edges have
+no twin; compiled: a counting sort on the tails).
 """
 
 from __future__ import annotations
