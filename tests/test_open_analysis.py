@@ -323,6 +323,73 @@ def test_pair_open_matches_a_dictionary_of_directed_edges(mesh_name, n_extra):
     assert pair_open(np.append(tail, 0), np.append(head, 0), m.n_vertices) is None
 
 
+@pytest.mark.parametrize("block", [2, 6])
+@pytest.mark.parametrize("n_extra", [0, 2**28])  # a vertex count that splits the keys in parts
+@pytest.mark.parametrize("first", [0, 10])  # vertex 0 on the inner rim, or inside
+def test_pairing_in_small_blocks_finds_the_boundary_and_every_third_half_edge(
+    block, n_extra, first, monkeypatch
+):
+    # the sorted keys are read block by block: with blocks of a few keys the
+    # boundary half-edges and the edges of three half-edges fall at, and
+    # across, the blocks' ends (and, vertex 0 inside, after blocks of
+    # interior edges only)
+    from pentanb.mesh import halfedge
+    from pentanb.mesh.boundary import pair_halfedges, pair_open
+
+    monkeypatch.setattr(halfedge, "BLOCK", block)
+    m = annulus()
+    label = (np.arange(m.n_vertices) - first) % m.n_vertices
+    tail, head = label[m.corners], label[m.head]
+    n = m.n_vertices + n_extra
+    want = reference_twins(tail, head)
+    assert np.array_equal(pair_open(tail, head, n), want)
+    twin, alone = pair_halfedges(tail, head, n)
+    assert np.array_equal(twin, want) and alone.tolist() == np.flatnonzero(want < 0).tolist()
+    v = m.n_vertices
+    lone = [[], [v, v + 1]]  # an odd number of half-edges, or an even one
+    for h in range(tail.size):
+        u, w = int(tail[h]), int(head[h])
+        for t, hd in ([u], [w]), ([w], [u]), ([u], [u]):
+            for extra in lone:
+                more_t = np.append(tail, t + extra[:1])
+                more_h = np.append(head, hd + extra[1:])
+                got = pair_open(more_t, more_h, n + 2)
+                if want[h] < 0 and (t, hd) == ([w], [u]):  # the boundary edge's other half
+                    assert np.array_equal(got, reference_twins(more_t, more_h))
+                else:  # a directed edge twice, three half-edges on one edge, a loop
+                    assert got is None, (h, t, hd, extra)
+
+
+@pytest.mark.parametrize("block", [4, 12])
+def test_pairing_quads_in_small_blocks_reads_the_heads_from_the_tails(block, monkeypatch):
+    # faces of 4 corners, their heads read from the tails (also where the
+    # sorted keys stop falling into pairs after blocks of interior edges)
+    from helpers import holed_grid
+
+    from pentanb.mesh import halfedge
+    from pentanb.mesh.boundary import pair_halfedges
+
+    monkeypatch.setattr(halfedge, "BLOCK", block)
+    v, q = holed_grid(4, 4, [(1, 1, 1)])
+    n = len(v)
+    inner = int(np.flatnonzero(~Mesh(v, q).is_boundary_vertex)[0])
+    quads = (q - inner) % n  # vertex 0 inside: the first edges are interior ones
+    tail, head = quads.reshape(-1), quads[:, [1, 2, 3, 0]].reshape(-1)
+    want = reference_twins(tail, head)
+    twin, alone = pair_halfedges(tail, None, n, 4)
+    assert np.array_equal(twin, want) and alone.tolist() == np.flatnonzero(want < 0).tolist()
+    for h in range(tail.size):
+        u, w = int(tail[h]), int(head[h])
+        for quad in [u, w, n, n + 1], [w, u, n, n + 1]:  # a quad on the edge, either way
+            got = pair_halfedges(np.append(tail, quad), None, n + 2, 4)
+            if want[h] < 0 and quad[0] == w:  # the boundary edge's other half
+                more_h = np.append(head, quad[1:] + quad[:1])
+                assert got is not None
+                assert np.array_equal(got[0], reference_twins(np.append(tail, quad), more_h))
+            else:  # a directed edge twice: three half-edges on one edge
+                assert got is None, (h, quad)
+
+
 @pytest.mark.parametrize("n_extra", [0, 2**28])  # a vertex count that splits the keys in parts
 def test_pair_twins_of_a_closed_mesh_in_parts_or_whole(n_extra):
     from pentanb.mesh.halfedge import pair_twins

@@ -13,8 +13,10 @@ half-edge then has a twin; a closed mesh is the case of no loops, and all
 its arrays are what they were before open meshes existed.
 
 :func:`pair_halfedges` pairs the half-edges of an oriented manifold with
-or without boundary (:func:`pair_open` is its numpy path for an open
-mesh); :func:`loop_order` chains the boundary half-edges into loops.
+or without boundary (on the numpy path, one sort of packed keys read on
+past where they stop falling into pairs; :func:`pair_open` gives the same
+twins on their own); :func:`loop_order` chains the boundary half-edges
+into loops.
 :func:`boundary_loops` and :func:`describe_boundary` count loops for
 messages, from plain ``tail`` and ``head`` arrays.
 """
@@ -25,7 +27,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .. import _jit
-from .halfedge import head_of, heads_at, in_parts, key_bits, pair_twins
+from .halfedge import heads_at, key_bits, pair_sorted
 
 __all__ = [
     "boundary_edges",
@@ -125,16 +127,15 @@ def describe_boundary(tail: ArrayLike, head: ArrayLike) -> str:
 def pair_open(tail: np.ndarray, head: np.ndarray, n: int) -> np.ndarray | None:
     """The opposite of every half-edge of an oriented manifold with boundary.
 
-    The numpy path for meshes that do not pair up completely
-    (:func:`pentanb.mesh.halfedge.pair_twins` is the fast path for closed
-    meshes), with the same packed keys: every half-edge ``h = (u, w)`` gets
-    the key ``(min, max, u > w)`` of its undirected edge and direction,
-    packed with ``h`` into one 64-bit integer, and one sort of plain
-    integers (several times faster than an argsort and a search) puts the
-    half-edges of every edge side by side.  An edge met once is a boundary
-    edge; twice, in opposite directions, an interior one.  When key and
-    index need more than 63 bits, the half-edges are first split by the
-    high bits of their smaller vertex (a radix pass) and every part is
+    The packed keys of :func:`pentanb.mesh.halfedge.pair_twins`: every
+    half-edge ``h = (u, w)`` gets the key ``(min, max, u > w)`` of its
+    undirected edge and direction, packed with ``h`` into one 64-bit
+    integer, and one sort of plain integers (several times faster than an
+    argsort and a search) puts the half-edges of every edge side by side
+    (:func:`pentanb.mesh.halfedge.pair_sorted`).  An edge met once is a
+    boundary edge; twice, in opposite directions, an interior one.  When
+    key and index need more than 63 bits, the half-edges are first split by
+    the high bits of their smaller vertex (a radix pass) and every part is
     sorted on its own.
 
     Parameters
@@ -155,59 +156,26 @@ def pair_open(tail: np.ndarray, head: np.ndarray, n: int) -> np.ndarray | None:
     H = tail.size
     if H == 0:
         return np.empty(0, dtype=tail.dtype)
-    if (tail == head).any():
-        return None
-    twin = np.full(H, -1, dtype=tail.dtype)
     n = max(int(n), 1)
-    index_bits, vertex_bits, low_bits = key_bits(H, n)
-    if low_bits >= vertex_bits:
-        return twin if _pair_open_part(tail, head, n, index_bits, None, None, twin) else None
-    parts = vertex_bits - max(low_bits, 0)
-    if low_bits < 1 or parts > 16:  # pragma: no cover - beyond 2**40 half-edges
-        return _pair_open_search(tail, head, n)
-    ok = in_parts(
-        tail,
-        head,
-        low_bits,
-        parts,
-        lambda t, h, ids, mask: _pair_open_part(t, h, n, index_bits, ids, mask, twin),
-    )
-    return twin if ok else None
+    _, vertex_bits, low_bits = key_bits(H, n)
+    if low_bits < vertex_bits and (low_bits < 1 or vertex_bits - low_bits > 16):
+        return _pair_open_search(tail, head, n)  # pragma: no cover - beyond 2**40 half-edges
+    got = _pair_sorted_open(tail, head, n, 0)
+    return None if got is None else got[0]
 
 
-def _pair_open_part(tail, head, n, index_bits, ids, mask, twin) -> bool:
-    """Pair the half-edges of one part (see :func:`pair_open`); False if a directed
-    edge is used twice.  ``ids`` maps the part's half-edges to the mesh's (None:
-    the whole mesh); ``mask`` keeps the low bits of the smaller vertex (None: all)."""
-    t = tail.astype(np.int64)
-    w = head.astype(np.int64)
-    key = np.minimum(t, w)
-    if mask is not None:
-        key &= mask
-    key *= np.int64(n)
-    key += np.maximum(t, w)
-    key <<= 1
-    key |= t > w
-    key <<= index_bits
-    key |= np.arange(t.size, dtype=np.int64)
-    del t, w
-    key.sort()
-    low = np.int64((1 << index_bits) - 1)
-    edge = key >> (index_bits + 1)
-    same = edge[1:] == edge[:-1]
-    del edge
-    if (same[1:] & same[:-1]).any():  # three half-edges on one edge
-        return False
-    first = np.flatnonzero(same)
-    flip = (key >> index_bits) & 1
-    if (flip[first] == flip[first + 1]).any():  # a directed edge used twice
-        return False
-    a, b = key[first] & low, key[first + 1] & low
-    if ids is not None:
-        a, b = ids[a], ids[b]
-    twin[a] = b
-    twin[b] = a
-    return True
+def _pair_sorted_open(
+    tail: np.ndarray, head: np.ndarray | None, n: int, k: int
+) -> tuple[np.ndarray, np.ndarray] | None:
+    """:func:`pentanb.mesh.halfedge.pair_sorted` with boundary half-edges, None
+    also when one of them starts and ends at one vertex (which has no twin)."""
+    got = pair_sorted(tail, head, n, k, boundary=True)
+    if got is None:
+        return None
+    alone = got[1]
+    if alone.size and (tail[alone] == heads_at(tail, alone, k, head)).any():
+        return None
+    return got
 
 
 def _pair_open_search(tail: np.ndarray, head: np.ndarray, n: int) -> np.ndarray | None:
@@ -381,9 +349,11 @@ def pair_halfedges(
     """The opposite of every half-edge, closed mesh or not, and the half-edges without one.
 
     One call of the compiled pairing (:mod:`pentanb._jit`) on large meshes,
-    which serves closed and open meshes alike; else the numpy path: the
-    closed pairing (:func:`pentanb.mesh.halfedge.pair_twins`), then, when
-    some half-edges do not pair up, :func:`pair_open`.
+    which serves closed and open meshes alike; else the numpy path, one
+    sort of packed keys (:func:`pentanb.mesh.halfedge.pair_sorted`) that
+    serves them alike too: the keys of a closed mesh fall into pairs, and
+    where they stop doing so the same sorted keys are read on for the
+    boundary half-edges.
 
     Parameters
     ----------
@@ -414,15 +384,7 @@ def pair_halfedges(
     if jit is not None and n > 0:  # (compiled: closed or not, one counting sort)
         twin, alone, b = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
         return None if b < 0 else (twin, alone)
-    twin = pair_twins(tail, head, n, k)
-    if twin is not None:
-        return twin, np.zeros(0, dtype=np.int64)
-    if head is None:
-        head = head_of(tail, np.empty(0), k)
-    twin = pair_open(tail, head, n)
-    if twin is None:
-        return None
-    return twin, np.flatnonzero(twin < 0).astype(np.int64, copy=False)
+    return _pair_sorted_open(tail, head, n, k)
 
 
 def open_twins(

@@ -6,7 +6,8 @@ vertex, the vertex rings and the twins are derived here from ``corners`` and
 ``offsets`` (the optional compiled kernels of :mod:`pentanb._jit` take over
 some passes on large meshes, with the same results bit for bit).  Twins are
 paired by one function per path: :func:`pair_twins` (numpy: one sort of
-packed keys; compiled: a counting sort on the tails).
+packed keys, which :func:`pair_sorted` reads on when some half-edges have
+no twin; compiled: a counting sort on the tails).
 """
 
 from __future__ import annotations
@@ -155,24 +156,75 @@ def pair_twins(tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0) ->
     if jit is not None and n > 0:  # each half-edge's partner among its head's (compiled)
         got, _, alone = jit.pair_twins(tail, tail[:0] if head is None else head, max(k, 1), n)
         return got if alone == 0 else None
+    paired = pair_sorted(tail, head, n, k)
+    return None if paired is None else paired[0]
+
+
+def pair_sorted(
+    tail: np.ndarray, head: np.ndarray | None, n: int, k: int = 0, boundary: bool = False
+) -> tuple[IntArray, np.ndarray] | None:
+    """The twins by sorting packed keys (the numpy path of :func:`pair_twins`), with
+    boundary half-edges when ``boundary`` is True.
+
+    The keys of :func:`pair_twins`, sorted once.  When they do not fall
+    into pairs and ``boundary`` is True, the same sorted keys are read
+    again from where the pattern broke (:func:`_pair_rest`): a key alone on
+    its edge is a boundary half-edge, every other edge must have two
+    half-edges running oppositely.
+
+    Parameters
+    ----------
+    tail : (H,) int
+        The half-edges' tails, vertices in ``[0, n)``.
+    head : (H,) int or None
+        Their heads; None when every face has ``k`` corners (read from ``tail``).
+    n : int
+        Number of vertices.
+    k : int
+        The size of every face, or 0.
+    boundary : bool
+        False: None unless every half-edge has a twin.
+
+    Returns
+    -------
+    twin : (H,) int
+        ``twin[h]``, the half-edge ``head[h] -> tail[h]``, or -1 where there
+        is none (a boundary half-edge).
+    alone : (B,) int64
+        The half-edges without a twin, in increasing order.
+
+    None when an edge has more than two half-edges or two running the same
+    way (and, ``boundary`` False, when some half-edge has no twin).  A
+    half-edge from a vertex to itself is left without a twin.
+    """
+    H = tail.size
     twin = np.empty(H, dtype=tail.dtype)
+    # (the boundary half-edges of every part, None: there must be none)
+    alone: list[np.ndarray] | None = [] if boundary else None
     index_bits, vertex_bits, low_bits = key_bits(H, n)
     if low_bits >= vertex_bits:
-        return twin if _pair_part(tail, head, n, index_bits, None, None, twin, k) else None
-    if head is None:
-        head = head_of(tail, np.empty(0), k)
-    parts = vertex_bits - max(low_bits, 0)
-    if low_bits < 1 or parts > 16:  # pragma: no cover - beyond 2**40 half-edges
-        raise MeshError(f"{H:,} half-edges are more than twins can be paired for")
-    ok = in_parts(
-        tail,
-        head,
-        low_bits,
-        parts,
-        lambda t, h, ids, mask: _pair_part(t, h, n, index_bits, ids, mask, twin),
-        tail.dtype,
-    )
-    return twin if ok else None
+        ok = _pair_part(tail, head, n, index_bits, None, None, twin, k, alone)
+    else:
+        if head is None:
+            head = head_of(tail, np.empty(0), k)
+        parts = vertex_bits - max(low_bits, 0)
+        if low_bits < 1 or parts > 16:  # pragma: no cover - beyond 2**40 half-edges
+            raise MeshError(f"{H:,} half-edges are more than twins can be paired for")
+        ok = in_parts(
+            tail,
+            head,
+            low_bits,
+            parts,
+            lambda t, h, ids, mask: _pair_part(t, h, n, index_bits, ids, mask, twin, 0, alone),
+            tail.dtype,
+        )
+    if not ok:
+        return None
+    if not alone:
+        return twin, np.zeros(0, dtype=np.int64)
+    lone = np.sort(np.concatenate(alone))
+    twin[lone] = -1
+    return twin, lone
 
 
 def key_bits(H: int, n: int) -> tuple[int, int, int]:
@@ -213,47 +265,112 @@ def in_parts(tail, head, low_bits: int, parts: int, pair, dtype=None) -> bool:
     return True
 
 
-def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0) -> bool:
-    """Pair the half-edges of one part (see :func:`pair_twins`); False if they do not pair.
+def _pair_part(tail, head, n, index_bits, ids, mask, twin, k=0, alone=None) -> bool:
+    """Pair the half-edges of one part (see :func:`pair_sorted`); False if they do not pair.
 
     ``ids`` maps the part's half-edges to the mesh's (None: the whole mesh);
     ``mask`` keeps the low bits of the smaller vertex (None: all of it);
-    ``head`` None: faces of ``k`` corners, heads read from ``tail``.
+    ``head`` None: faces of ``k`` corners, heads read from ``tail``;
+    ``alone`` None: every half-edge must have a twin, else a list that the
+    half-edges without one are added to (by :func:`_pair_rest`).
     """
     size = tail.size
-    if size % 2:
+    if size % 2 and alone is None:
         return False
     key = np.empty(size, dtype=np.int64)
     step = BLOCK - BLOCK % k if head is None else BLOCK
     for a in range(0, size, step):
         t = tail[a : a + step]
         h = head_of(t, np.empty(0), k) if head is None else head[a : a + step]
-        lo = np.minimum(t, h)
-        part = key[a : a + step]
-        np.multiply(lo & mask if mask is not None else lo, np.int64(n), out=part)
-        part += np.maximum(t, h)
-        part <<= 1
-        part |= t > h
-        part <<= index_bits
-        part |= np.arange(a, a + part.size, dtype=np.int64)
-        del t, h, lo, part
+        at = np.arange(a, a + t.size, dtype=np.int64)
+        _pack(t, h, n, mask, index_bits, at, key[a : a + step])
+        del t, h, at
     key.sort()
     # the two halves of every edge must sit side by side: keys 2K and 2K + 1,
     # which differ in their lowest bit only; then the low bits say which
     # half-edges they are
+    a = 0
+    if size % 2 == 0:
+        while a < size and _pair_block(key[a : a + BLOCK], index_bits, ids, twin):
+            a += BLOCK
+    if a >= size:
+        return True
+    if alone is None:
+        return False
+    if a:  # the last key paired (unpacked in place) packed again: its edge ends the pairs
+        h = key[a - 1 : a].copy()
+        _pack(tail[h], heads_at(tail, h, k, head), n, mask, index_bits, h, key[a - 1 : a])
+    return _pair_rest(key, a, index_bits, ids, twin, alone)
+
+
+def _pack(tail, head, n, mask, index_bits, at, out) -> None:
+    """Write the keys of :func:`pair_twins` of the half-edges ``tail -> head``
+    numbered ``at`` into ``out`` (``mask`` None: all bits of the smaller vertex)."""
+    lo = np.minimum(tail, head)
+    np.multiply(lo & mask if mask is not None else lo, np.int64(n), out=out)
+    out += np.maximum(tail, head)
+    out <<= 1
+    out |= tail > head
+    out <<= index_bits
+    out |= at
+
+
+def _pair_block(key: np.ndarray, index_bits: int, ids, twin: np.ndarray) -> bool:
+    """Pair sorted keys two by two (see :func:`_pair_part`); False, writing nothing,
+    unless every two are the two half-edges of one edge.  The keys paired are
+    unpacked in place (left holding their half-edges)."""
+    pair = np.bitwise_xor(key[0::2], key[1::2])
+    pair >>= index_bits
+    if not (pair == 1).all():
+        return False
+    key &= np.int64((1 << index_bits) - 1)
+    first, second = key[0::2], key[1::2]
+    if ids is not None:
+        first, second = ids[first], ids[second]
+    twin[first] = second
+    twin[second] = first
+    return True
+
+
+def _pair_rest(key, a, index_bits, ids, twin, alone) -> bool:
+    """Pair the sorted keys ``key[a:]`` of a mesh that may have boundary half-edges.
+
+    Block by block, every block ending between two edges: the keys alone
+    on their edge (the boundary half-edges) are added to ``alone``, and the
+    others must fall into pairs (:func:`_pair_block`).  False when an edge
+    has more than two half-edges or two running the same way.  ``key[:a]``
+    are paired already (``a`` falls between pairs).
+    """
+    size = key.size
+    shift = index_bits + 1  # key >> shift: the undirected edge
+
+    def one_edge(i: int) -> bool:  # keys i - 1 and i on one edge
+        return bool(key[i - 1] >> shift == key[i] >> shift)
+
+    if a and one_edge(a):  # a third half-edge on the edge of the last pair
+        return False
     low = np.int64((1 << index_bits) - 1)
-    for a in range(0, size, BLOCK):
-        part = key[a : a + BLOCK]
-        pair = np.bitwise_xor(part[0::2], part[1::2])
-        pair >>= index_bits
-        if not (pair == 1).all():
+    while a < size:
+        b = min(a + BLOCK, size)
+        if b < size and one_edge(b):
+            b -= 1
+            if one_edge(b):  # three half-edges on one edge
+                return False
+        part = key[a:b]
+        edge = part >> shift
+        # a key whose edge differs from both neighbours' (the block's ends
+        # fall between edges) is alone on its edge
+        apart = np.ones(part.size + 1, dtype=bool)
+        np.not_equal(edge[1:], edge[:-1], out=apart[1:-1])
+        single = apart[1:]
+        single &= apart[:-1]
+        if single.any():
+            lone = part[single] & low
+            alone.append(lone if ids is None else ids[lone].astype(np.int64))
+            part = part[~single]
+        if part.size % 2 or not _pair_block(part, index_bits, ids, twin):
             return False
-        part &= low
-        first, second = part[0::2], part[1::2]
-        if ids is not None:
-            first, second = ids[first], ids[second]
-        twin[first] = second
-        twin[second] = first
+        a = b
     return True
 
 
@@ -264,10 +381,12 @@ def vertex_rings(rotation, tail, valences, start=None):
     largest valence, not over vertices).  On a non-manifold vertex the orbit
     closes early; the ring then repeats half-edges, which ``_validate``
     detects.  ``start`` (n,), when given, is every vertex's first
-    half-edge; by default its last (largest) outgoing half-edge.
+    half-edge (then ``rotation`` may number more half-edges than ``tail``:
+    the ring holds ``valences.sum()`` of them, of ``start``'s dtype); by
+    default its last (largest) outgoing half-edge.
     """
     n = valences.size
-    dtype = tail.dtype
+    dtype = tail.dtype if start is None else start.dtype
     ring_off = np.zeros(n + 1, dtype=dtype)
     np.cumsum(valences, out=ring_off[1:])
     if start is None:
@@ -276,30 +395,45 @@ def vertex_rings(rotation, tail, valences, start=None):
         # numpy widens a scatter's index array, the whole of it at once otherwise)
         for a in range(0, tail.size, BLOCK):
             start[tail[a : a + BLOCK]] = np.arange(a, min(a + BLOCK, tail.size), dtype=dtype)
-    ring = np.empty(tail.size, dtype=dtype)
+    size = int(ring_off[-1])
     if n == 0:
-        return ring, ring_off
-    # every vertex has at least `low` edges: the first `low` steps run over
-    # all vertices in index order (writes in increasing order of address)
+        return np.empty(size, dtype=dtype), ring_off
     low, top = int(valences.min()), int(valences.max())
+    # the first steps run over all vertices in index order (writes in
+    # increasing order of address): `low` of them, or, when all but a few
+    # vertices (an eighth) have more edges, as many as those have; the few
+    # (none unused: every vertex has a start) write their extra steps to a
+    # spare slot past the end
+    full = low
+    if 0 < low < top:
+        ended = np.cumsum(np.bincount(valences))  # the vertices of at most k edges
+        while full < top and ended[full] <= n // 8:
+            full += 1
+    ring = np.empty(size + (full > low), dtype=dtype)
+    shorter = np.flatnonzero(valences < full) if full > low else None
     base = ring_off[:-1]
     cur = start
-    for k in range(low):
+    for k in range(full):
         if k:
             cur = rotation[cur]
-        ring[base + k] = cur
-    if top == low:
+        at = base + k
+        if shorter is not None and k >= low:
+            at[shorter[valences[shorter] <= k]] = size
+        ring[at] = cur
+    if shorter is not None:
+        ring = ring[:size]
+    if top == full:
         return ring, ring_off
     # the rest, for the vertices of more edges, by valence (a radix sort on
     # small ints): at step k the vertices still walking are a suffix
-    more = np.flatnonzero(valences > low).astype(dtype)
+    more = np.flatnonzero(valences > full).astype(dtype)
     small = valences[more].astype(np.uint16 if top < 65536 else np.int64)
     order = np.argsort(small, kind="stable").astype(dtype)
     more = more[order]
     first = np.searchsorted(small[order], np.arange(top), side="right")
     cur = cur[more]
     base = base[more]
-    for k in range(low, top):
+    for k in range(full, top):
         lo = int(first[k])
         c = rotation[cur[lo:]] if k else cur[lo:]
         cur[lo:] = c
@@ -396,13 +530,16 @@ def open_vertex_rings(rotation, tail, head, bh, loop_offsets, valences, hole_tai
     ring : (H + B,) int
     ring_offsets : (n + 1,) int
     """
-    rotation_all, tail_all = open_extension(rotation, tail, head, bh, loop_offsets, hole_tail)
-    H, dtype = tail.size, tail_all.dtype
+    H, B = tail.size, bh.size
+    dtype = ring_dtype(rotation.dtype, H + B)
+    rotation_all = np.empty(H + B, dtype=dtype)
+    rotation_all[:H] = rotation
+    rotation_all[H:] = hole_rotation(bh, loop_offsets)
     start = np.empty(valences.size, dtype=dtype)
     for a in range(0, H, BLOCK):
         start[tail[a : a + BLOCK]] = np.arange(a, min(a + BLOCK, H), dtype=dtype)
-    start[tail_all[H:]] = np.arange(H, tail_all.size, dtype=dtype)
-    return vertex_rings(rotation_all, tail_all, valences, start)
+    start[head[bh] if hole_tail is None else hole_tail] = np.arange(H, H + B, dtype=dtype)
+    return vertex_rings(rotation_all, tail, valences, start)
 
 
 def walk_rings(

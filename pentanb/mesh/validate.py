@@ -10,7 +10,7 @@ and raises a :class:`MeshError` naming it (a face, an edge, a vertex).
 
 One pairing serves closed and open meshes
 (:func:`~pentanb.mesh.boundary.open_twins`: on large meshes one compiled
-counting sort; the numpy path sorts packed keys, for a closed mesh first);
+counting sort; the numpy path sorts packed keys once, closed or not);
 a mesh with boundary half-edges is then checked as a surface with boundary
 (:func:`_valid_open`): every edge with one or two faces, every vertex's
 faces one fan or one cycle.
@@ -189,10 +189,7 @@ def _valid(mesh: Any, twin: np.ndarray | None = None, strict: bool = True) -> bo
             ring, ring_off = vertex_rings(RotateUniform(twin, k), c, mesh.valences)
         else:
             ring, ring_off = vertex_rings(rotation_of(twin, o, k, mesh), c, mesh.valences)
-        seen = np.zeros(c.size, dtype=bool)
-        for a in range(0, ring.size, BLOCK):
-            seen[ring[a : a + BLOCK]] = True
-        if not seen.all():
+        if not _each_once(ring):
             return False
     mesh._shared.values["vertex_ring"] = (readonly(ring), readonly(ring_off))
     return True
@@ -239,15 +236,22 @@ def _valid_open(
         ring, ring_off = open_vertex_rings(
             mesh.rotation, c, None, bh, loop_off, mesh.valences, hole_tail
         )
-        seen = np.zeros(ring.size, dtype=bool)
-        seen[ring] = True
-        ok = bool(seen.all())
+        ok = _each_once(ring)
     else:
         ring, ring_off, ok = got
     if not ok:
         return False
     mesh._shared.values["vertex_ring"] = (readonly(ring), readonly(ring_off))
     return True
+
+
+def _each_once(ring: np.ndarray) -> bool:
+    """Whether the vertex rings hold every half-edge (``ring.size`` of them) once."""
+    seen = np.zeros(ring.size, dtype=bool)
+    # (in blocks: numpy widens a scatter's index array, the whole of it at once otherwise)
+    for a in range(0, ring.size, BLOCK):
+        seen[ring[a : a + BLOCK]] = True
+    return bool(seen.all())
 
 
 def _repeats_in_a_face(mesh: Any, values: np.ndarray, bound: int) -> bool:
