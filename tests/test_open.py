@@ -12,9 +12,11 @@ over the face lists), so that a test can fail.
 
 from __future__ import annotations
 
+import gc
 import itertools
 import math
 import pickle
+import weakref
 
 import numpy as np
 import pytest
@@ -1020,6 +1022,19 @@ def test_open_outputs_connectivity_is_written_as_pairing_finds_it(name, op, monk
     assert ring.tolist() == want.tolist() and off.tolist() == want_off.tolist()
     assert ring.dtype == want.dtype and off.dtype == want_off.dtype
     assert not out.is_closed and out.n_edges == made.n_edges
+
+
+@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
+def test_an_open_output_keeps_none_of_its_inputs_connectivity_once_it_has_its_rings(scheme):
+    # (its twins, asked for later, are still written from the input's)
+    m = WRITTEN["holed grid"]()
+    rotation = weakref.ref(m.rotation)  # derived and cached on m
+    out = pb.SCHEMES[scheme](m)
+    out.vertex_ring  # noqa: B018 - written from m's rings
+    del m
+    gc.collect()
+    assert rotation() is None
+    assert out.twin.tolist() == Mesh(out.vertices, face_lists(out)).twin.tolist()
 
 
 def _loops(m: Mesh) -> list[list[int]]:

@@ -133,6 +133,14 @@ def faces_only(mesh: Mesh) -> Any:
     return mesh._faces_only()
 
 
+def faces_keeping(mesh: Mesh, names: tuple[str, ...]) -> Any:
+    """``mesh``'s faces with only the named connectivity it has derived (twins,
+    boundary, ...), for a producer that may run an iteration later: holding
+    :func:`faces_only` instead would keep all of ``mesh``'s cached
+    connectivity alive until then."""
+    return mesh._faces_keeping(names)
+
+
 def uniform_size(mesh: Any) -> int:
     """k when every face of ``mesh`` (a Mesh or its :func:`faces_only`) has k sides, else 0."""
     return int(mesh._uniform_size)

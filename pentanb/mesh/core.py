@@ -927,6 +927,16 @@ class Mesh:
         """
         return _Faces(self._shared, self.n_vertices)
 
+    def _faces_keeping(self, names: tuple[str, ...]) -> Any:
+        """This mesh's faces with only the named connectivity derived so far
+        carried over (a :class:`_Faces` of its own record): what else it is
+        asked for it derives again, and it keeps nothing else of this mesh's alive."""
+        shared = _Connectivity(self._corners, self._offsets)
+        for name in names:
+            if name in self._shared.values:
+                shared.values[name] = self._shared.values[name]
+        return _Faces(shared, self.n_vertices)
+
     # ------------------------------------------------------------------ geometry
     @_geometry
     def _extent(self) -> float:

@@ -17,8 +17,6 @@ when first asked for: the dual needs the rings and the boundary only.
 
 from __future__ import annotations
 
-import functools
-
 import numpy as np
 
 from .. import _jit
@@ -190,29 +188,30 @@ def _open_output(mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_
     ``chain_of(faces)`` gives the output's boundary half-edges ``(B, p)``:
     the ``p`` pieces of every boundary half-edge of the input, in its loop
     order; the output's boundary loops are those chained
-    (:func:`~pentanb.mesh.boundary.canonical_loops`), found once (a few
-    arrays of ``p B`` entries) for whichever of its boundary, twins
-    (``twin_of(faces, bh_out, dt)``, ``bh_out`` its boundary half-edges
-    loop after loop) and rings (``rings_of(faces, hole, dt)``, ``hole``
-    ``(B, p)`` its hole half-edge along every piece) is asked for first.
+    (:func:`~pentanb.mesh.boundary.canonical_loops`), found here (a few
+    arrays of ``p B`` entries) for its boundary, twins (``twin_of(faces,
+    bh_out, dt)``, ``bh_out`` its boundary half-edges loop after loop) and
+    rings (``rings_of(faces, hole, dt)``, ``hole`` ``(B, p)`` its hole
+    half-edge along every piece), whichever is asked for first.
     The rings do not wait for the twins: the dual of an open mesh needs
     its rings and boundary only.
     """
     faces = _mesh.faces_only(mesh)
-    H_out = corners.size
-
-    @functools.cache
-    def boundary() -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
-        chain = chain_of(faces)
-        offsets = chain.shape[1] * _mesh.loop_offsets(faces).astype(np.int64)
-        return _hole_of(chain, offsets, H_out), canonical_loops(chain.reshape(-1), offsets)
+    # the boundary now (a few arrays of p B entries), so that no producer
+    # but the rings' holds the input's faces
+    chain = chain_of(faces)
+    chain_off = chain.shape[1] * _mesh.loop_offsets(faces).astype(np.int64)
+    hole = _hole_of(chain, chain_off, corners.size)
+    loops = canonical_loops(chain.reshape(-1), chain_off)
+    del chain, chain_off
+    # the twins may be asked for an iteration later, or never: their
+    # producer holds the input's twins and boundary, not all its connectivity
+    source = _mesh.faces_keeping(mesh, ("twin", "_boundary"))
 
     def twin() -> Several:
-        loops = boundary()[1]
-        return Several(twin=twin_of(faces, loops[0], dt), _boundary=loops)
+        return Several(twin=twin_of(source, loops[0], dt), _boundary=loops)
 
     def rings() -> Several:
-        hole, loops = boundary()
         made = rings_of(faces, hole, dt)
         if isinstance(made, Several):  # with the face of every ring entry
             made["_boundary"] = loops
@@ -220,7 +219,7 @@ def _open_output(mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_
         return Several(vertex_ring=made, _boundary=loops)
 
     out = output(vertices, corners, offsets, twin=twin, rings=rings, **kw)
-    _mesh.note_boundary(out, lambda: boundary()[1])
+    _mesh.note_boundary(out, lambda: loops)
     return out
 
 
