@@ -861,7 +861,7 @@ def open_dual_faces_fill(
     # of every face half-edge r (r // k when every face is a k-gon, else
     # face[r]); a boundary vertex bv[t] (ascending) starts its ring with its
     # hole half-edge H + bj[t], which gives enter[j], keep[j] when it is not
-    # -1, then leave[j] (the numpy path's placed_vertex_faces with one item).
+    # -1, then leave[j] (the numpy path's open_vertex_faces with one item).
     # The interior vertices between two boundary vertices are one run of the
     # rings, written shifted by what the boundary inserted before them: a
     # flat loop LLVM vectorizes, where a loop per vertex does not

@@ -677,7 +677,13 @@ def open_vertex_faces(
     corners : int64 array
     offsets : (n + 1,) int64
     """
-    return placed_vertex_faces(mesh, items, entering, leaving, keep)
+    ring, _ = mesh.vertex_ring
+    # what every ring entry gives, in ring order (a hole half-edge's: any,
+    # written over): gathers in ring order, no scatter
+    values = np.empty((ring.size, len(items)), dtype=np.result_type(*items))
+    for s, item in enumerate(items):
+        values[:, s] = item.take(ring, mode="clip")
+    return opened_ring_items(mesh, values.reshape(-1), len(items), entering, leaving, keep)
 
 
 def open_dual_faces(
@@ -746,68 +752,34 @@ def open_dual_faces(
     )
 
 
-def ring_places(
-    mesh: Mesh, keep: np.ndarray | None, per: int, n_out: int | None = None
-) -> tuple[np.ndarray, int, np.dtype, np.ndarray, np.ndarray, np.ndarray]:
-    """Where every vertex ring entry of an open mesh goes in :func:`open_vertex_faces`.
+def ring_places(mesh: Mesh, keep: np.ndarray | None, n_out: int) -> np.ndarray:
+    """Where every vertex ring entry of an open mesh goes in its dual's faces.
 
-    A face half-edge gives ``per`` items, a hole half-edge ``H + j`` 2 (3
+    A face half-edge gives one corner, a hole half-edge ``H + j`` two (three
     where its tail, the head of ``bh[j]``, is kept: ``keep[j]`` not -1,
-    :func:`corner_ids`).  ``n_out``, the output's number of
-    vertices when known, gives the output's index dtype
-    (:func:`index_dtype`) instead of int64.
+    :func:`corner_ids`); ``n_out``, the dual's number of vertices, gives
+    the index dtype (:func:`index_dtype`).
 
     Returns
     -------
     at : (H + B,) int
-        The position in the faces' corners of what every entry of
+        The position in the dual's corners of what every entry of
         :attr:`~pentanb.Mesh.vertex_ring` contributes first.
-    total : int
-        The number of corners.
-    dtype : numpy dtype
-        Of ``at`` and of the corners.
-    hp : (B,) int
-        The places of the hole half-edges in the rings.
-    j : (B,) int
-        Which boundary half-edge each is the hole half-edge of (``H + j``).
-    keep : (B,) int
-        ``keep[j]`` of every one (the output vertex keeping its tail), or -1.
     """
     ring, _ = mesh.vertex_ring
     H, N = mesh.n_halfedges, ring.size
     hp = np.flatnonzero(ring >= H)  # the hole half-edges' places: few
     j = ring[hp].astype(np.int64) - H
-    keep = np.full(j.size, -1, dtype=np.int64) if keep is None else keep[j]
-    count = 2 + (keep >= 0)  # what every hole half-edge gives, the others ``per``
-    # at[i] = per * i + what the hole half-edges before i give beyond ``per``
+    extra = np.ones(j.size, dtype=np.int64) if keep is None else 1 + (keep[j] >= 0)
+    # at[i] = i + what the hole half-edges before i give beyond one
     shift = np.zeros(hp.size + 1, dtype=np.int64)
-    np.cumsum(count - per, out=shift[1:])
+    np.cumsum(extra, out=shift[1:])
     bounds = np.empty(hp.size + 2, dtype=np.int64)
     bounds[0], bounds[1:-1], bounds[-1] = 0, hp + 1, N
-    total = per * N + int(shift[-1])
-    dt = np.dtype(np.int64) if n_out is None else index_dtype(n_out, total)
+    dt = index_dtype(n_out, N + int(shift[-1]))
     at = np.repeat(shift.astype(dt), np.diff(bounds))
-    at += np.arange(0, per * N, per, dtype=dt)
-    return at, total, dt, hp, j, keep
-
-
-def placed_vertex_faces(
-    mesh: Mesh,
-    items: tuple[np.ndarray, ...],
-    entering: np.ndarray,
-    leaving: np.ndarray,
-    keep: np.ndarray | None = None,
-    n_out: int | None = None,
-) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`open_vertex_faces`, the corners of the output's index dtype when
-    ``n_out``, its number of vertices, is given (else int64)."""
-    ring, _ = mesh.vertex_ring
-    # what every ring entry gives, in ring order (a hole half-edge's: any,
-    # written over): gathers in ring order, no scatter
-    values = np.empty((ring.size, len(items)), dtype=np.result_type(*items))
-    for s, item in enumerate(items):
-        values[:, s] = item.take(ring, mode="clip")
-    return opened_ring_items(mesh, values.reshape(-1), len(items), entering, leaving, keep, n_out)
+    at += np.arange(N, dtype=dt)
+    return at
 
 
 def opened_ring_items(

@@ -187,7 +187,7 @@ def _open_dual_output(
     dt = index_dtype(n_out, size)
 
     def connectivity() -> Several:  # from where the ring entries went in the faces
-        at = ring_places(faces, keep, 1, n_out)[0]
+        at = ring_places(faces, keep, n_out)
         if turned is not None:
             H = turned[0].size
             at[:H] = _unturned(*turned).take(at[:H])
