@@ -24,8 +24,11 @@ measured in this run, as a ratio or a per-face figure with its target:
 6. open meshes: the paper's two schemes + two duals, from raw arrays, on a
    planar grid of 1,000,000 quads with 500 square holes (24,200 boundary
    edges, 501 boundary loops) against a closed torus grid of 1,000,000 quads,
-   time per face, open over closed (at most 1.25x); and ``Mesh(V, F)`` alone,
-   without a target (the part of it that validation takes);
+   time per face, open over closed (at most 1.25x), with the same runs' ratio
+   in CPU time (user mode, all threads: the work done, without the time the
+   kernel spends handing over fresh memory) beside it, without a target; and
+   ``Mesh(V, F)`` alone, without a target (the part of it that validation
+   takes);
 
 When numba is installed (``pip install -e .[jit]``), the rows of 2., 3., 4.'s
 time ratio and 6. are measured twice, alternating run by run: the numpy path
@@ -135,22 +138,41 @@ class Table:
         return "\n".join(lines)
 
 
-def alternate(cases: dict[str, Callable[[], object]], runs: int, clock) -> dict[str, list[float]]:
+def alternate(
+    cases: dict[str, Callable[[], object]],
+    runs: int,
+    clock,
+    user: dict[str, list[float]] | None = None,
+) -> dict[str, list[float]]:
     """Time every case once per round, ``runs`` rounds, after one untimed warm-up round.
 
     Returns the seconds of every run of every case, in round order, so that
-    ratios can be taken run by run.
+    ratios can be taken run by run.  ``user``, when given, receives the CPU
+    time in user mode of the same runs (all threads, from ``getrusage``):
+    the work done, without the time the kernel spends handing over memory.
     """
     times: dict[str, list[float]] = {k: [] for k in cases}
+    if user is not None:
+        user.update({k: [] for k in cases})
     for fn in cases.values():
         fn()
     for _ in range(runs):
         for name, fn in cases.items():
             gc.collect()
+            u = user_seconds()
             t = clock()
             fn()
             times[name].append(clock() - t)
+            if user is not None:
+                user[name].append(user_seconds() - u)
     return times
+
+
+def user_seconds() -> float:
+    """CPU time this process has spent in user mode so far, all threads."""
+    import resource
+
+    return resource.getrusage(resource.RUSAGE_SELF).ru_utime
 
 
 def median(xs) -> float:
@@ -731,23 +753,39 @@ def open_rows(table: Table, runs: int, clock) -> dict:
         if COMPILED:
             cases["open, compiled"] = on_path(True, cases["open"])
             cases["closed, compiled"] = on_path(True, cases["closed"])
-        t = alternate(cases, runs, clock)
+        user: dict[str, list[float]] = {}
+        t = alternate(cases, runs, clock, user)
         for suffix in ("", ", compiled"):
             if "open" + suffix not in t:
                 continue
+            label = f"6. {name}, open / closed, per face" + (suffix and ", compiled kernels")
             po = median(t["open" + suffix]) / len(fo)
             pc = median(t["closed" + suffix]) / len(fc)
             r = np.array(t["open" + suffix]) / np.array(t["closed" + suffix])
             table.add(
                 sec,
-                f"6. {name}, open / closed, per face" + (suffix and ", compiled kernels"),
+                label,
                 po / pc,
                 "x",
                 target,
                 note=f"{1e9 * po:,.0f} and {1e9 * pc:,.0f} ns per face; "
                 f"runs {r.min():.2f}-{r.max():.2f}",
             )
+            if target is None:
+                continue
+            # a diagnosis without target: the same runs in CPU time (user mode),
+            # the work without the kernel's handing over of fresh memory
+            uo = median(user["open" + suffix]) / len(fo)
+            uc = median(user["closed" + suffix]) / len(fc)
+            table.add(
+                sec,
+                label + ", CPU time (user)",
+                uo / uc,
+                "x",
+                note=f"{1e9 * uo:,.0f} and {1e9 * uc:,.0f} ns per face in the same runs",
+            )
         out[name] = {k: [float(x) for x in xs] for k, xs in t.items()}
+        out[name + ", CPU time (user)"] = {k: [float(x) for x in xs] for k, xs in user.items()}
     return out
 
 
