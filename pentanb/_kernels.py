@@ -374,9 +374,10 @@ def preserved_faces_part(mid, head, nxt, base, out, lo, hi):  # pragma: no cover
         out[ix(r + 4)] = base + h
 
 
-def preserved_faces(mid, head, nxt, base):
+def preserved_faces(mid, head, nxt, base, room=0):
     # the corners of preserve_pentagons(mesh): the copies, then the pentagons
-    out = np.empty(6 * mid.size, mid.dtype)
+    # (the first 6 H entries of a buffer with ``room`` more: see schemes/_build.with_room)
+    out = np.empty(6 * mid.size + room, mid.dtype)
     split(mid.size, preserved_faces_part, mid, head, nxt, base, out)
     return out
 

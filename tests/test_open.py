@@ -1124,6 +1124,67 @@ def test_start_at_max_turns_rows_of_one_size_with_ties_and_extreme_values(k, dt)
     assert got.tolist() == want and got.dtype == dt
 
 
+@pytest.fixture(params=[False, True], ids=["numpy", "compiled"])
+def path(request, monkeypatch):
+    """The numpy path, then the compiled kernels (for meshes of any size)."""
+    from pentanb import _jit
+
+    if request.param and not _jit.available():
+        pytest.skip("numba is not installed")
+    monkeypatch.setattr(_jit, "MIN_CORNERS", 0)
+    before = _jit.use_jit(request.param)
+    yield request.param
+    _jit.use_jit(before)
+
+
+@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
+@pytest.mark.parametrize("name", ["holed grid", "open disk"])
+def test_the_dual_of_an_open_schemes_dual_shares_its_faces_and_changes_none(name, scheme, path):
+    # as the dual of a closed dual does: the scheme's output keeps room after
+    # its faces for the boundary's faces its dual of a dual adds
+    m = pb.SCHEMES[scheme](WRITTEN[name]())
+    corners, offsets = m.corners.copy(), m.offsets.copy()
+    two = pb.dual(pb.dual(m))
+    assert np.shares_memory(two.corners, m.corners)
+    assert np.shares_memory(two.offsets, m.offsets)
+    assert np.array_equal(m.corners, corners) and np.array_equal(m.offsets, offsets)
+    fresh = Mesh(m.vertices, face_lists(m))  # not an operator's output: no room, copied
+    want = pb.dual(pb.dual(fresh))
+    assert not np.shares_memory(want.corners, fresh.corners)
+    assert face_lists(two) == face_lists(want)
+    assert np.array_equal(two.vertices, want.vertices)
+    assert two.corners.dtype == want.corners.dtype and not two.corners.flags.writeable
+
+
+@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
+def test_a_second_dual_of_a_dual_copies_and_leaves_the_first_as_it_was(scheme):
+    m = pb.SCHEMES[scheme](WRITTEN["holed grid"]())
+    first = pb.dual(pb.dual(m))
+    kept = first.corners.copy(), first.offsets.copy()
+    # other positions (a corner of the boundary straightened, others made):
+    # the same faces, so the same room, which the first has taken
+    rng = np.random.default_rng(3)
+    moved = m.with_vertices(m.vertices + rng.normal(0, 0.2, m.vertices.shape))
+    second = pb.dual(pb.dual(moved))
+    assert not np.shares_memory(second.corners, m.corners)
+    assert np.array_equal(first.corners, kept[0]) and np.array_equal(first.offsets, kept[1])
+    want = pb.dual(pb.dual(Mesh(moved.vertices, face_lists(moved))))
+    assert face_lists(second) == face_lists(want)
+    assert np.array_equal(second.vertices, want.vertices)
+
+
+def test_room_goes_to_one_taker_of_its_dtype_and_size():
+    from pentanb.mesh.build import Room
+
+    room = Room(np.zeros(10, dtype=np.int32), np.zeros(4, dtype=np.int32))
+    assert room.take(11, 4, np.dtype(np.int32)) is None  # too short
+    assert room.take(10, 5, np.dtype(np.int32)) is None
+    assert room.take(10, 4, np.dtype(np.int64)) is None  # another dtype
+    got = room.take(8, 3, np.dtype(np.int32))
+    assert got is not None and got[0].size == 8 and got[1].size == 3
+    assert room.take(8, 3, np.dtype(np.int32)) is None  # taken
+
+
 @pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
 @pytest.mark.parametrize("first", ["vertex_ring", "twin", "boundary_halfedges", "n_edges"])
 @pytest.mark.parametrize("name", list(WRITTEN))

@@ -9,6 +9,7 @@ have just made, use :func:`adopted` (validated, not copied).
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Callable
 from typing import Any, cast
 
@@ -37,6 +38,9 @@ __all__ = [
     "note_boundary",
     "note_open_dual",
     "open_dual_record",
+    "Room",
+    "note_room",
+    "room",
 ]
 
 
@@ -250,3 +254,75 @@ def note_open_dual(mesh: Mesh, record: Any) -> None:
 def open_dual_record(mesh: Mesh) -> Any:
     """What :func:`note_open_dual` recorded with ``mesh``'s faces, or None."""
     return mesh._shared.values.get("_open_dual")
+
+
+class Room:
+    """Spare entries after an open mesh's face arrays, for its dual of a dual.
+
+    The dual of the open dual of a mesh M has M's faces, as they are, then a
+    few faces along the boundary (a quad along every boundary half-edge and
+    one at every corner).  An operator that makes an open M may allocate
+    M's corners and offsets as the first entries of longer buffers; the
+    dual of M's dual then writes its boundary faces after M's and shares
+    the buffers, as the dual of a closed dual shares its source's faces,
+    instead of copying every corner.  M's own arrays are views of the
+    first entries and never change.
+
+    The room goes to one taker only (the first to ask, under a lock): a
+    second dual of a dual of M (made from positions of its own, say) copies.
+
+    Parameters
+    ----------
+    corners, offsets : (H + r,) and (m + 1 + s,) int, writable
+        The buffers M's corners and offsets are the first H and m + 1
+        entries of.
+    """
+
+    __slots__ = ("_corners", "_offsets", "_lock", "_taken")
+
+    def __init__(self, corners: np.ndarray, offsets: np.ndarray) -> None:
+        self._corners, self._offsets = corners, offsets
+        self._lock = threading.Lock()
+        self._taken = False
+
+    def take(
+        self, n_corners: int, n_offsets: int, dtype: np.dtype
+    ) -> tuple[np.ndarray, np.ndarray] | None:
+        """The first ``n_corners`` and ``n_offsets`` entries of the buffers
+        (writable views, M's faces first), or None when they are shorter, of
+        another dtype, or were taken already."""
+        c, o = self._corners, self._offsets
+        if c.size < n_corners or o.size < n_offsets or c.dtype != dtype or o.dtype != dtype:
+            return None
+        with self._lock:
+            if self._taken:
+                return None
+            self._taken = True
+        return c[:n_corners], o[:n_offsets]
+
+
+def _starts(view: np.ndarray, buffer: np.ndarray) -> bool:
+    """Whether ``view`` is the first entries of ``buffer`` (contiguous, same dtype)."""
+    return (
+        view.dtype == buffer.dtype
+        and view.ndim == buffer.ndim == 1
+        and view.flags.c_contiguous
+        and buffer.flags.c_contiguous
+        and buffer.flags.writeable
+        and view.size <= buffer.size
+        and view.ctypes.data == buffer.ctypes.data
+    )
+
+
+def note_room(mesh: Mesh, corners: np.ndarray, offsets: np.ndarray) -> None:
+    """Record that ``mesh``'s corners and offsets are the first entries of the
+    buffers ``corners`` and ``offsets`` (:class:`Room`); nothing is recorded
+    when they are not (an operator's arrays converted to another dtype)."""
+    if _starts(mesh._corners, corners) and _starts(mesh._offsets, offsets):
+        mesh._shared.values.setdefault("_room", Room(corners, offsets))
+
+
+def room(mesh: Any) -> Room | None:
+    """The :class:`Room` after the faces of ``mesh`` (a Mesh or its
+    :func:`faces_only`), or None."""
+    return mesh._shared.values.get("_room")

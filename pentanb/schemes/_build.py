@@ -47,6 +47,19 @@ _Op = TypeVar("_Op", bound=Callable[..., Mesh])
 BLOCK = 1 << 13
 
 
+#: Room an open output keeps after its corners and after its offsets, per
+#: boundary half-edge of the output, for the faces its dual of a dual adds
+#: (:class:`pentanb.mesh.build.Room`): a quad along the half-edge, and at most
+#: one more quad where it ends at a corner; one face for each.
+ROOM_CORNERS, ROOM_OFFSETS = 8, 2
+
+
+def with_room(size: int, boundary: int, per: int, dtype: np.dtype) -> np.ndarray:
+    """An empty buffer of ``size`` entries and ``per`` more for each of an open
+    output's ``boundary`` half-edges (its array is the first ``size``)."""
+    return np.empty(size + per * boundary, dtype=dtype)
+
+
 def index_dtype(n_vertices: int, n_corners: int) -> np.dtype:
     """The dtype of an output's index arrays (int32 when its counts allow)."""
     return _index_dtype(n_vertices, n_corners)

@@ -26,6 +26,8 @@ from ..mesh.boundary import canonical_loops, hole_twins
 from ..mesh.halfedge import next_of, prev_of
 from ._build import (
     BLOCK,
+    ROOM_CORNERS,
+    ROOM_OFFSETS,
     boundary_prev,
     check_mesh,
     check_scale,
@@ -36,6 +38,7 @@ from ._build import (
     scale_safe,
     start_at_max,
     turned,
+    with_room,
 )
 
 __all__ = ["pentagonalize", "preserve_pentagons"]
@@ -111,7 +114,9 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     forward = _mesh.forward(mesh)
     # every column is computed contiguously and written once: numpy is slow on
     # strided views, and slower still on views whose last axis is short
-    faces = np.empty((H, 5), dtype=dt)
+    B_out = 0 if closed else 3 * mesh.boundary_halfedges.size  # (room for the dual's dual)
+    buffer = with_room(5 * H, B_out, ROOM_CORNERS, dt)
+    faces = buffer[: 5 * H].reshape(H, 5)
     base = mesh.halfedge_edge.astype(dt)  # V + 2e
     base *= 2
     base += n
@@ -139,15 +144,18 @@ def pentagonalize(mesh: Mesh) -> Mesh:
     edge_points(mesh, 2, out=vertices[n : n + 2 * E])
     vertices[n + 2 * E :] = mesh.face_centroids
     if not closed:  # its twins, boundary and rings written from the input's, apart
+        offsets = with_room(H + 1, B_out, ROOM_OFFSETS, dt)
+        offsets[: H + 1] = np.arange(0, 5 * H + 1, 5, dtype=dt)
         return _open_output(
             mesh,
             vertices,
-            faces.reshape(-1),
-            np.arange(0, 5 * H + 1, 5, dtype=dt),
+            buffer[: 5 * H],
+            offsets[: H + 1],
             dt,
             _pentagonalized_chain,
             _pentagonalized_open_twin,
             _pentagonalized_open_rings,
+            room=(buffer, offsets),
         )
     # the twins' producer holds the input's twins and offsets only, not its
     # faces (whose cached connectivity would then stay alive until the
@@ -182,7 +190,9 @@ def _pentagonalized_twin(twin: np.ndarray, offsets: np.ndarray, dt: np.dtype) ->
     return out.reshape(-1)
 
 
-def _open_output(mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_of, **kw) -> Mesh:
+def _open_output(
+    mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_of, room=None, **kw
+) -> Mesh:
     """:func:`output` of a scheme's open output, its boundary, twins and rings written apart.
 
     ``chain_of(faces)`` gives the output's boundary half-edges ``(B, p)``:
@@ -194,7 +204,9 @@ def _open_output(mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_
     rings (``rings_of(faces, hole, dt)``, ``hole`` ``(B, p)`` its hole
     half-edge along every piece), whichever is asked for first.
     The rings do not wait for the twins: the dual of an open mesh needs
-    its rings and boundary only.
+    its rings and boundary only.  ``room``: the buffers ``corners`` and
+    ``offsets`` are the first entries of, with room for the dual of its
+    dual (:class:`~pentanb.mesh.build.Room`).
     """
     faces = _mesh.faces_only(mesh)
     # the boundary now (a few arrays of p B entries), so that no producer
@@ -220,6 +232,8 @@ def _open_output(mesh, vertices, corners, offsets, dt, chain_of, twin_of, rings_
 
     out = output(vertices, corners, offsets, twin=twin, rings=rings, **kw)
     _mesh.note_boundary(out, lambda: loops)
+    if room is not None:
+        _mesh.note_room(out, *room)
     return out
 
 
@@ -466,11 +480,14 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
         p *= s
         np.add(centre, p, out=copies[lo:hi])
         del p, centre  # (a block's temporaries: gone before the next allocations)
+    B_out = 0 if mesh.is_closed else 2 * mesh.boundary_halfedges.size  # (room: dual's dual)
     faces_jit = _jit.kernels(6 * H)
     if faces_jit is not None:  # the same corners, written in one pass
-        corners = faces_jit.preserved_faces(mid, mesh.head, mesh.next, n + E)
+        buffer = faces_jit.preserved_faces(mid, mesh.head, mesh.next, n + E, ROOM_CORNERS * B_out)
+        corners = buffer[: 6 * H]
     else:
-        corners = np.empty(6 * H, dtype=dt)
+        buffer = with_room(6 * H, B_out, ROOM_CORNERS, dt)
+        corners = buffer[: 6 * H]
         corners[:H] = np.arange(n + E, n + E + H, dtype=dt)  # the copies, face by face
         pentagons = corners[H:].reshape(H, 5)
         nxt = mesh.next
@@ -479,7 +496,8 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
         pentagons[:, 2] = mid[nxt]
         np.add(nxt, n + E, out=pentagons[:, 3])
         pentagons[:, 4] = corners[:H]
-    face_offsets = np.empty(F + H + 1, dtype=dt)
+    room = with_room(F + H + 1, B_out, ROOM_OFFSETS, dt)
+    face_offsets = room[: F + H + 1]
     face_offsets[: F + 1] = offsets
     face_offsets[F + 1 :] = np.arange(H + 5, 6 * H + 1, 5, dtype=dt)
     # the face sizes: the input's (the copies) and H pentagons
@@ -496,6 +514,7 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
             _preserved_chain,
             _preserved_open_twin,
             _preserved_open_rings,
+            room=(buffer, room),
             size_counts=counts,
         )
     return remeshed(

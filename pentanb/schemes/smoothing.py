@@ -94,7 +94,10 @@ def dual(mesh: Mesh) -> Mesh:
     open mesh the twins, boundary loops and rings are written from the
     input's rings and loops too (no sorting); the dual of an open dual has
     the faces of the mesh it came from first, as they are (each face's
-    corners in that mesh's order), then those of the boundary.
+    corners in that mesh's order), then those of the boundary.  When that
+    mesh is an output of the paper's two schemes, which keep room after
+    their faces for this, it shares that mesh's face arrays, as the dual
+    of a closed dual does; else it copies them.
 
     Raises
     ------
@@ -200,7 +203,8 @@ def _open_dual_output(
     _mesh.note_boundary(out, lambda: canonical_loops(*_open_dual_chain(base, one, loops)))
     # for the dual of this dual: the input's faces and boundary (arrays only,
     # so that a chain of duals keeps no earlier mesh's connectivity alive)
-    record = (faces.corners, faces.offsets, _mesh.uniform_size(faces), bh, loops, base, one)
+    room = _mesh.room(faces)  # where the dual of this dual may write its boundary's faces
+    record = (faces.corners, faces.offsets, _mesh.uniform_size(faces), bh, loops, base, one, room)
     _mesh.note_open_dual(out, record)
     _mesh.note_extent(out, _mesh.extent(mesh))
     return out
@@ -231,6 +235,7 @@ def _open_dual_again(
     loops: np.ndarray,
     base: np.ndarray,
     one: np.ndarray,
+    room: _mesh.Room | None,
 ) -> Mesh:
     """The dual of ``mesh``, itself the open dual of a mesh ``source``, from
     ``source``'s faces (corners, offsets, k: their one size or 0), boundary
@@ -246,6 +251,11 @@ def _open_dual_again(
     ``mesh``'s vertex ``F + B + c`` gives the midpoints of its two
     boundary edges, itself when it is still a corner, and the face it is
     a vertex of.  ``base`` and ``one`` are as in :func:`_open_dual_chain`.
+
+    The faces along the boundary follow ``source``'s.  When ``source``'s
+    arrays have room after them (``room``, :class:`~pentanb.mesh.build.Room`),
+    they are written there and the dual shares ``source``'s faces, as the
+    dual of a closed dual does; else every corner is copied.
     """
     F1 = mesh.n_faces  # source's vertices
     bh1 = mesh.boundary_halfedges
@@ -290,12 +300,17 @@ def _open_dual_again(
     n_out = F1 + B1 + kept.size
     total = H + 4 * B + ends_flat.size
     dt = index_dtype(n_out, total)
-    corners = np.empty(total, dtype=dt)
-    corners[:H] = source_corners  # (the dual of the dual's rings would turn them)
+    n_offsets = F + B + two.size + 1
+    shared = None if room is None else room.take(total, n_offsets, dt)
+    if shared is not None:  # source's faces are there already
+        corners, offsets = shared
+    else:
+        corners = np.empty(total, dtype=dt)
+        corners[:H] = source_corners  # (the dual of the dual's rings would turn them)
+        offsets = np.empty(n_offsets, dtype=dt)
+        offsets[: F + 1] = offsets_in
     corners[H : H + 4 * B] = quads.reshape(-1)
     corners[H + 4 * B :] = ends_flat
-    offsets = np.empty(F + B + two.size + 1, dtype=dt)
-    offsets[: F + 1] = offsets_in
     offsets[F + 1 : F + B + 1] = H + 4 * np.arange(1, B + 1)
     offsets[F + B + 1 :] = H + 4 * B + np.cumsum(3 + (still >= 0))
     turned = (source_corners, source_offsets, k)
