@@ -1173,6 +1173,23 @@ def test_a_second_dual_of_a_dual_copies_and_leaves_the_first_as_it_was(scheme):
     assert np.array_equal(second.vertices, want.vertices)
 
 
+@pytest.mark.parametrize("block", [1, 2, 5, 64])
+@pytest.mark.parametrize("name", ["holed grid", "open disk", "torus without three faces"])
+def test_pentagonalizations_open_rings_are_the_derived_ones_whatever_the_edge_blocks(
+    name, block, monkeypatch
+):
+    # the numpy path writes the trisection points' rings edge block by edge
+    # block: blocks with and without boundary edges, of one edge or more
+    from pentanb.schemes import pentagonal
+
+    monkeypatch.setattr(pentagonal, "EDGE_BLOCK", block)
+    out = pb.pentagonalize(WRITTEN[name]())
+    assert out.n_halfedges < pb._jit.MIN_CORNERS  # (the numpy path)
+    ring, off = out.vertex_ring
+    want, want_off = Mesh(out.vertices, face_lists(out)).vertex_ring
+    assert ring.tolist() == want.tolist() and off.tolist() == want_off.tolist()
+
+
 def test_room_goes_to_one_taker_of_its_dtype_and_size():
     from pentanb.mesh.build import Room
 

@@ -43,6 +43,10 @@ from ._build import (
 
 __all__ = ["pentagonalize", "preserve_pentagons"]
 
+#: Edges per block where an open output's rings are written block by block
+#: (the blocks' temporaries, under a megabyte, stay in cache and out of the peak).
+EDGE_BLOCK = 1 << 15
+
 
 def _midpoint_rings(mids: np.ndarray, eh: np.ndarray, back: np.ndarray, prv: np.ndarray, H: int):
     """Fill ``mids`` (E, 4): the four output half-edges round every edge's midpoint.
@@ -328,36 +332,48 @@ def _pentagonalized_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
     old += 2
     hp = np.flatnonzero(ring >= H)
     old[hp] = hole[ring[hp] - H, 2]
-    # round the trisection points, 3 each ((E, 2, 3): the edge's points 2e,
-    # 2e + 1), every row turned to start at its largest
-    back = mesh.twin[eh].astype(dt, copy=False)  # (a new array: written below)
+    # round the trisection points, 3 each (rows (2, 3) per edge: the edge's
+    # points 2e, 2e + 1), every row turned to start at its largest; edge
+    # block by edge block, so that the temporaries stay small
     edge_of_b = mesh.halfedge_edge[bh].astype(np.int64)
-    back[edge_of_b] = eh[edge_of_b]  # (any face half-edge: written over below)
-    pts = np.empty((E, 2, 3), dtype=dt)
-    for p, parts in enumerate(
-        (((eh, 0), (prv[eh], 3), (back, 1)), ((back, 0), (prv[back], 3), (eh, 1)))
-    ):
-        cols = []
-        for part, add in parts:
-            col = part * 5
-            col += add
-            cols.append(col)
-        turned(cols, pts[:, p])
-        del cols
-    # on the boundary, rows that start at their largest (the hole half-edge)
-    b = bh.astype(np.int64)
-    t1 = (mesh.corners[bh] > mesh.head[bh]).astype(np.int64)  # t1 is 2e + 1 when b runs down
-    pb = prv[bh].astype(np.int64)
-    pts[edge_of_b, t1, 0] = hole[:, 0]
-    pts[edge_of_b, t1, 1] = 5 * b
-    pts[edge_of_b, t1, 2] = 5 * pb + 3
-    pts[edge_of_b, 1 - t1, 0] = hole[:, 1]
-    pts[edge_of_b, 1 - t1, 1] = 5 * b + 1
-    # t2: two half-edges, its row's last place left out
-    written = np.ones(6 * E, dtype=bool)
-    written[3 * (2 * edge_of_b + 1 - t1) + 2] = False
-    rings[N : N + P] = pts.reshape(-1)[written]
-    del pts, written
+    order = np.argsort(edge_of_b, kind="stable")  # the boundary edges in edge order
+    on_b = edge_of_b[order]
+    b = bh[order].astype(np.int64)
+    t1 = (mesh.corners[b] > mesh.head[b]).astype(np.int64)  # t1 is 2e + 1 when b runs down
+    pb = prv[b].astype(np.int64)
+    hole_b = hole[order]
+    starts = np.arange(0, E + EDGE_BLOCK, EDGE_BLOCK)
+    cut = np.searchsorted(on_b, starts)  # the boundary edges of every block
+    for i, a in enumerate(starts[:-1].tolist()):
+        z, lo, hi = min(a + EDGE_BLOCK, E), int(cut[i]), int(cut[i + 1])
+        h = eh[a:z]
+        back = mesh.twin.take(h).astype(dt, copy=False)
+        j = on_b[lo:hi] - a  # the block's boundary edges
+        back[j] = h[j]  # (their twin is a hole half-edge: any face half-edge, written over)
+        pts = np.empty((z - a, 2, 3), dtype=dt)
+        for p, parts in enumerate(
+            (((h, 0), (prv.take(h), 3), (back, 1)), ((back, 0), (prv.take(back), 3), (h, 1)))
+        ):
+            cols = []
+            for part, add in parts:
+                col = part * 5
+                col += add
+                cols.append(col)
+            turned(cols, pts[:, p])
+        flat = pts.reshape(-1)
+        if hi > lo:  # rows that start at their largest (the hole half-edge)
+            up, bb, pp = t1[lo:hi], b[lo:hi], pb[lo:hi]
+            pts[j, up, 0] = hole_b[lo:hi, 0]
+            pts[j, up, 1] = 5 * bb
+            pts[j, up, 2] = 5 * pp + 3
+            pts[j, 1 - up, 0] = hole_b[lo:hi, 1]
+            pts[j, 1 - up, 1] = 5 * bb + 1
+            # t2: two half-edges, its row's last place left out
+            written = np.ones(flat.size, dtype=bool)
+            written[3 * (2 * j + 1 - up) + 2] = False
+            flat = flat[written]
+        at = N + 6 * a - lo  # (every boundary edge before a left one place out)
+        rings[at : at + flat.size] = flat
     # round the centre of f: 5h + 4 for f's half-edges, from its last (the
     # largest) on: 5 (h - 1) + 4, and 5 (last h) + 4 at its first
     offsets = mesh.offsets
@@ -368,7 +384,7 @@ def _pentagonalized_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
     last -= 1
     centres[offsets[:-1]] = last
     sizes = np.full(2 * E, 3, dtype=dt)
-    sizes[2 * edge_of_b + 1 - t1] = 2
+    sizes[2 * on_b + 1 - t1] = 2
     out_off = np.empty(n + 2 * E + mesh.n_faces + 1, dtype=dt)
     out_off[: n + 1] = ring_off
     np.cumsum(sizes, out=out_off[n + 1 : n + 2 * E + 1])
