@@ -24,7 +24,8 @@ measured in this run, as a ratio or a per-face figure with its target:
 6. open meshes: the paper's two schemes + two duals, from raw arrays, on a
    planar grid of 1,000,000 quads with 500 square holes (24,200 boundary
    edges, 501 boundary loops) against a closed torus grid of 1,000,000 quads,
-   time per face, open over closed (at most 1.25x), with the same runs' ratio
+   time per face, open over closed (at most 1.25x; each path on its own,
+   open and closed alternating in balanced order), with the same runs' ratio
    in CPU time (user mode, all threads: the work done, without the time the
    kernel spends handing over fresh memory) beside it, without a target; and
    ``Mesh(V, F)`` alone, without a target (the part of it that validation
@@ -143,6 +144,7 @@ def alternate(
     runs: int,
     clock,
     user: dict[str, list[float]] | None = None,
+    balanced: bool = False,
 ) -> dict[str, list[float]]:
     """Time every case once per round, ``runs`` rounds, after one untimed warm-up round.
 
@@ -150,14 +152,19 @@ def alternate(
     ratios can be taken run by run.  ``user``, when given, receives the CPU
     time in user mode of the same runs (all threads, from ``getrusage``):
     the work done, without the time the kernel spends handing over memory.
+    ``balanced`` runs every other round in the reverse order (A B, B A, A B,
+    ...), so that every case follows itself as often as another one: what
+    the run before freed, and the kernel still holds, is then no more one
+    case's than another's.
     """
     times: dict[str, list[float]] = {k: [] for k in cases}
     if user is not None:
         user.update({k: [] for k in cases})
     for fn in cases.values():
         fn()
-    for _ in range(runs):
-        for name, fn in cases.items():
+    for r in range(runs):
+        order = list(cases.items())
+        for name, fn in order[::-1] if balanced and r % 2 else order:
             gc.collect()
             u = user_seconds()
             t = clock()
@@ -746,15 +753,21 @@ def open_rows(table: Table, runs: int, clock) -> dict:
         ),
     }
     for name, (job, target) in jobs.items():
-        cases = {
-            "open": lambda job=job: job(vo, fo),
-            "closed": lambda job=job: job(vc, fc),
-        }
-        if COMPILED:
-            cases["open, compiled"] = on_path(True, cases["open"])
-            cases["closed, compiled"] = on_path(True, cases["closed"])
+        # each path on its own, open and closed in balanced alternation: with
+        # the paths interleaved, every open run followed a run of the other
+        # path and every closed run the open run of its own, whose memory it
+        # took over (see docs/performance.md)
+        t: dict[str, list[float]] = {}
         user: dict[str, list[float]] = {}
-        t = alternate(cases, runs, clock, user)
+        for compiled in (False, True) if COMPILED else (False,):
+            suffix = ", compiled" if compiled else ""
+            cases = {
+                "open" + suffix: on_path(compiled, lambda job=job: job(vo, fo)),
+                "closed" + suffix: on_path(compiled, lambda job=job: job(vc, fc)),
+            }
+            more: dict[str, list[float]] = {}
+            t.update(alternate(cases, runs, clock, more, balanced=True))
+            user.update(more)
         for suffix in ("", ", compiled"):
             if "open" + suffix not in t:
                 continue
