@@ -233,9 +233,12 @@ def _valid_open(
     prv = None if k else mesh.prev
     got = walk_rings(twin, c, k, prv, mesh.valences, boundary, hole_tail)
     if got is None:  # the numpy path
+        # (the rotation is not kept: the rings are what the mesh keeps)
+        rotation = rotation_of(twin, mesh._offsets, k, mesh)
         ring, ring_off = open_vertex_rings(
-            mesh.rotation, c, None, bh, loop_off, mesh.valences, hole_tail
+            rotation, c, None, bh, loop_off, mesh.valences, hole_tail
         )
+        del rotation
         ok = _each_once(ring)
     else:
         ring, ring_off, ok = got
