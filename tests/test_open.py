@@ -1190,6 +1190,25 @@ def test_pentagonalizations_open_rings_are_the_derived_ones_whatever_the_edge_bl
     assert ring.tolist() == want.tolist() and off.tolist() == want_off.tolist()
 
 
+@pytest.mark.parametrize("block", [1, 2, 7, 64])
+@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons", None])
+@pytest.mark.parametrize("name", ["holed grid", "open disk", "annulus"])
+def test_the_open_duals_faces_are_the_same_whatever_the_blocks(name, scheme, block, monkeypatch):
+    # the numpy path copies the ring's items around the boundary's insertions
+    # block by block: blocks with and without insertions, of one place or more
+    from pentanb.schemes import _build
+
+    m = WRITTEN[name]()
+    if scheme is not None:
+        m = pb.SCHEMES[scheme](m)
+    assert m.n_halfedges < pb._jit.MIN_CORNERS  # (the numpy path)
+    want = pb.dual(m)  # (these meshes fit in one block)
+    monkeypatch.setattr(_build, "OUT_BLOCK", block)
+    got = pb.dual(Mesh(m.vertices, face_lists(m)))
+    assert face_lists(got) == face_lists(want)
+    assert np.array_equal(got.vertices, want.vertices)
+
+
 def test_room_goes_to_one_taker_of_its_dtype_and_size():
     from pentanb.mesh.build import Room
 

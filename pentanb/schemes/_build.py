@@ -187,6 +187,11 @@ def inverse(ring: np.ndarray) -> np.ndarray:
     return pos
 
 
+#: Places per block where :func:`opened_ring_items` copies the ring's items
+#: around the boundary's insertions (the blocks' masks stay in cache).
+OUT_BLOCK = 1 << 15
+
+
 #: Rings of up to this many half-edges each are turned by :func:`turned`
 #: (its work grows as the square of the size: beyond, numpy's argmax and
 #: take_along_axis cost less).
@@ -861,11 +866,21 @@ def opened_ring_items(
     base = offsets[v].astype(np.int64)  # where the face of v starts: what H + j gives
     out = np.empty(total, dtype=dt)
     if total > values.size:
-        taken = np.ones(total, dtype=bool)  # the places of ``values``, in order
-        for q in range(3 - per):  # the inserted places: base + per + q, q < count - per
-            taken[base[count - per > q] + per + q] = False
-        out[taken] = values
-        del taken
+        # the inserted places (base + per + q, q < count - per), in order; the
+        # other places take ``values`` in order, block by block of the output
+        inserted = np.sort(
+            np.concatenate([base[count - per > q] + per + q for q in range(3 - per)])
+        )
+        cut = np.searchsorted(inserted, np.arange(0, total + OUT_BLOCK, OUT_BLOCK))
+        for i, a in enumerate(range(0, total, OUT_BLOCK)):
+            z, lo, hi = min(a + OUT_BLOCK, total), int(cut[i]), int(cut[i + 1])
+            at = a - lo  # the values before place a: a less the insertions before it
+            if lo == hi:
+                out[a:z] = values[at : at + z - a]
+                continue
+            taken = np.ones(z - a, dtype=bool)
+            taken[inserted[lo:hi] - a] = False
+            out[a:z][taken] = values[at : at + z - a - (hi - lo)]
     else:
         out[...] = values
     if k > 1:
