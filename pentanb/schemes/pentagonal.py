@@ -512,8 +512,8 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
         pentagons[:, 2] = mid[nxt]
         np.add(nxt, n + E, out=pentagons[:, 3])
         pentagons[:, 4] = corners[:H]
-    room = with_room(F + H + 1, B_out, ROOM_OFFSETS, dt)
-    face_offsets = room[: F + H + 1]
+    offsets_buffer = with_room(F + H + 1, B_out, ROOM_OFFSETS, dt)
+    face_offsets = offsets_buffer[: F + H + 1]
     face_offsets[: F + 1] = offsets
     face_offsets[F + 1 :] = np.arange(H + 5, 6 * H + 1, 5, dtype=dt)
     # the face sizes: the input's (the copies) and H pentagons
@@ -530,7 +530,7 @@ def preserve_pentagons(mesh: Mesh, scale: float = 0.75) -> Mesh:
             _preserved_chain,
             _preserved_open_twin,
             _preserved_open_rings,
-            room=(buffer, room),
+            room=(buffer, offsets_buffer),
             size_counts=counts,
         )
     return remeshed(
