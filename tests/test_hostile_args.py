@@ -13,6 +13,8 @@ memory limit run in a subprocess of their own (marked slow).
 from __future__ import annotations
 
 import dataclasses
+import gc
+import os
 import re
 import subprocess
 import sys
@@ -275,23 +277,36 @@ def test_a_string_over_the_length_limit_is_refused_before_it_is_reduced(monkeypa
 
 
 def _lines(call, budget: float = float("inf")) -> int:
-    """Line events the interpreter runs for ``call()``: a count of work, not a time
-    (Overrun past ``budget``, so that super-linear work fails fast)."""
+    """Line events the interpreter runs in pentanb's own code for ``call()``: a count
+    of work, not a time (Overrun past ``budget``, so that super-linear work fails fast).
+
+    Only pentanb's lines count, and the collector is held off during the call: a
+    collection there would run other tests' finalizers (a widget's ``__del__``) and
+    their lines would count as this call's work.
+    """
     events = 0
+    package = os.path.dirname(pentanb.__file__)
 
     def trace(frame, event, arg):
         nonlocal events
+        if not frame.f_code.co_filename.startswith(package):
+            return None
         if event == "line":
             events += 1
             if events > budget:
                 raise Overrun(f"more than {budget:,.0f} line events")
         return trace
 
+    gc.collect()
+    was_enabled = gc.isenabled()
+    gc.disable()
     sys.settrace(trace)
     try:
         call()
     finally:
         sys.settrace(None)
+        if was_enabled:
+            gc.enable()
     return events
 
 
