@@ -29,7 +29,10 @@ measured in this run, as a ratio or a per-face figure with its target:
    in CPU time (user mode, all threads: the work done, without the time the
    kernel spends handing over fresh memory) beside it, without a target; and
    ``Mesh(V, F)`` alone, without a target (the part of it that validation
-   takes);
+   takes).  On a virtual machine whose kernel counts its free page reporting
+   passes (handing free memory back to the host), the runs during which one
+   ran are set apart and the cases run in a random order instead, until each
+   has its runs; a row without target gives the median of every run;
 
 When numba is installed (``pip install -e .[jit]``), the rows of 2., 3., 4.'s
 time ratio and 6. are measured twice, alternating run by run: the numpy path
@@ -145,6 +148,7 @@ def alternate(
     clock,
     user: dict[str, list[float]] | None = None,
     balanced: bool = False,
+    disturbed: dict[str, list[float]] | None = None,
 ) -> dict[str, list[float]]:
     """Time every case once per round, ``runs`` rounds, after one untimed warm-up round.
 
@@ -156,23 +160,68 @@ def alternate(
     ...), so that every case follows itself as often as another one: what
     the run before freed, and the kernel still holds, is then no more one
     case's than another's.
+
+    ``disturbed``, when given and the kernel counts its free page reporting
+    passes (:func:`reporting_passes`), receives the seconds of every run
+    during which such a pass ran, and those runs are not returned (``user``
+    has every run): rounds go on until every case has ``runs`` undisturbed
+    runs, or ``3 * runs`` rounds have run (a case may then have fewer).  The
+    cases then run in an order drawn at random every round (seeded): the
+    passes come at a steady pace, every two seconds or so, and a fixed order
+    falls in step with them, so that one case would catch them all.
     """
     times: dict[str, list[float]] = {k: [] for k in cases}
     if user is not None:
         user.update({k: [] for k in cases})
+    quiet = disturbed is not None and reporting_passes() is not None
+    if disturbed is not None:
+        disturbed.update({k: [] for k in cases})
     for fn in cases.values():
         fn()
-    for r in range(runs):
+    draw = np.random.default_rng(0)
+    r = 0
+    while r < (3 * runs if quiet else runs):
+        if quiet and min(len(ts) for ts in times.values()) >= runs:
+            break
         order = list(cases.items())
-        for name, fn in order[::-1] if balanced and r % 2 else order:
+        if quiet:  # passes come at a steady pace: an order of its own would fall in step
+            order = [order[i] for i in draw.permutation(len(order))]
+        elif balanced and r % 2:
+            order = order[::-1]
+        for name, fn in order:
             gc.collect()
+            passes = reporting_passes()
             u = user_seconds()
             t = clock()
             fn()
-            times[name].append(clock() - t)
+            took = clock() - t
             if user is not None:
                 user[name].append(user_seconds() - u)
+            if quiet and reporting_passes() != passes:
+                disturbed[name].append(took)  # type: ignore[index]
+            else:
+                times[name].append(took)
+        r += 1
     return times
+
+
+#: where a Linux kernel that hands free memory back to its host (a virtual
+#: machine's free page reporting) counts its passes, when it does
+REPORTING_PASSES = Path("/sys/module/page_reporting/parameters/passes")
+
+
+def reporting_passes() -> int | None:
+    """The free page reporting passes the kernel has made so far, or None
+    where it does not count them.
+
+    On a virtual machine that reports its free memory to the host, a pass
+    that runs during a timed run adds a second or more of kernel time to it,
+    whichever case it is (see ``docs/performance.md``).
+    """
+    try:
+        return int(REPORTING_PASSES.read_text())
+    except (OSError, ValueError):
+        return None
 
 
 def user_seconds() -> float:
@@ -759,6 +808,7 @@ def open_rows(table: Table, runs: int, clock) -> dict:
         # took over (see docs/performance.md)
         t: dict[str, list[float]] = {}
         user: dict[str, list[float]] = {}
+        noisy: dict[str, list[float]] = {}
         for compiled in (False, True) if COMPILED else (False,):
             suffix = ", compiled" if compiled else ""
             cases = {
@@ -766,26 +816,51 @@ def open_rows(table: Table, runs: int, clock) -> dict:
                 "closed" + suffix: on_path(compiled, lambda job=job: job(vc, fc)),
             }
             more: dict[str, list[float]] = {}
-            t.update(alternate(cases, runs, clock, more, balanced=True))
+            # the runs during which the host took free memory back are set
+            # apart (a pass costs any run a second or more of kernel time)
+            passes: dict[str, list[float]] | None = {} if target is not None else None
+            t.update(alternate(cases, runs, clock, more, balanced=True, disturbed=passes))
             user.update(more)
+            noisy.update(passes or {})
         for suffix in ("", ", compiled"):
             if "open" + suffix not in t:
                 continue
             label = f"6. {name}, open / closed, per face" + (suffix and ", compiled kernels")
-            po = median(t["open" + suffix]) / len(fo)
-            pc = median(t["closed" + suffix]) / len(fc)
-            r = np.array(t["open" + suffix]) / np.array(t["closed" + suffix])
+            to, tc = t["open" + suffix], t["closed" + suffix]
+            held = [len(noisy.get(k + suffix, ())) for k in ("open", "closed")]
+            if min(len(to), len(tc)) < 3:  # too few undisturbed runs: every run
+                to, tc = to + noisy["open" + suffix], tc + noisy["closed" + suffix]
+                held = [0, 0]
+                print(f"  ({label}: too few runs without a reporting pass; every run counts)")
+            po, pc = median(to) / len(fo), median(tc) / len(fc)
             table.add(
                 sec,
                 label,
                 po / pc,
                 "x",
                 target,
-                note=f"{1e9 * po:,.0f} and {1e9 * pc:,.0f} ns per face; "
-                f"runs {r.min():.2f}-{r.max():.2f}",
+                note=f"{1e9 * po:,.0f} and {1e9 * pc:,.0f} ns per face; runs "
+                f"{min(to) / median(tc):.2f}-{max(to) / median(tc):.2f} of the closed median"
+                + (
+                    f"; {len(to)} and {len(tc)} runs, {held[0]} and {held[1]} set apart"
+                    if any(held)
+                    else ""
+                ),
             )
             if target is None:
                 continue
+            if any(held):
+                # a diagnosis without target: every run, those set apart included
+                ao = median(to + noisy["open" + suffix]) / len(fo)
+                ac = median(tc + noisy["closed" + suffix]) / len(fc)
+                table.add(
+                    sec,
+                    label + ", every run",
+                    ao / ac,
+                    "x",
+                    note=f"{1e9 * ao:,.0f} and {1e9 * ac:,.0f} ns per face, with the "
+                    "runs during which the host took free memory back",
+                )
             # a diagnosis without target: the same runs in CPU time (user mode),
             # the work without the kernel's handing over of fresh memory
             uo = median(user["open" + suffix]) / len(fo)
