@@ -212,6 +212,23 @@ class JupyterLab:
             time.sleep(0.25)
         return self
 
+    def server_errors(self) -> str:
+        """The server log's tracebacks and error lines so far (for a failure's message)."""
+        try:
+            text = self.log_path.read_text(errors="replace")
+        except OSError:
+            return ""
+        lines = text.splitlines()
+        keep = [
+            i
+            for i, line in enumerate(lines)
+            if "Traceback" in line or " 500 " in line or "[E " in line or "Error" in line
+        ]
+        if not keep:
+            return ""
+        shown = "\n".join(lines[max(keep[0] - 2, 0) : keep[-1] + 20][-80:])
+        return f"\nthe server's log:\n{shown}"
+
     def _env(self) -> dict:
         env = dict(os.environ)
         for name in ("config", "data", "runtime", "settings", "workspaces", "ipython"):
@@ -334,6 +351,14 @@ def listen(page) -> list:
     messages = []
     page.on("console", lambda m: messages.append((m.type, m.text)))
     page.on("pageerror", lambda e: messages.append(("pageerror", str(e))))
+    # the address of a server error, which the console message leaves out
+    page.on(
+        "response",
+        lambda r: (
+            r.status >= 500
+            and messages.append(("error", f"HTTP {r.status}: {r.request.method} {r.url}"))
+        ),
+    )
     return messages
 
 
@@ -654,7 +679,30 @@ def _movable_slider(cell):
     return None
 
 
+class ServerError(AssertionError):
+    """The Jupyter server answered a request of the page with an error (HTTP 5xx),
+    and the notebook nothing else wrong."""
+
+
+def server_error_only(bad: list[str]) -> bool:
+    """Whether the console errors of :func:`bad_console` are all a server's HTTP 5xx."""
+    return bool(bad) and all(
+        "HTTP 5" in m or re.search(r"responded with a status of 5\d\d", m) for m in bad
+    )
+
+
 def check_notebook(notebook: Path, lab_page: LabPage, artifacts: Path) -> None:
+    """:func:`check_notebook_once`, again in a new page when the only trouble was a
+    server error (:class:`ServerError`): the Jupyter server's, not the notebook's
+    (a second one fails the test)."""
+    try:
+        check_notebook_once(notebook, lab_page, artifacts)
+    except ServerError as first:
+        print(f"\n{notebook.name}: checked again after a server error: {first}")
+        check_notebook_once(notebook, lab_page, artifacts)
+
+
+def check_notebook_once(notebook: Path, lab_page: LabPage, artifacts: Path) -> None:
     """The browser test of one notebook (see ``tests/test_browser_lab_a.py``).
 
     Opens ``notebook`` in the JupyterLab of ``lab_page`` (a tab of its own in
@@ -732,7 +780,10 @@ def check_notebook(notebook: Path, lab_page: LabPage, artifacts: Path) -> None:
             f"{notebook.name}: the kernel made {sweep['renderers']} 3D views, the page shows none"
         )
         bad = bad_console(lab_page.messages)
-        assert not bad, f"{notebook.name}: console errors: {bad}"
+        if bad:
+            raise (ServerError if server_error_only(bad) else AssertionError)(
+                f"{notebook.name}: console errors: {bad}" + lab_page.lab.server_errors()
+            )
         print(
             f"\n{summary}; ran in {t_run:.1f} s, swept in {time.monotonic() - t_sweep:.1f} s, "
             f"checked in {time.monotonic() - t0:.1f} s"

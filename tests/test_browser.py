@@ -130,3 +130,41 @@ def test_offline_html_works_without_network_or_kernel(kind, browser, artifacts, 
         assert not bad, f"offline {kind}: console errors: {bad}"
     finally:
         context.close()
+
+
+def test_only_a_server_error_is_told_apart():
+    failed = "error: Failed to load resource: the server responded with a status of 500 (x)"
+    where = "error: HTTP 500: GET http://127.0.0.1:1/lab/api/workspaces/default"
+    assert bs.server_error_only([failed, where])
+    assert not bs.server_error_only([failed, "pageerror: TypeError: t is undefined"])
+    assert not bs.server_error_only(["error: the server responded with a status of 403"])
+    assert not bs.server_error_only([])
+
+
+def test_a_notebook_is_checked_again_once_after_a_server_error(monkeypatch):
+    a, b, c = (Path(n) for n in ("a.ipynb", "b.ipynb", "c.ipynb"))
+    calls = []
+
+    def once(notebook, lab_page, artifacts, fail_times):
+        calls.append(notebook)
+        if len(calls) <= fail_times:
+            raise bs.ServerError(f"{notebook}: console errors: HTTP 500")
+
+    monkeypatch.setattr(bs, "check_notebook_once", lambda *a: once(*a, fail_times=1))
+    bs.check_notebook(a, None, None)
+    assert calls == [a, a]
+    calls.clear()
+    monkeypatch.setattr(bs, "check_notebook_once", lambda *a: once(*a, fail_times=2))
+    with pytest.raises(bs.ServerError):
+        bs.check_notebook(b, None, None)
+    assert calls == [b, b]
+    calls.clear()
+
+    def broken(*a):
+        calls.append(a[0])
+        raise AssertionError("a widget failed to display")
+
+    monkeypatch.setattr(bs, "check_notebook_once", broken)
+    with pytest.raises(AssertionError, match="widget"):
+        bs.check_notebook(c, None, None)
+    assert calls == [c]
