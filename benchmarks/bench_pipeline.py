@@ -802,10 +802,11 @@ def open_rows(table: Table, runs: int, clock) -> dict:
         ),
     }
     for name, (job, target) in jobs.items():
-        # each path on its own, open and closed in balanced alternation: with
-        # the paths interleaved, every open run followed a run of the other
-        # path and every closed run the open run of its own, whose memory it
-        # took over (see docs/performance.md)
+        # each path on its own, open and closed alternating (in balanced
+        # order; in a random one where runs are set apart, see alternate):
+        # with the paths interleaved, every open run followed a run of the
+        # other path and every closed run the open run of its own, whose
+        # memory it took over (see docs/performance.md)
         t: dict[str, list[float]] = {}
         user: dict[str, list[float]] = {}
         noisy: dict[str, list[float]] = {}
