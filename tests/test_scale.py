@@ -283,6 +283,26 @@ def test_face_means_in_blocks_are_numpys_sums_bit_for_bit_mixed_sizes(top):
     assert got.tobytes() == whole_array_means(v, corners, offsets).tobytes()
 
 
+@pytest.mark.parametrize("few", [0.001, 0.03, 0.4, 0.6])
+def test_face_means_with_a_few_shorter_faces_are_numpys_sums_bit_for_bit(few):
+    # an open mesh's dual: most faces of one size, a few of another spread
+    # among them (the boundary's), the last face short (its place past the
+    # corners' end), and signed zeros that an added 0.0 would turn positive
+    rng = np.random.default_rng(7)
+    v = rng.normal(size=(500, 3))
+    v[:50] = -0.0
+    sizes = np.where(rng.random(30_000) < few, rng.integers(3, 5, 30_000), 6)
+    sizes[-1] = 3
+    offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int32)
+    corners = rng.integers(0, 500, offsets[-1]).astype(np.int32)
+    corners[: 3 * 500] = rng.integers(0, 50, 3 * 500)  # faces of -0.0 corners only
+    corners[-3:] = rng.integers(0, 50, 3)
+    got = _face_means(v, corners, offsets, 0, 1.0)
+    want = whole_array_means(v, corners, offsets)
+    assert got.tobytes() == want.tobytes()
+    assert np.signbit(want[-1]).all()  # (the case the check is for is there)
+
+
 # ====================================================================== operators' hand-over
 HANDED_OVER = [n for n in pentanb.SCHEMES if n not in ("pentagonalize", "triangulate")]
 

@@ -102,11 +102,20 @@ def face_means(
         np.take(values, corners[start + 1], axis=0, out=acc)
         top = int(size.max())
         for j in range(2, min(top, 8)):
-            longer = np.flatnonzero(size > j)
-            if longer.size == size.size:
+            longer = size > j
+            count = int(np.count_nonzero(longer))
+            if count == size.size:
                 acc += values.take(corners[start + j], axis=0)
+            elif 2 * count >= size.size:
+                # most faces have a slot j (a few short faces on an open
+                # mesh's boundary): every face's place j is read (a short
+                # face's is its successor's corner, or clipped at the end)
+                # and added where the face has it, the others left as they are
+                got = values.take(corners.take(start + j, mode="clip"), axis=0)
+                np.add(acc, got, out=acc, where=longer[:, None])
             else:
-                acc[longer] += values.take(corners[start[longer] + j], axis=0)
+                at = np.flatnonzero(longer)
+                acc[at] += values.take(corners[start[at] + j], axis=0)
         acc += values.take(corners[start], axis=0)
         long = np.flatnonzero(size > 8)  # 8 or more terms in the brackets: numpy's own sums
         if long.size:
