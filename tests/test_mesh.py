@@ -550,6 +550,18 @@ def test_rotation_is_counter_clockwise_seen_from_outside(name):
         assert np.all(turn > 0)
 
 
+@pytest.mark.parametrize("k", [3, 4, 5, 8])
+@pytest.mark.parametrize("faces", [1, 2, 1000])
+def test_a_value_per_corner_moved_round_its_face_is_the_next_or_previous_corners(k, faces):
+    from pentanb.mesh.halfedge import shifted
+
+    a = np.random.default_rng(k).permutation(k * faces).astype(np.int32)
+    forward = [a[f * k + (i + 1) % k] for f in range(faces) for i in range(k)]
+    back = [a[f * k + (i - 1) % k] for f in range(faces) for i in range(k)]
+    assert shifted(a, k, 1).tolist() == forward
+    assert shifted(a, k, -1).tolist() == back
+
+
 # ====================================================================== geometry
 def test_cube_face_centroids_and_normals():
     m = Mesh(cube_vertices(), CUBE_FACES)

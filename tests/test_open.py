@@ -1173,6 +1173,19 @@ def test_a_second_dual_of_a_dual_copies_and_leaves_the_first_as_it_was(scheme):
     assert np.array_equal(second.vertices, want.vertices)
 
 
+@pytest.mark.parametrize("places", [[], [0], [9], [0, 1, 2], [3, 7, 8], list(range(10))])
+def test_a_running_sum_of_a_few_places_is_the_cumulative_sum(places):
+    # the offsets of open outputs' faces and rings: np.cumsum, by np.repeat
+    from pentanb.schemes._build import running_sum
+
+    at = np.array(places, dtype=np.int64)
+    add = np.arange(2, 2 + at.size, dtype=np.int64)
+    dense = np.zeros(10, dtype=np.int64)
+    dense[at] = add
+    got = running_sum(at, add, 10, np.dtype(np.int32))
+    assert got.dtype == np.int32 and got.tolist() == np.cumsum(dense).tolist()
+
+
 @pytest.mark.parametrize("block", [1, 2, 5, 64])
 @pytest.mark.parametrize("name", ["holed grid", "open disk", "torus without three faces"])
 def test_pentagonalizations_open_rings_are_the_derived_ones_whatever_the_edge_blocks(

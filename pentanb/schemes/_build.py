@@ -800,6 +800,21 @@ def ring_places(mesh: Mesh, keep: np.ndarray | None, n_out: int) -> np.ndarray:
     return at
 
 
+def running_sum(at: np.ndarray, add: np.ndarray, size: int, dtype: Any) -> np.ndarray:
+    """(size,) the running sum of an array that is ``add`` at the places ``at``
+    (increasing) and zero elsewhere: ``np.cumsum`` of it, made with one
+    ``np.repeat`` of the few partial sums (several times faster than a
+    cumulative sum over ``size`` places when the places are few)."""
+    sums = np.zeros(at.size + 1, dtype=dtype)
+    np.cumsum(add, out=sums[1:])
+    lengths = np.empty(at.size + 1, dtype=np.int64)
+    lengths[0] = at[0] if at.size else size
+    np.subtract(at[1:], at[:-1], out=lengths[1:-1])
+    if at.size:
+        lengths[-1] = size - at[-1]
+    return np.repeat(sums, lengths)
+
+
 def opened_ring_items(
     mesh: Mesh,
     values: np.ndarray,
@@ -858,10 +873,9 @@ def opened_ring_items(
     total = per * ring.size + int(np.sum(count - per))
     dt = np.dtype(np.int64) if n_out is None else index_dtype(n_out, total)
     # the face of vertex u starts past what the hole half-edges of the
-    # vertices before u give beyond ``per``
-    offsets = np.zeros(ring_off.size, dtype=dt)
-    offsets[v + 1] = count - per
-    np.cumsum(offsets, out=offsets)
+    # vertices before u give beyond ``per`` (every boundary vertex has one)
+    order = np.argsort(v)
+    offsets = running_sum(v[order] + 1, (count - per)[order], ring_off.size, dt)
     offsets += ring_off if per == 1 else per * ring_off.astype(dt)
     base = offsets[v].astype(np.int64)  # where the face of v starts: what H + j gives
     out = np.empty(total, dtype=dt)
@@ -877,14 +891,16 @@ def opened_ring_items(
             at = a - lo  # the values before place a: a less the insertions before it
             if lo == hi:
                 out[a:z] = values[at : at + z - a]
-                continue
-            taken = np.ones(z - a, dtype=bool)
-            taken[inserted[lo:hi] - a] = False
-            out[a:z][taken] = values[at : at + z - a - (hi - lo)]
+            else:
+                taken = np.ones(z - a, dtype=bool)
+                taken[inserted[lo:hi] - a] = False
+                out[a:z][taken] = values[at : at + z - a - (hi - lo)]
+            if k > 1:  # (while the block is in cache)
+                out[a:z] //= k
     else:
         out[...] = values
-    if k > 1:
-        out //= k
+        if k > 1:
+            out //= k
     out[base] = entering
     out[base[keep >= 0] + 1] = keep[keep >= 0]
     out[base + count - 1] = leaving[loop_successor(mesh)]

@@ -35,6 +35,7 @@ from ._build import (
     index_dtype,
     output,
     remeshed,
+    running_sum,
     scale_safe,
     start_at_max,
     turned,
@@ -383,12 +384,15 @@ def _pentagonalized_open_rings(mesh, hole: np.ndarray, dt: np.dtype) -> Rings:
     last *= 5
     last -= 1
     centres[offsets[:-1]] = last
-    sizes = np.full(2 * E, 3, dtype=dt)
-    sizes[2 * on_b + 1 - t1] = 2
+    # the trisection points' offsets: 3 places each, less one for every t2
+    # of a boundary edge up to there (point 2 on_b + 1 - t1)
     out_off = np.empty(n + 2 * E + mesh.n_faces + 1, dtype=dt)
     out_off[: n + 1] = ring_off
-    np.cumsum(sizes, out=out_off[n + 1 : n + 2 * E + 1])
-    out_off[n + 1 : n + 2 * E + 1] += ring_off[-1]
+    tri_off = out_off[n + 1 : n + 2 * E + 1]
+    t2 = np.sort(2 * on_b + 1 - t1)
+    tri_off[...] = running_sum(t2, np.ones(t2.size, dtype=dt), 2 * E, dt)
+    np.subtract(np.arange(3, 6 * E + 1, 3, dtype=dt), tri_off, out=tri_off)
+    tri_off += ring_off[-1]
     out_off[n + 2 * E + 1 :] = offsets[1:]
     out_off[n + 2 * E + 1 :] += out_off[n + 2 * E]
     return rings, out_off
