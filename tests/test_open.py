@@ -294,6 +294,28 @@ def test_what_is_not_a_manifold_with_boundary_is_refused_naming_the_culprit(name
             Mesh.from_csr(v, c, o, validate=False)
 
 
+@pytest.mark.parametrize("block", [2, 3, 7])
+@pytest.mark.parametrize("name", ["annulus", "torus without three faces", "grid 3x2"])
+def test_open_pairing_is_the_same_whatever_the_blocks(name, block, monkeypatch):
+    # the sorted keys are read on block by block past the first boundary
+    # edge, every block ending between two edges: blocks of a few keys
+    # split every edge that can be split
+    from pentanb.mesh import halfedge
+
+    m = OPEN[name]()
+    want = halfedge.pair_sorted(m.corners, m.head, m.n_vertices, boundary=True)
+    monkeypatch.setattr(halfedge, "PAIR_BLOCK", block)
+    got = halfedge.pair_sorted(m.corners, m.head, m.n_vertices, boundary=True)
+    assert want is not None and got is not None
+    assert got[0].tolist() == want[0].tolist() and got[1].tolist() == want[1].tolist()
+    assert sorted(got[1].tolist()) == sorted(m.boundary_halfedges.tolist())
+    # and a third half-edge on an edge is still refused, wherever it falls
+    v, faces, _ = REFUSED["three faces on an edge"]
+    c = np.concatenate([np.asarray(f) for f in faces])
+    head = np.concatenate([np.roll(f, -1) for f in faces])
+    assert halfedge.pair_sorted(c, head, len(v), boundary=True) is None
+
+
 def test_a_moebius_band_with_its_twist_undone_is_an_orientable_band():
     v, quads = moebius_band()
     n = len(quads)

@@ -45,6 +45,11 @@ __all__ = [
 #: stay a few hundred kilobytes (in cache, and out of the peak memory).
 BLOCK = 1 << 13
 
+#: Keys per block where :func:`_pair_rest` pairs the sorted keys of a mesh
+#: with boundary (at least 2): its blocks make a dozen passes each, so they
+#: are larger than :data:`BLOCK` (under a megabyte of temporaries).
+PAIR_BLOCK = 1 << 16
+
 
 def uniform_size(offsets: np.ndarray, n_corners: int) -> int:
     """k when the faces of these offsets all have k corners, else 0."""
@@ -352,7 +357,7 @@ def _pair_rest(key, a, index_bits, ids, twin, alone) -> bool:
         return False
     low = np.int64((1 << index_bits) - 1)
     while a < size:
-        b = min(a + BLOCK, size)
+        b = min(a + PAIR_BLOCK, size)
         if b < size and one_edge(b):
             b -= 1
             if one_edge(b):  # three half-edges on one edge
