@@ -25,14 +25,16 @@ measured in this run, as a ratio or a per-face figure with its target:
    planar grid of 1,000,000 quads with 500 square holes (24,200 boundary
    edges, 501 boundary loops) against a closed torus grid of 1,000,000 quads,
    time per face, open over closed (at most 1.25x; each path on its own,
-   open and closed alternating in balanced order), with the same runs' ratio
-   in CPU time (user mode, all threads: the work done, without the time the
-   kernel spends handing over fresh memory) beside it, without a target; and
-   ``Mesh(V, F)`` alone, without a target (the part of it that validation
-   takes).  On a virtual machine whose kernel counts its free page reporting
-   passes (handing free memory back to the host), the runs during which one
-   ran are set apart and the cases run in a random order instead, until each
-   has its runs; a row without target gives the median of every run;
+   open and closed alternating in an order drawn at random every round), with
+   the same runs' ratio in CPU time (user mode, all threads: the work done,
+   without the time the kernel spends handing over fresh memory) beside it,
+   without a target; and ``Mesh(V, F)`` alone, without a target (the part of
+   it that validation takes).  On a virtual machine whose kernel counts its
+   free page reporting passes (handing free memory back to the host), every
+   run of the targets starts once a few seconds have passed without one: the
+   memory the runs before freed is back with the host, as after a pause
+   between a user's calls (back-to-back runs would depend on where they fall
+   between the passes);
 
 When numba is installed (``pip install -e .[jit]``), the rows of 2., 3., 4.'s
 time ratio and 6. are measured twice, alternating run by run: the numpy path
@@ -148,7 +150,7 @@ def alternate(
     clock,
     user: dict[str, list[float]] | None = None,
     balanced: bool = False,
-    disturbed: dict[str, list[float]] | None = None,
+    settled: dict[str, list[int]] | None = None,
 ) -> dict[str, list[float]]:
     """Time every case once per round, ``runs`` rounds, after one untimed warm-up round.
 
@@ -161,35 +163,36 @@ def alternate(
     the run before freed, and the kernel still holds, is then no more one
     case's than another's.
 
-    ``disturbed``, when given and the kernel counts its free page reporting
-    passes (:func:`reporting_passes`), receives the seconds of every run
-    during which such a pass ran, and those runs are not returned (``user``
-    has every run): rounds go on until every case has ``runs`` undisturbed
-    runs, or ``3 * runs`` rounds have run (a case may then have fewer).  The
-    cases then run in an order drawn at random every round (seeded): the
-    passes come at a steady pace, every two seconds or so, and a fixed order
-    falls in step with them, so that one case would catch them all.
+    ``settled``, when given, starts every run once the host has taken back
+    the memory the runs before freed (:func:`settle`: where the kernel
+    counts its free page reporting passes, none for a few seconds), as a
+    call after a pause starts, and receives the passes made during every
+    run.  The cases then run in an order drawn at random every round
+    (seeded).  On a virtual machine that hands free memory back to its
+    host, back-to-back runs find that memory in whatever state the last
+    pass left it: a run that a pass overtakes, or one that starts just
+    after one, takes a second or more longer, so that back-to-back times
+    depend on where the runs fall between the passes (see
+    ``docs/performance.md``).
     """
     times: dict[str, list[float]] = {k: [] for k in cases}
     if user is not None:
         user.update({k: [] for k in cases})
-    quiet = disturbed is not None and reporting_passes() is not None
-    if disturbed is not None:
-        disturbed.update({k: [] for k in cases})
+    if settled is not None:
+        settled.update({k: [] for k in cases})
     for fn in cases.values():
         fn()
     draw = np.random.default_rng(0)
-    r = 0
-    while r < (3 * runs if quiet else runs):
-        if quiet and min(len(ts) for ts in times.values()) >= runs:
-            break
+    for r in range(runs):
         order = list(cases.items())
-        if quiet:  # passes come at a steady pace: an order of its own would fall in step
+        if settled is not None:
             order = [order[i] for i in draw.permutation(len(order))]
         elif balanced and r % 2:
             order = order[::-1]
         for name, fn in order:
             gc.collect()
+            if settled is not None:
+                settle()
             passes = reporting_passes()
             u = user_seconds()
             t = clock()
@@ -197,12 +200,41 @@ def alternate(
             took = clock() - t
             if user is not None:
                 user[name].append(user_seconds() - u)
-            if quiet and reporting_passes() != passes:
-                disturbed[name].append(took)  # type: ignore[index]
-            else:
-                times[name].append(took)
-        r += 1
+            if settled is not None and passes is not None:
+                settled[name].append((reporting_passes() or 0) - passes)
+            times[name].append(took)
     return times
+
+
+#: Seconds without a free page reporting pass after which the host is taken
+#: to have taken back the memory the last run freed (:func:`settle`).
+SETTLED_AFTER = 2.5
+
+
+def settle(
+    quiet: float = SETTLED_AFTER, limit: float = 30.0, sleep=time.sleep, now=time.monotonic
+) -> float:
+    """Wait until the kernel has made no free page reporting pass for ``quiet``
+    seconds, at most ``limit`` seconds; returns the seconds waited (0 where
+    the kernel does not count its passes).
+
+    The kernel reports free memory to the host about every two seconds while
+    the process frees it; once a few seconds pass without a report, what the
+    last run freed is back with the host, as after a pause between a user's
+    calls, and every run starts from that same state.
+    """
+    if reporting_passes() is None:
+        return 0.0
+    began = last = now()
+    seen = reporting_passes()
+    while now() - began < limit:
+        sleep(0.1)
+        got = reporting_passes()
+        if got != seen:
+            seen, last = got, now()
+        elif now() - last >= quiet:
+            break
+    return now() - began
 
 
 #: where a Linux kernel that hands free memory back to its host (a virtual
@@ -802,14 +834,14 @@ def open_rows(table: Table, runs: int, clock) -> dict:
         ),
     }
     for name, (job, target) in jobs.items():
-        # each path on its own, open and closed alternating (in balanced
-        # order; in a random one where runs are set apart, see alternate):
-        # with the paths interleaved, every open run followed a run of the
-        # other path and every closed run the open run of its own, whose
-        # memory it took over (see docs/performance.md)
+        # each path on its own, open and closed alternating: with the paths
+        # interleaved, every open run followed a run of the other path and
+        # every closed run the open run of its own, whose memory it took over
+        # (see docs/performance.md); the targets' runs start from settled
+        # memory, in an order drawn at random every round (see alternate)
         t: dict[str, list[float]] = {}
         user: dict[str, list[float]] = {}
-        noisy: dict[str, list[float]] = {}
+        passes: dict[str, list[int]] = {}
         for compiled in (False, True) if COMPILED else (False,):
             suffix = ", compiled" if compiled else ""
             cases = {
@@ -817,23 +849,17 @@ def open_rows(table: Table, runs: int, clock) -> dict:
                 "closed" + suffix: on_path(compiled, lambda job=job: job(vc, fc)),
             }
             more: dict[str, list[float]] = {}
-            # the runs during which the host took free memory back are set
-            # apart (a pass costs any run a second or more of kernel time)
-            passes: dict[str, list[float]] | None = {} if target is not None else None
-            t.update(alternate(cases, runs, clock, more, balanced=True, disturbed=passes))
+            seen: dict[str, list[int]] | None = {} if target is not None else None
+            t.update(alternate(cases, runs, clock, more, balanced=True, settled=seen))
             user.update(more)
-            noisy.update(passes or {})
+            passes.update(seen or {})
         for suffix in ("", ", compiled"):
             if "open" + suffix not in t:
                 continue
             label = f"6. {name}, open / closed, per face" + (suffix and ", compiled kernels")
             to, tc = t["open" + suffix], t["closed" + suffix]
-            held = [len(noisy.get(k + suffix, ())) for k in ("open", "closed")]
-            if min(len(to), len(tc)) < 3:  # too few undisturbed runs: every run
-                to, tc = to + noisy["open" + suffix], tc + noisy["closed" + suffix]
-                held = [0, 0]
-                print(f"  ({label}: too few runs without a reporting pass; every run counts)")
             po, pc = median(to) / len(fo), median(tc) / len(fc)
+            caught = [sum(x > 0 for x in passes.get(k + suffix, ())) for k in ("open", "closed")]
             table.add(
                 sec,
                 label,
@@ -843,25 +869,14 @@ def open_rows(table: Table, runs: int, clock) -> dict:
                 note=f"{1e9 * po:,.0f} and {1e9 * pc:,.0f} ns per face; runs "
                 f"{min(to) / median(tc):.2f}-{max(to) / median(tc):.2f} of the closed median"
                 + (
-                    f"; {len(to)} and {len(tc)} runs, {held[0]} and {held[1]} set apart"
-                    if any(held)
+                    f"; from settled memory, a reporting pass during {caught[0]} and "
+                    f"{caught[1]} of {len(to)} and {len(tc)} runs"
+                    if passes.get("open" + suffix)
                     else ""
                 ),
             )
             if target is None:
                 continue
-            if any(held):
-                # a diagnosis without target: every run, those set apart included
-                ao = median(to + noisy["open" + suffix]) / len(fo)
-                ac = median(tc + noisy["closed" + suffix]) / len(fc)
-                table.add(
-                    sec,
-                    label + ", every run",
-                    ao / ac,
-                    "x",
-                    note=f"{1e9 * ao:,.0f} and {1e9 * ac:,.0f} ns per face, with the "
-                    "runs during which the host took free memory back",
-                )
             # a diagnosis without target: the same runs in CPU time (user mode),
             # the work without the kernel's handing over of fresh memory
             uo = median(user["open" + suffix]) / len(fo)
