@@ -214,10 +214,15 @@ def face_areas(mesh: Mesh) -> NDArray[np.float64]:
     (F, 3) float
     """
     check_mesh(mesh, "face_areas()")
+    return np.ascontiguousarray(_face_areas_by_axis(mesh).T)
+
+
+def _face_areas_by_axis(mesh: Mesh) -> NDArray[np.float64]:
+    """(3, F) float: :func:`face_areas` axis by axis (each row contiguous)."""
     v = np.asarray(mesh.vertices, dtype=np.float64)
     cols = [np.ascontiguousarray(v[:, k]) for k in range(3)]
     corners, offsets, sizes = mesh.corners, mesh.offsets, mesh.face_sizes
-    area = np.empty((mesh.n_faces, 3))
+    area = np.empty((3, mesh.n_faces))
     counts = _mesh.size_counts(mesh)
     for n, _ in counts:
         faces = None if len(counts) == 1 else np.flatnonzero(sizes == n)
@@ -229,7 +234,7 @@ def face_areas(mesh: Mesh) -> NDArray[np.float64]:
         if faces is None:
             at[:] = corners.reshape(-1, n).T
         else:
-            first = offsets[faces]
+            first = offsets[faces].astype(np.intp)
             for i in range(n):
                 at[i] = corners.take(first + i)
         # block by block of faces: every array of a block stays in cache
@@ -255,7 +260,7 @@ def face_areas(mesh: Mesh) -> NDArray[np.float64]:
                 xi, yi, zi = xj, yj, zj
             rows = slice(lo, hi) if faces is None else faces[lo:hi]
             for c, a in enumerate((ax, ay, az)):
-                area[rows, c] = a
+                area[c, rows] = a
     return area
 
 
@@ -303,17 +308,16 @@ def _vertex_normals(mesh: Mesh, copies: int, spare: int = 0) -> NDArray[np.float
 
 def _numpy_vertex_normals(mesh: Mesh, out: NDArray[np.float32], copies: int) -> None:
     """Write the vertex normals into every block of n rows of ``out`` ((copies * n, 3))."""
-    area = face_areas(mesh)
+    # every face's area once per corner, the three axes in one repeat
+    weights = np.repeat(_face_areas_by_axis(mesh), mesh.face_sizes, axis=1)
     # the corners as numpy's index type once: bincount converts int32 corners
     # on every call, which took longer than its sums
     owner = mesh.corners.astype(np.intp, copy=False)
     n = mesh.n_vertices
     total = np.empty((n, 3))
     for k in range(3):
-        total[:, k] = np.bincount(
-            owner, weights=np.repeat(area[:, k], mesh.face_sizes), minlength=n
-        )
-    del area
+        total[:, k] = np.bincount(owner, weights=weights[k], minlength=n)
+    del weights
     length = np.sqrt(
         total[:, 0] * total[:, 0] + total[:, 1] * total[:, 1] + total[:, 2] * total[:, 2]
     )
