@@ -227,9 +227,8 @@ def _face_areas_by_axis(mesh: Mesh) -> NDArray[np.float64]:
     for n, _ in counts:
         faces = None if len(counts) == 1 else np.flatnonzero(sizes == n)
         # (n, faces): the i-th corners of all faces side by side, contiguous
-        # (a gather by a strided index is slow)
-        # (as numpy's own index type: a take by int32 indices converts them
-        # first, every time)
+        # (a gather by a strided index is slow), as numpy's own index type (a
+        # take by int32 indices converts them first, every time)
         at = np.empty((n, len(sizes) if faces is None else len(faces)), np.intp)
         if faces is None:
             at[:] = corners.reshape(-1, n).T
