@@ -1,40 +1,11 @@
-"""Exercises that check themselves, for a class: :func:`check` and the students' notebooks.
+"""The exercises of notebooks 01-11, each with its checker and expected answer.
 
-Every notebook of ``notebooks/`` ends with a few exercises of four kinds:
-
-* **predict**: work out counts (or a number) with pencil and paper, from the
-  paper's formulas, before running anything;
-* **explain**: move a slider or read a table, then answer a multiple-choice
-  question (a letter) or give a number or a name; the "why" is for
-  discussion in class and has no check;
-* **find**: find a mesh on which a claim, read strictly or outside the
-  input it is about, does not hold (or on which its hypothesis matters);
-* **extend**: write a small scheme of your own from the package's operators.
-
-Each exercise ends with a cell that calls ``check``::
-
-    from pentanb.classroom import check
-
-    answer = (92, 150, 60)  # (V, E, F)
-    check("02.1", answer)
-
-which prints one line, ``02.1: right``, ``02.1: not quite: <a hint>`` (the
-hint never gives the answer away) or ``02.1: not answered yet`` while the
-answer is still the placeholder ``...``, and returns a :class:`Result`.  An
-answer of the wrong kind (a string where counts are expected, a function
-that raises) gets a hint too, never a traceback.  The expected answers are
-computed by the package where that is the point of the exercise (counts by
-:func:`pentanb.predict_counts`, ranges by :mod:`pentanb.topology`, spectra
-by :mod:`pentanb.analysis`), so a check agrees with the code the notebooks
-run.
-
-The teacher's notebooks (the repository's) hold a solution under every
-exercise, in a cell tagged ``solution``; :func:`student_version` (the
-command ``python -m pentanb classroom OUT_DIR``) writes the students' copies
-without those cells, with nbconvert's ``TagRemovePreprocessor``.
-
-Checking needs only numpy (and scipy for the spectra of notebook 09): a
-student can answer in a plain Python prompt as well as in a notebook.
+Every checker takes the student's answer and returns None when it is right,
+else a hint that never gives the answer away; the expected answers are
+computed by the package (:func:`pentanb.predict_counts`,
+:mod:`pentanb.topology`, :mod:`pentanb.analysis`) where that is the point
+of the exercise.  Importing the module registers them in
+:data:`pentanb.classroom.EXERCISES`.
 """
 
 from __future__ import annotations
@@ -42,494 +13,34 @@ from __future__ import annotations
 import functools
 import io
 import math
-import numbers
-import os
-import tempfile
-from collections.abc import Callable, Iterable
-from dataclasses import dataclass
+from collections.abc import Iterable
 from fractions import Fraction
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from . import shapes, topology
-from ._checks import shown
-from .mesh import Mesh, MeshError
-from .schemes import SCHEMES, dual, pentagonalize
-from .subdivision import predict_counts, subdivide
-
-__all__ = [
-    "check",
-    "Result",
-    "Exercise",
-    "EXERCISES",
-    "KINDS",
-    "exercises",
-    "student_version",
-    "SOLUTION_TAG",
-    "EXERCISE_TAG",
-]
-
-#: The tag of the cells holding the teacher's solutions (removed for students).
-SOLUTION_TAG = "solution"
-#: The tag of the exercise cells (questions and the students' check cells).
-EXERCISE_TAG = "exercise"
-
-#: The kinds of exercise, with what each asks.
-KINDS = {
-    "predict": "predict counts (or a number) before running anything",
-    "explain": "move a slider or read a table, then answer a checkable question",
-    "find": "find a mesh on which a claim read strictly, or its hypothesis dropped, fails",
-    "extend": "write a small scheme of your own from the package's operators",
-}
-
-#: Largest mesh (faces) a check builds or measures: a student's mesh beyond it
-#: is refused with a hint, so that a check answers in a moment.
-MAX_FACES = 20_000
-
-RIGHT = "right"
-NOT_QUITE = "not quite"
-NOT_ANSWERED = "not answered yet"
-
-
-@dataclass(frozen=True)
-class Result:
-    """What :func:`check` said about one answer.
-
-    Attributes
-    ----------
-    exercise : str
-        The exercise, e.g. ``"02.1"``.
-    status : str
-        ``"right"``, ``"not quite"`` or ``"not answered yet"``.
-    hint : str
-        For ``"not quite"``: what to look at again (never the answer).
-    """
-
-    exercise: str
-    status: str
-    hint: str = ""
-
-    @property
-    def ok(self) -> bool:
-        """True when the answer is right."""
-        return self.status == RIGHT
-
-    @property
-    def message(self) -> str:
-        """The line :func:`check` prints: ``"02.1: right"``, ``"02.1: not quite: ..."``."""
-        if self.status == NOT_QUITE:
-            return f"{self.exercise}: {NOT_QUITE}: {self.hint}"
-        if self.status == NOT_ANSWERED:
-            return f"{self.exercise}: {NOT_ANSWERED} (replace ... with your answer)"
-        return f"{self.exercise}: {self.status}"
-
-    def __str__(self) -> str:
-        return self.message
-
-    def _ipython_display_(self) -> None:
-        """Show nothing in a notebook: :func:`check` has printed the line already."""
-
-
-@dataclass(frozen=True)
-class Exercise:
-    """One exercise of a notebook.
-
-    Attributes
-    ----------
-    id : str
-        ``"NN.k"``: the notebook's number and the exercise's number in it.
-    notebook : str
-        The notebook's file name without ``.ipynb``, e.g. ``"02_tetrahedron_to_dodecahedron"``.
-    kind : str
-        One of :data:`KINDS`.
-    title : str
-        What it asks, in a few words.
-    """
-
-    id: str
-    notebook: str
-    kind: str
-    title: str
-    _checker: Callable[[Any], str | None]
-
-    def check(self, answer: Any) -> Result:
-        """Check ``answer`` without printing (:func:`check` prints).
-
-        Parameters
-        ----------
-        answer : object
-            The student's answer; ``...`` (Ellipsis) while not answered.
-
-        Returns
-        -------
-        Result
-        """
-        if _unanswered(answer):
-            return Result(self.id, NOT_ANSWERED)
-        try:
-            hint = self._checker(answer)
-        except _NotAnswered:
-            return Result(self.id, NOT_ANSWERED)
-        except _Hint as h:
-            hint = str(h)
-        except Exception as exc:  # never a traceback for a student's answer
-            hint = f"this answer could not be checked ({type(exc).__name__}: {_short(exc)})"
-        return Result(self.id, RIGHT) if hint is None else Result(self.id, NOT_QUITE, hint)
-
-
-#: Every exercise, by id, in the order of the notebooks.
-EXERCISES: dict[str, Exercise] = {}
-
-_NOTEBOOKS = {
-    "01": "01_topology",
-    "02": "02_tetrahedron_to_dodecahedron",
-    "03": "03_cube_tilings",
-    "04": "04_torus_hexagons",
-    "05": "05_soccerball",
-    "06": "06_schemes_compared",
-    "07": "07_complex_model",
-    "08": "08_convergence",
-    "09": "09_continuity",
-    "10": "10_conway",
-    "11": "11_open_surfaces",
-}
-
-
-def check(exercise: str, answer: Any) -> Result:
-    """Say whether ``answer`` to ``exercise`` is right, and print it.
-
-    Parameters
-    ----------
-    exercise : str
-        The exercise's id, as in its heading: ``"02.1"``.
-    answer : object
-        The answer, of the kind the exercise asks for: counts ``(V, E, F)``,
-        a number, a letter, a scheme or shape name, a mesh, a function.
-        ``...`` (Ellipsis), or counts with ``...`` in them, means not
-        answered yet.
-
-    Returns
-    -------
-    Result
-        ``result.ok`` is True when the answer is right; the line printed is
-        ``result.message``.  (In a notebook the result shows nothing more.)
-
-    Raises
-    ------
-    ValueError
-        If ``exercise`` is not the id of an exercise (the message lists them).
-    """
-    found = EXERCISES.get(exercise) if isinstance(exercise, str) else None
-    if found is None:
-        known = ", ".join(EXERCISES)
-        raise ValueError(f"check: no exercise {shown(exercise)}; the exercises are {known}")
-    result = found.check(answer)
-    print(result.message)
-    return result
-
-
-def exercises(notebook: str | None = None) -> list[Exercise]:
-    """The exercises, all or those of one notebook.
-
-    Parameters
-    ----------
-    notebook : str, optional
-        A notebook's number (``"02"``) or file name with or without
-        ``.ipynb``.
-
-    Returns
-    -------
-    list of Exercise
-        In order.
-
-    Raises
-    ------
-    ValueError
-        If ``notebook`` names no notebook with exercises.
-    """
-    if notebook is None:
-        return list(EXERCISES.values())
-    key = str(notebook).removesuffix(".ipynb")[:2]
-    found = [e for e in EXERCISES.values() if e.id[:2] == key]
-    if not found:
-        raise ValueError(f"exercises: no notebook {shown(notebook)} with exercises")
-    return found
-
-
-# --------------------------------------------------------------------------------------
-# The students' notebooks
-# --------------------------------------------------------------------------------------
-
-
-def _default_notebooks() -> list[Path]:
-    folder = Path(__file__).resolve().parent.parent / "notebooks"
-    return sorted(folder.glob("*.ipynb"))
-
-
-def student_version(
-    out_dir: str | os.PathLike, notebooks: Iterable[str | os.PathLike] | None = None
-) -> list[Path]:
-    """Write the students' notebooks: the teacher's without the solution cells.
-
-    Runs nbconvert's ``TagRemovePreprocessor`` (``remove_cell_tags =
-    {"solution"}``) and ``ClearOutputPreprocessor`` over every notebook, as
-    the command line does::
-
-        jupyter nbconvert --to notebook --output-dir OUT_DIR \\
-            --TagRemovePreprocessor.enabled=True \\
-            --TagRemovePreprocessor.remove_cell_tags='{"solution"}' \\
-            --ClearOutputPreprocessor.enabled=True notebooks/*.ipynb
-
-    Parameters
-    ----------
-    out_dir : str or path
-        Folder for the students' notebooks (created if needed); not the
-        folder of the teacher's notebooks.
-    notebooks : iterable of str or path, optional
-        The teacher's notebooks (default: every ``.ipynb`` of the
-        repository's ``notebooks/`` folder).
-
-    Returns
-    -------
-    list of Path
-        The notebooks written, one per input, with the same file names.
-
-    Raises
-    ------
-    ImportError
-        If nbconvert is not installed (``pip install -e ".[notebook]"``).
-    ValueError
-        If there is no notebook, or ``out_dir`` is the folder of one of them
-        (it would overwrite the teacher's copy).
-    OSError
-        If a notebook cannot be read or ``out_dir`` cannot be written.
-    """
-    paths = _default_notebooks() if notebooks is None else [Path(p) for p in notebooks]
-    if not paths:
-        raise ValueError(
-            "student_version: no notebooks found (run it from a clone of the repository, "
-            "or pass notebooks=)"
-        )
-    out = Path(out_dir)
-    for p in paths:
-        if p.suffix != ".ipynb":
-            raise ValueError(f"student_version: {shown(str(p))} is not an .ipynb file")
-        if out.resolve() == p.resolve().parent:
-            raise ValueError(
-                f"student_version: {shown(str(out))} holds the teacher's notebooks; "
-                "choose another folder"
-            )
-    try:
-        from nbconvert.exporters import NotebookExporter
-        from traitlets.config import Config
-    except ImportError as exc:
-        raise ImportError(
-            'student_version needs nbconvert: pip install -e ".[notebook]" '
-            "(or pip install nbconvert)"
-        ) from exc
-    config = Config()
-    config.TagRemovePreprocessor.enabled = True
-    config.TagRemovePreprocessor.remove_cell_tags = {SOLUTION_TAG}
-    config.ClearOutputPreprocessor.enabled = True
-    exporter = NotebookExporter(config=config)
-    out.mkdir(parents=True, exist_ok=True)
-    written = []
-    for p in paths:
-        body = str(exporter.from_filename(str(p))[0])
-        target = out / p.name
-        fd, tmp = tempfile.mkstemp(dir=out, prefix=f".{p.stem}.", suffix=".tmp")
-        try:
-            with os.fdopen(fd, "w", encoding="utf-8") as f:
-                f.write(body if body.endswith("\n") else body + "\n")
-            os.replace(tmp, target)
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
-        written.append(target)
-    return written
-
-
-# --------------------------------------------------------------------------------------
-# Reading answers
-# --------------------------------------------------------------------------------------
-
-
-class _Hint(Exception):
-    """Raised by a checker or a reader with the hint to show."""
-
-
-class _NotAnswered(Exception):
-    """A student's function still returns the placeholder."""
-
-
-def _short(exc: BaseException) -> str:
-    text = str(exc).splitlines()[0] if str(exc) else ""
-    return text if len(text) <= 160 else text[:157] + "..."
-
-
-def _unanswered(answer: Any) -> bool:
-    if answer is Ellipsis:
-        return True
-    if isinstance(answer, (tuple, list)) and len(answer) <= 10:
-        return any(a is Ellipsis for a in answer)
-    return False
-
-
-def _is_int(x: Any) -> bool:
-    return isinstance(x, (numbers.Integral, np.integer)) and not isinstance(x, (bool, np.bool_))
-
-
-def _counts(answer: Any, what: str = "(V, E, F)") -> tuple[int, ...]:
-    """Three whole numbers, or a hint."""
-    example = "(4, 6, 4)"  # the tetrahedron's: never an exercise's answer
-    if isinstance(answer, (str, bytes)) or not isinstance(answer, (tuple, list, np.ndarray)):
-        raise _Hint(f"give three whole numbers {what} in brackets, like {example}")
-    if len(answer) != 3:
-        raise _Hint(f"give three numbers {what}, not {len(answer)}")
-    values = []
-    for x in answer:
-        if isinstance(x, (float, np.floating)) and float(x).is_integer():
-            x = int(x)
-        if not _is_int(x):
-            raise _Hint(f"each of {what} is a whole number; {shown(x)} is not")
-        values.append(int(x))
-    return tuple(values)
-
-
-def _compare_counts(given: tuple[int, ...], expected: tuple[int, ...], chi: int) -> str | None:
-    """None when equal, else a hint naming which of V, E, F are off (not their values)."""
-    if given == expected:
-        return None
-    wrong = [n for n, a, b in zip("VEF", given, expected) if a != b]
-    right = [n for n, a, b in zip("VEF", given, expected) if a == b]
-    parts = [f"{' and '.join(wrong)} {'is' if len(wrong) == 1 else 'are'} off"]
-    if right:
-        parts.append(f"{' and '.join(right)} {'is' if len(right) == 1 else 'are'} right")
-    v, e, f = given
-    if v - e + f != chi:
-        parts.append(
-            f"check Euler's formula: your V - E + F is {v - e + f}, this surface has {chi}"
-        )
-    return "; ".join(parts)
-
-
-def _number(answer: Any) -> float:
-    if isinstance(answer, (bool, np.bool_)):
-        raise _Hint("give a number, not True or False")
-    if isinstance(answer, str):
-        try:
-            return float(Fraction(answer.strip()))
-        except (ValueError, ZeroDivisionError):
-            hint = f"give a number, like 3 or 0.5 or '2/3'; {shown(answer)} is not one"
-            raise _Hint(hint) from None
-    if isinstance(answer, (numbers.Real, np.integer, np.floating)):
-        value = float(answer)
-        if math.isfinite(value):
-            return value
-        raise _Hint("give a finite number")
-    raise _Hint(f"give a number, like 3 or 0.5; {shown(answer)} is a {type(answer).__name__}")
-
-
-def _whole(answer: Any) -> int:
-    value = _number(answer)
-    if not value.is_integer():
-        raise _Hint(f"the answer is a whole number; {shown(answer)} is not")
-    return int(value)
-
-
-def _letter(answer: Any, options: str) -> str:
-    choices = ", ".join(f"'{c}'" for c in options)
-    if not isinstance(answer, str):
-        raise _Hint(f"answer with one letter in quotes: {choices}")
-    text = answer.strip().strip("()").strip().lower()
-    if text not in options or len(text) != 1:
-        raise _Hint(f"answer with one of the letters {choices}")
-    return text
-
-
-def _name(answer: Any, known: Iterable[str], what: str) -> str:
-    names = list(known)
-    if not isinstance(answer, str):
-        raise _Hint(f"give the {what}'s name as a string, in quotes (one of {', '.join(names)})")
-    if answer.strip() not in names:
-        raise _Hint(f"{shown(answer)} is not a {what} here; one of {', '.join(names)}")
-    return answer.strip()
-
-
-def _mesh(answer: Any) -> Mesh:
-    """A Mesh, or the name of a shape of :mod:`pentanb.shapes`."""
-    if isinstance(answer, str):
-        try:
-            answer = shapes.get(answer.strip())
-        except (ValueError, TypeError):
-            raise _Hint(
-                f"{shown(answer)} is not a shape of pentanb.shapes; give a Mesh or one of "
-                + ", ".join(shapes.SHAPES)
-            ) from None
-    if not isinstance(answer, Mesh):
-        raise _Hint(
-            "give a mesh (a pentanb.Mesh, e.g. pentanb.shapes.cube()) or a shape's name; "
-            f"this is a {type(answer).__name__}"
-        )
-    if answer.n_faces > MAX_FACES:
-        raise _Hint(f"use a smaller mesh: this one has {answer.n_faces:,} faces")
-    return answer
-
-
-def _call(func: Any, mesh: Mesh, name: str) -> Mesh:
-    """``func(mesh)``, checked: a Mesh, or a hint (the placeholder: not answered)."""
-    if not callable(func):
-        raise _Hint(f"give a function of one mesh (def {name}(mesh): ...), not a value")
-    try:
-        out = func(mesh)
-    except Exception as exc:
-        raise _Hint(f"your function raised {type(exc).__name__}: {_short(exc)}") from None
-    if out is Ellipsis:
-        raise _NotAnswered
-    if out is None:
-        raise _Hint("your function returns nothing: end it with return and the new mesh")
-    if not isinstance(out, Mesh):
-        raise _Hint(f"your function should return a mesh; it returned a {type(out).__name__}")
-    return out
-
-
-def _same_mesh(a: Mesh, b: Mesh) -> bool:
-    return (
-        a.n_vertices == b.n_vertices
-        and np.array_equal(a.corners, b.corners)
-        and np.array_equal(a.offsets, b.offsets)
-        and np.allclose(a.vertices, b.vertices, atol=1e-9)
-    )
-
-
-def _vef(m: Mesh) -> tuple[int, int, int]:
-    return (m.n_vertices, m.n_edges, m.n_faces)
-
-
-def _topology(m: Mesh) -> tuple:
-    return (_vef(m), m.face_size_histogram(), m.valence_histogram())
-
-
-def _fmt_hist(h: dict) -> str:
-    return "{" + ", ".join(f"{k}: {v}" for k, v in sorted(h.items())) + "}"
-
-
-def _exercise(id: str, kind: str, title: str):
-    """Register a checker: ``checker(answer)`` returns None when right, else a hint."""
-
-    def register(checker: Callable[[Any], str | None]) -> Callable[[Any], str | None]:
-        assert kind in KINDS and id[:2] in _NOTEBOOKS and id not in EXERCISES
-        EXERCISES[id] = Exercise(id, _NOTEBOOKS[id[:2]], kind, title, checker)
-        return checker
-
-    return register
-
-
-def _predicted(counts: tuple[int, int, int], scheme: str, iterations: int, duals: int, **kw):
-    return tuple(predict_counts(counts, scheme, iterations, duals, **kw)[-1])
-
+from .. import shapes, topology
+from ..mesh import Mesh, MeshError
+from ..schemes import SCHEMES, dual, pentagonalize
+from ..subdivision import predict_counts, subdivide
+from ._answers import (
+    MAX_FACES,
+    _call,
+    _compare_counts,
+    _counts,
+    _exercise,
+    _fmt_hist,
+    _letter,
+    _mesh,
+    _name,
+    _number,
+    _predicted,
+    _same_mesh,
+    _short,
+    _topology,
+    _vef,
+    _whole,
+)
 
 # --------------------------------------------------------------------------------------
 # 01 topology
@@ -611,7 +122,7 @@ _PLATONIC = ("tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron")
 
 @_exercise("02.3", "find", "a solid on which two more duals make it less round")
 def _ex_02_3(answer: Any) -> str | None:
-    from .analysis import radius_spread
+    from ..analysis import radius_spread
 
     if not isinstance(answer, (tuple, list)) or len(answer) != 2:
         return "give a pair of names: (shape, scheme), like ('cube', 'pentagonalize')"
@@ -679,7 +190,7 @@ def _ex_03_2(answer: Any) -> str | None:
 
 @_exercise("03.3", "extend", "Conway's quinto from preserve_pentagons")
 def _ex_03_3(answer: Any) -> str | None:
-    from .notation import conway
+    from ..notation import conway
 
     for name in ("cube", "tetrahedron", "dodecahedron"):
         base = shapes.get(name)
@@ -728,7 +239,7 @@ def _ex_04_2(answer: Any) -> str | None:
 
 @_exercise("04.3", "find", "a mesh of hexagons whose pentagonalization is not all 6.3.3.3.3")
 def _ex_04_3(answer: Any) -> str | None:
-    from .analysis import configuration_counts, face_configurations
+    from ..analysis import configuration_counts, face_configurations
 
     mesh = _mesh(answer)
     sizes = mesh.face_size_histogram()
@@ -760,7 +271,7 @@ def _ex_05_1(answer: Any) -> str | None:
 
 @_exercise("05.2", "find", "a mesh whose honeycomb has a triangle or a quadrilateral")
 def _ex_05_2(answer: Any) -> str | None:
-    from .schemes import honeycomb
+    from ..schemes import honeycomb
 
     mesh = _mesh(answer)
     sizes = honeycomb(mesh).face_size_histogram()
@@ -774,7 +285,7 @@ def _ex_05_2(answer: Any) -> str | None:
 
 @_exercise("05.3", "extend", "honeycomb as the dual of sqrt(3)")
 def _ex_05_3(answer: Any) -> str | None:
-    from .schemes import honeycomb, sqrt3_remesh
+    from ..schemes import honeycomb, sqrt3_remesh
 
     for name in ("cube", "tetrahedron", "dodecahedron", "torus"):
         base = shapes.get(name)
@@ -830,7 +341,7 @@ def _ex_06_2(answer: Any) -> str | None:
 
 @functools.lru_cache(maxsize=1)
 def _conversion() -> frozenset[str]:
-    from .schemes import loop_remesh
+    from ..schemes import loop_remesh
 
     mixed = loop_remesh(shapes.cube())
     return frozenset(
@@ -857,7 +368,7 @@ def _ex_06_3(answer: Any) -> str | None:
 
 @_exercise("06.4", "find", "a mesh on which triangulate's count formula does not hold")
 def _ex_06_4(answer: Any) -> str | None:
-    from .schemes import triangulate
+    from ..schemes import triangulate
 
     mesh = _mesh(answer)
     V, E, F = _vef(mesh)
@@ -899,7 +410,7 @@ def _ex_07_2(answer: Any) -> str | None:
 
 @_exercise("07.3", "find", "an OBJ file whose pentagonalization has a vertex of valence 6")
 def _ex_07_3(answer: Any) -> str | None:
-    from .io import read
+    from ..io import read
 
     if not isinstance(answer, str):
         return "give the text of an OBJ file, as a string (lines 'v x y z' and 'f i j k ...')"
@@ -947,7 +458,7 @@ def _ex_08_1(answer: Any) -> str | None:
 
 @_exercise("08.2", "find", "a mesh on which a second pair of duals sharpens the largest crease")
 def _ex_08_2(answer: Any) -> str | None:
-    from .analysis import convergence
+    from ..analysis import convergence
 
     mesh = _mesh(answer)
     if not mesh.is_closed:
@@ -965,7 +476,7 @@ def _ex_08_2(answer: Any) -> str | None:
 
 @functools.lru_cache(maxsize=1)
 def _vertex_insertion_letter() -> str:
-    from .analysis import convergence
+    from ..analysis import convergence
 
     angles = convergence.subdivision_convergence(
         shapes.cube(), "vertex_insertion", 3, 0
@@ -988,14 +499,14 @@ def _ex_08_3(answer: Any) -> str | None:
 
 
 def _table_cases() -> dict[str, tuple[str, dict]]:
-    from .analysis.spectral import TABLE_CASES
+    from ..analysis.spectral import TABLE_CASES
 
     return {label: (scheme, options) for label, scheme, options in TABLE_CASES}
 
 
 @functools.lru_cache(maxsize=32)
 def _spectrum(label: str, kind: str, size: int):
-    from .analysis import local_spectrum
+    from ..analysis import local_spectrum
 
     scheme, options = _table_cases()[label]
     return local_spectrum(scheme, kind, size, **options)
@@ -1017,7 +528,7 @@ def _ex_09_1(answer: Any) -> str | None:
 def _triangle_meeting() -> tuple[Fraction, Fraction]:
     """The scale at which the triangle's leading eigenvalues meet (2 duals), and their
     common modulus per step, established in exact arithmetic by the analysis."""
-    from .analysis.spectral import scale_family, scale_threshold
+    from ..analysis.spectral import scale_family, scale_threshold
 
     threshold = scale_threshold(scale_family("face", 3, 2))
     s = threshold.value
@@ -1067,7 +578,7 @@ def _ex_09_3(answer: Any) -> str | None:
 
 @_exercise("10.1", "predict", "(V, E, F) of cD")
 def _ex_10_1(answer: Any) -> str | None:
-    from .notation import conway
+    from ..notation import conway
 
     given = _counts(answer)
     expected = _vef(conway("cD"))
@@ -1082,7 +593,7 @@ _SEEDS = ("cube", "tetrahedron", "torus", "octahedron")
 
 @_exercise("10.2", "extend", "an operator string other than g that makes only pentagons")
 def _ex_10_2(answer: Any) -> str | None:
-    from .notation import conway, reduce_notation
+    from ..notation import conway, reduce_notation
 
     if not isinstance(answer, str) or not answer.strip():
         return "give an operator string, in quotes, without a seed (like 'dk')"
@@ -1106,8 +617,8 @@ def _ex_10_2(answer: Any) -> str | None:
 
 @functools.lru_cache(maxsize=1)
 def _canonical_letter() -> str:
-    from .analysis import planarity
-    from .notation import canonical, conway
+    from ..analysis import planarity
+    from ..notation import canonical, conway
 
     mesh = conway("ddgC")
     before, after = planarity(mesh), planarity(canonical(mesh))
