@@ -895,7 +895,7 @@ def test_claim_c1_fails_on_a_spline_background_granted_to_the_pentagonal_schemes
     # were the pentagonal schemes C1 splines away from their extraordinary elements,
     # Reif's criterion would prove C1 for pentagon preservation (real double
     # subdominant eigenvalues, injective maps): the proof would not be missing
-    monkeypatch.setattr(pentanb.analysis.spectral, "_spline_background", lambda label: True)
+    monkeypatch.setattr(pentanb.analysis.spectral.table, "_spline_background", lambda label: True)
     by_key = leaves(characteristic_maps.claims(rows=table), "characteristic_maps.c1")
     assert "established for the paper's schemes at preserve_pentagons 0.75 vertex 3" in (
         by_key["characteristic_maps.c1"].measured

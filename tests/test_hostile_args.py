@@ -26,6 +26,9 @@ import pytest
 import pentanb
 import pentanb.analysis.convergence as convergence
 import pentanb.analysis.spectral as spectral
+import pentanb.analysis.spectral.characteristic as characteristic
+import pentanb.analysis.spectral.local as local
+import pentanb.analysis.spectral.neighbourhood as neighbourhood
 import pentanb.notation.build as build
 import pentanb.schemes.smoothing as smoothing
 import pentanb.subdivision
@@ -362,7 +365,8 @@ def test_subdivision_convergence_refuses_before_the_first_level(monkeypatch, cub
 
 def test_local_spectrum_checks_the_size_before_building_the_pyramid(monkeypatch):
     pyramid = counter(spectral.pyramid, 0)
-    monkeypatch.setattr(spectral, "pyramid", pyramid)
+    monkeypatch.setattr(local, "pyramid", pyramid)
+    monkeypatch.setattr(neighbourhood, "pyramid", pyramid)  # (element_fate's)
     with pytest.raises(ValueError, match=r"^size=100,000,000: the pyramid .* over max_faces"):
         spectral.local_spectrum("pentagonalize", "vertex", 10**8)
     with pytest.raises(ValueError, match=r"^size=70,000: the pyramid .* over max_faces=60,000"):
@@ -386,8 +390,8 @@ def test_ring_contraction_refuses_ten_thousand_iterations_at_once(monkeypatch):
 
 def test_characteristic_map_refuses_levels_too_large_before_building_them(monkeypatch):
     sp = spectral.local_spectrum("pentagonalize", "vertex", 3)
-    step = counter(spectral._build_step, 0)
-    monkeypatch.setattr(spectral, "_build_step", step)
+    step = counter(characteristic._build_step, 0)
+    monkeypatch.setattr(characteristic, "_build_step", step)
     with pytest.raises(ValueError, match=r"^iterations must be an integer in \[0, 100,000\]"):
         spectral.characteristic_map(sp, iterations=10**6)
     with pytest.raises(MeshError, match=r"over MAP_MAX_FACES=1,000,000"):

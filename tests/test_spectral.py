@@ -33,10 +33,15 @@ pytest.importorskip("scipy")
 from pentanb.analysis import spectral
 from pentanb.analysis.spectral import (
     LocalSpectrum,
+    characteristic,
     characteristic_map,
     continuity_table,
+    contraction,
+    eigen,
     element_fate,
+    exact,
     extrapolate_ratio,
+    local,
     local_spectrum,
     ring_contraction,
     table_markdown,
@@ -120,8 +125,8 @@ def test_measured_contraction_check_fails_on_the_corners_alone(monkeypatch):
         c = mesh.corners[mesh.offsets[i] : mesh.offsets[i + 1]]
         return c, np.asarray(mesh.vertices)[c].mean(axis=0)
 
-    monkeypatch.setattr(spectral, "_ring_points", corners_only)
-    monkeypatch.setattr(spectral, "_mode_radii", lambda mesh, element: None)
+    monkeypatch.setattr(contraction, "_ring_points", corners_only)
+    monkeypatch.setattr(contraction, "_mode_radii", lambda mesh, element: None)
     _, limit = ring_contraction("preserve_pentagons", "face", 3, iterations=5, scale=0.5)
     assert abs(limit - 17 / 120) > 0.01
 
@@ -225,15 +230,15 @@ def test_half_turn_is_structural():
     # preserve_pentagons' face copy sits over the old edges; a chiral scheme leans unequally
     sp = local_spectrum("preserve_pentagons", "face", 4)
     ctx = sp._context
-    S = spectral._composite(ctx.steps, ctx.level, 1)
+    S = local._composite(ctx.steps, ctx.level, 1)
     el0, el1 = ctx.steps[ctx.level].element, ctx.steps[ctx.level + 1].element
     m0, m1 = ctx.steps[ctx.level].mesh, ctx.steps[ctx.level + 1].mesh
-    assert spectral._half_turn(S, m0, el0, m1, el1)
+    assert eigen._half_turn(S, m0, el0, m1, el1)
     sp = local_spectrum("pentagonalize", "vertex", 4)
     ctx = sp._context
-    S = spectral._composite(ctx.steps, ctx.level, 1)
+    S = local._composite(ctx.steps, ctx.level, 1)
     el0, el1 = ctx.steps[ctx.level].element, ctx.steps[ctx.level + 1].element
-    assert not spectral._half_turn(
+    assert not eigen._half_turn(
         S, ctx.steps[ctx.level].mesh, el0, ctx.steps[ctx.level + 1].mesh, el1
     )
 
@@ -263,18 +268,18 @@ def test_fold_and_winding_are_detected():
     square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
     corners = np.array([0, 1, 2, 3])
     offsets = np.array([0, 4])
-    assert list(spectral._face_signs(square, corners, offsets)) == [1]
+    assert list(characteristic._face_signs(square, corners, offsets)) == [1]
     flipped = np.array([[0, 0], [1, 0], [0, 1], [1, 1]], dtype=float)  # a bow tie
-    assert list(spectral._face_signs(flipped, corners, offsets)) == [0]
+    assert list(characteristic._face_signs(flipped, corners, offsets)) == [0]
     # a ring of 8 triangles around the origin covering the plane twice
     t = 4 * np.pi * np.arange(8) / 8
     pts = np.concatenate([[[0.0, 0.0]], np.stack([np.cos(t), np.sin(t)], axis=1)])
     tri = np.array([[0, 1 + i, 1 + (i + 1) % 8] for i in range(8)]).reshape(-1)
     off = np.arange(0, 25, 3)
-    assert abs(spectral._winding(pts, tri, off, np.zeros(2))) == 2
+    assert abs(characteristic._winding(pts, tri, off, np.zeros(2))) == 2
     t = 2 * np.pi * np.arange(8) / 8
     pts[1:] = np.stack([np.cos(t), np.sin(t)], axis=1)
-    assert abs(spectral._winding(pts, tri, off, np.zeros(2))) == 1
+    assert abs(characteristic._winding(pts, tri, off, np.zeros(2))) == 1
 
 
 def test_characteristic_map_of_catmull_clark_like_scheme():
@@ -300,7 +305,7 @@ def _solver_giving(factor, monkeypatch):
         lam, C = eig(B)
         return lam, C * np.array([factor(j) for j in range(lam.size)])
 
-    monkeypatch.setattr(spectral.np.linalg, "eig", other)
+    monkeypatch.setattr(eigen.np.linalg, "eig", other)
 
 
 @pytest.mark.parametrize(
@@ -327,7 +332,7 @@ def test_characteristic_map_does_not_depend_on_the_eigensolvers_phases(
 def test_phase_check_fails_on_a_map_left_in_the_solvers_basis(monkeypatch):
     # the same comparison, with the canonical basis taken out, tells them apart
     monkeypatch.setattr(
-        spectral, "_canonical_plane", lambda v, mode, k: np.stack([v.real, v.imag], axis=1)
+        characteristic, "_canonical_plane", lambda v, mode, k: np.stack([v.real, v.imag], axis=1)
     )
     plain = characteristic_map("pentagonalize", "vertex", 5)
     _solver_giving(lambda j: np.exp(1j * (0.7 + 1.3 * j)), monkeypatch)
@@ -338,10 +343,10 @@ def test_phase_check_fails_on_a_map_left_in_the_solvers_basis(monkeypatch):
 def test_a_mirrored_mode_gives_the_same_plane():
     # the eigenvector of mode k - w is the conjugate of mode w's: the same map
     v = np.exp(2j * np.pi * np.arange(7) / 7) * (1 + 0.1 * np.arange(7))
-    a = spectral._canonical_plane(v, 1, 7)
-    b = spectral._canonical_plane(np.conj(v) * np.exp(0.4j), 6, 7)
+    a = characteristic._canonical_plane(v, 1, 7)
+    b = characteristic._canonical_plane(np.conj(v) * np.exp(0.4j), 6, 7)
     assert np.allclose(a, b)
-    assert not np.allclose(a, spectral._canonical_plane(np.conj(v), 1, 7))
+    assert not np.allclose(a, characteristic._canonical_plane(np.conj(v), 1, 7))
 
 
 def test_extrapolation():
@@ -549,14 +554,14 @@ def test_exact_ordering_fails_on_a_wrong_weight():
     # one weight of the exact matrix moved (the row still sums to 1) splits the double
     sp = local_spectrum("preserve_pentagons", "vertex", 5)
     ctx = sp._context
-    perm = spectral._core_perm(ctx, ctx.core)
+    perm = exact._core_perm(ctx, ctx.core)
     A = exact_local_matrix(sp)
-    assert spectral._certify(A, perm, 5, 1, None).standard
+    assert exact._certify(A, perm, 5, 1, None).standard
     row = A[1]
     j, k = sorted(range(len(row)), key=lambda c: -row[c])[:2]
     row[j] -= Fraction(1, 1000)
     row[k] += Fraction(1, 1000)
-    assert not spectral._certify(A, perm, 5, 1, None).standard
+    assert not exact._certify(A, perm, 5, 1, None).standard
 
 
 def test_triangles_threshold_is_five_sevenths_exactly():
