@@ -565,8 +565,8 @@ def test_errors(call, match):
 
 
 def test_module_needs_only_numpy():
-    # Load topology.py on its own (not through pentanb/__init__) in a fresh
-    # interpreter and check that it did not pull in matplotlib.
+    # Load the topology package on its own (not through pentanb/__init__) in a
+    # fresh interpreter and check that it did not pull in matplotlib.
     import subprocess
     import sys
     from pathlib import Path
@@ -576,9 +576,12 @@ def test_module_needs_only_numpy():
     path = Path(pentanb.topology.__file__)
     code = (
         "import importlib.util, sys; "
-        f"spec = importlib.util.spec_from_file_location('topology', {str(path)!r}); "
+        f"spec = importlib.util.spec_from_file_location('topology', {str(path)!r}, "
+        f"submodule_search_locations=[{str(path.parent)!r}]); "
         "module = importlib.util.module_from_spec(spec); "
+        "sys.modules['topology'] = module; "
         "spec.loader.exec_module(module); "
+        "assert not any(m.startswith('pentanb') for m in sys.modules), 'pentanb imported'; "
         "assert 'matplotlib' not in sys.modules, 'matplotlib imported'; "
         "assert module.min_vertices(5, 0) == 20"
     )
