@@ -16,8 +16,9 @@ format    read                                   write
                                                  ``ascii=True`` (exact)
 ========  =====================================  ==========================
 
-``write`` writes exactly the path it is given, or refuses before writing
-anything; a failure leaves no half-written file.  Every reader reads its
+``write`` writes exactly the path it is given (through a symbolic link, to
+the file it points to), or refuses before writing anything (a read-only
+file, unless ``force=True``); a failure leaves no half-written file.  Every reader reads its
 file as bytes in blocks, checks counts as it goes (a damaged file fails at
 its first inconsistency) and names the file and line of what it refuses.
 ``read`` takes a path (a regular file or a pipe: a FIFO, ``/dev/stdin``) or
@@ -40,6 +41,7 @@ from ._common import (
     FORMATS,
     IgnoredDataWarning,
     as_path,
+    check_force,
     check_mesh,
     format_of,
     name_of,
@@ -150,7 +152,14 @@ def read(path: str | os.PathLike | IO[bytes], format: str | None = None, **optio
     return _READERS[fmt](path, **options)
 
 
-def write(mesh: Mesh, path: str | os.PathLike, format: str | None = None, **options: Any) -> None:
+def write(
+    mesh: Mesh,
+    path: str | os.PathLike,
+    format: str | None = None,
+    *,
+    force: bool = False,
+    **options: Any,
+) -> None:
     """Write ``mesh`` to exactly ``path``, as OBJ, OFF, PLY or STL.
 
     Parameters
@@ -161,6 +170,10 @@ def write(mesh: Mesh, path: str | os.PathLike, format: str | None = None, **opti
     format : {"obj", "off", "ply", "stl"}, optional
         The format; default: from the suffix of ``path`` (any case).  Needed
         for any other name (``model.v2``).
+    force : bool
+        Replace a read-only file too (one whose mode lets no one write it,
+        such as ``0444``, or that this process may not write); it keeps its
+        mode.  Default: such a file is refused.
     **options
         Options of the format's writer: ``ascii`` and ``byteorder`` for PLY
         (:func:`write_ply`), ``ascii`` for STL (:func:`write_stl`).
@@ -170,8 +183,8 @@ def write(mesh: Mesh, path: str | os.PathLike, format: str | None = None, **opti
     ValueError
         Before anything is written: a suffix that names no format and no
         ``format`` (the message names the suffix and the known ones), an
-        unknown ``format``, a ``format`` that contradicts the suffix, or a
-        bad option value.  For binary STL (float32 coordinates) also a
+        unknown ``format``, a ``format`` that contradicts the suffix, a
+        bad option value, or a read-only ``path`` without ``force=True``.  For binary STL (float32 coordinates) also a
         ``MeshError``: a vertex float32 cannot hold, or triangles whose
         corners meet at one float32 point (see :func:`write_stl`).
     TypeError
@@ -183,14 +196,18 @@ def write(mesh: Mesh, path: str | os.PathLike, format: str | None = None, **opti
     The file is written to a new temporary file beside it first and renamed,
     so a failure leaves nothing half-written (and an existing file as it
     was, with its permissions); a path that exists and is not a regular
-    file (a device, a FIFO, a directory) is refused with a ValueError.
+    file (a device, a FIFO, a directory) is refused with a ValueError.  A
+    symbolic link is kept and the file it points to is replaced (its
+    temporary file made beside that file); a dangling link's target is
+    created.
     """
     check_mesh(mesh, "write")
     fmt = format_of(as_path(path, "write"), format)
+    check_force(force, "write")
     _check_options("write", fmt, options, WRITE_OPTIONS[fmt])
     if fmt == "ply":
         ply.check_write_options(**options)
     elif fmt == "stl":
         stl.check_write_options(**options)
         options["prepared"] = stl.prepare(mesh, options.get("ascii", False))
-    write_as(mesh, path, fmt, "write", _WRITERS[fmt], **options)
+    write_as(mesh, path, fmt, "write", _WRITERS[fmt], force=force, **options)

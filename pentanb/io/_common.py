@@ -4,7 +4,9 @@
 * what a reader reads (:func:`open_source`): a path to a regular file or a
   pipe (FIFO, ``/dev/stdin``), or a binary file object; a device is refused
   and a FIFO without a writer reads as empty instead of blocking;
-* writing to a temporary name and renaming (:func:`write_atomically`);
+* writing to a temporary name and renaming (:func:`write_atomically`),
+  through symbolic links to their target, never over a read-only file
+  unless asked;
 * a text file read as bytes, in blocks of whole lines (:func:`line_blocks`),
   and the tokens of such a block located with whole-array numpy expressions
   (:func:`scan`): the readers parse numbers block by block, so memory stays
@@ -254,7 +256,63 @@ def format_of(path: Path, format: str | None) -> str:
     return chosen
 
 
-def write_atomically(path: Path, write: Callable[[IO[bytes]], None]) -> None:
+#: The most symbolic links a write follows from the path it is given to the file it replaces.
+MAX_LINKS = 40
+
+
+def link_target(path: Path) -> Path:
+    """The file a write to ``path`` replaces: ``path`` itself, or the file its
+    symbolic links lead to (which may not exist yet: a dangling link).
+
+    Every link is followed one step at a time, a relative one from the folder
+    that holds it, so the file is written where the link points and the
+    link is kept.
+
+    Raises
+    ------
+    OSError
+        More than :data:`MAX_LINKS` links in a row (a loop), errno ``ELOOP``.
+    """
+    target = path
+    for _ in range(MAX_LINKS):
+        if not target.is_symlink():
+            return target
+        target = target.parent / os.readlink(target)
+    raise OSError(errno.ELOOP, f"more than {MAX_LINKS} symbolic links in a row", str(path))
+
+
+def is_read_only(path: Path, mode: int) -> bool:
+    """Whether the existing file ``path`` (permission bits ``mode``) is read-only:
+    its mode lets no one write it (``0444``), or this process may not."""
+    return not mode & 0o222 or not os.access(path, os.W_OK)
+
+
+def writable_target(path: Path, *, force: bool, caller: str) -> tuple[Path, int | None]:
+    """The file a write to ``path`` replaces (:func:`link_target`) and its
+    permission bits (None: it does not exist yet), or a ValueError naming
+    ``caller`` if it must not be replaced (see :func:`write_atomically`)."""
+    target = link_target(path)
+    shown = f"{path}" if target == path else f"{path} (a link to {target})"
+    try:
+        info = os.stat(target)
+    except FileNotFoundError:
+        return target, None
+    mode = stat.S_IMODE(info.st_mode)
+    if not stat.S_ISREG(info.st_mode):
+        raise ValueError(
+            f"{caller}: {shown} exists and is not a regular file: pentanb will not replace it"
+        )
+    if not force and is_read_only(target, mode):
+        raise ValueError(
+            f"{caller}: {shown} is read-only (mode {mode:04o}): pentanb will not replace "
+            "it; pass force=True to replace it anyway, with the same mode"
+        )
+    return target, mode
+
+
+def write_atomically(
+    path: Path, write: Callable[[IO[bytes]], None], *, force: bool = False, caller: str = "write"
+) -> Path:
     """Run ``write(file)`` on a new temporary file beside ``path``, then rename it to ``path``.
 
     The temporary file is created exclusively under a fresh random name
@@ -263,23 +321,41 @@ def write_atomically(path: Path, write: Callable[[IO[bytes]], None]) -> None:
     failure (an exception from ``write``, a full disk) removes it and leaves
     an existing ``path`` as it was.
 
+    A symbolic link is kept: the file it points to (followed link by link;
+    a dangling link's target is created) is the one replaced, by a
+    temporary file beside that file.
+
+    Parameters
+    ----------
+    path : Path
+        The file to write.
+    write : callable
+        ``write(fh)`` writes the content to the binary file ``fh``.
+    force : bool
+        Replace a read-only file too (see :func:`is_read_only`).
+    caller : str
+        The public function, for messages.
+
+    Returns
+    -------
+    Path
+        The file written: ``path``, or the target of its links.
+
     Raises
     ------
     ValueError
-        ``path`` exists and is not a regular file (a directory, a device, a
-        FIFO, a socket): it is never replaced.
+        Before anything is written: ``path`` (or its link's target) exists
+        and is not a regular file (a directory, a device, a FIFO, a socket):
+        it is never replaced; or it is a read-only file and ``force`` is
+        False.
+    OSError
+        The folder does not exist or cannot be written, a loop of links, a
+        full disk.
     """
-    try:
-        mode: int | None = stat.S_IMODE(os.stat(path).st_mode)
-        if not path.is_file():
-            raise ValueError(
-                f"{path} exists and is not a regular file: pentanb will not replace it"
-            )
-    except FileNotFoundError:
-        mode = None
-    stem = os.fsencode(path.name)[:200].decode(errors="ignore")  # room for the suffix
+    target, mode = writable_target(path, force=force, caller=caller)
+    stem = os.fsencode(target.name)[:200].decode(errors="ignore")  # room for the suffix
     while True:
-        tmp = path.with_name(f".{stem}.{secrets.token_hex(6)}.tmp")
+        tmp = target.with_name(f".{stem}.{secrets.token_hex(6)}.tmp")
         try:
             fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
             break
@@ -290,11 +366,12 @@ def write_atomically(path: Path, write: Callable[[IO[bytes]], None]) -> None:
             write(fh)
         if mode is not None:
             os.chmod(tmp, mode)
-        os.replace(tmp, path)
+        os.replace(tmp, target)
     except BaseException:
         with contextlib.suppress(FileNotFoundError):
             os.unlink(tmp)
         raise
+    return target
 
 
 def write_as(
@@ -303,14 +380,25 @@ def write_as(
     format: str | None,
     caller: str,
     writer: Callable[..., None],
+    *,
+    force: bool = False,
     **options: Any,
 ) -> None:
     """Check ``mesh`` and ``path`` (the name must not name another format), then
-    write ``writer(mesh, file, **options)`` to ``path`` atomically."""
+    write ``writer(mesh, file, **options)`` to ``path`` atomically
+    (:func:`write_atomically`; ``force``: replace a read-only file too)."""
     check_mesh(mesh, caller)
     checked = as_path(path, caller)
     format_of(checked, format)
-    write_atomically(checked, partial(writer, mesh, **options))
+    force = check_force(force, caller)
+    write_atomically(checked, partial(writer, mesh, **options), force=force, caller=caller)
+
+
+def check_force(force: Any, caller: str) -> bool:
+    """``force`` as a bool; a TypeError naming ``caller`` for anything else."""
+    if not isinstance(force, (bool, np.bool_)):
+        raise TypeError(f"{caller}: force must be True or False, not {type(force).__name__}")
+    return bool(force)
 
 
 def show(line: bytes, limit: int = 60) -> str:

@@ -238,7 +238,7 @@ def _slow(block: bytes, nv: int, lineno: int, path: Path) -> _Part:
     )
 
 
-def write_obj(mesh: Mesh, path: str | os.PathLike) -> None:
+def write_obj(mesh: Mesh, path: str | os.PathLike, *, force: bool = False) -> None:
     """Write an OBJ file (``v`` and ``f`` lines, 1-based indices) to exactly ``path``.
 
     Coordinates are written with ``repr`` precision, so reading the file
@@ -250,8 +250,10 @@ def write_obj(mesh: Mesh, path: str | os.PathLike) -> None:
     mesh : Mesh
     path : str or path-like
         The file to write; its name is used as given.
+    force : bool
+        Replace a read-only file too (see :func:`pentanb.write`).
     """
-    write_as(mesh, path, "obj", "write_obj", _write)
+    write_as(mesh, path, "obj", "write_obj", _write, force=force)
 
 
 def _write(mesh: Mesh, fh: IO[bytes]) -> None:

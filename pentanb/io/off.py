@@ -249,7 +249,7 @@ def _line(block: bytes, s, line: int) -> bytes:
     return block[int(s.start[line]) : int(s.end[line])]
 
 
-def write_off(mesh: Mesh, path: str | os.PathLike) -> None:
+def write_off(mesh: Mesh, path: str | os.PathLike, *, force: bool = False) -> None:
     """Write an OFF file to exactly ``path`` (coordinates in ``repr`` precision).
 
     A name ending in another format's suffix (``.obj``) is refused (ValueError).
@@ -259,8 +259,10 @@ def write_off(mesh: Mesh, path: str | os.PathLike) -> None:
     mesh : Mesh
     path : str or path-like
         The file to write; its name is used as given.
+    force : bool
+        Replace a read-only file too (see :func:`pentanb.write`).
     """
-    write_as(mesh, path, "off", "write_off", _write)
+    write_as(mesh, path, "off", "write_off", _write, force=force)
 
 
 def _write(mesh: Mesh, fh: IO[bytes]) -> None:

@@ -617,7 +617,12 @@ def check_write_options(ascii: Any = False, byteorder: Any = "little") -> None:
 
 
 def write_ply(
-    mesh: Mesh, path: str | os.PathLike, *, ascii: bool = False, byteorder: str = "little"
+    mesh: Mesh,
+    path: str | os.PathLike,
+    *,
+    ascii: bool = False,
+    byteorder: str = "little",
+    force: bool = False,
 ) -> None:
     """Write a PLY file to exactly ``path``: binary (default) or ``ascii=True``.
 
@@ -633,9 +638,13 @@ def write_ply(
         Text instead of binary (coordinates in ``repr`` precision).
     byteorder : {"little", "big"}
         Of a binary file.
+    force : bool
+        Replace a read-only file too (see :func:`pentanb.write`).
     """
     check_write_options(ascii, byteorder)
-    write_as(mesh, path, "ply", "write_ply", _write, ascii=ascii, byteorder=byteorder)
+    write_as(
+        mesh, path, "ply", "write_ply", _write, force=force, ascii=ascii, byteorder=byteorder
+    )
 
 
 def _write(mesh: Mesh, fh: IO[bytes], ascii: bool = False, byteorder: str = "little") -> None:

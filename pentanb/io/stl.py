@@ -370,7 +370,9 @@ def check_write_options(ascii: Any = False) -> None:
         raise TypeError(f"write_stl: ascii must be True or False, got {ascii!r}")
 
 
-def write_stl(mesh: Mesh, path: str | os.PathLike, *, ascii: bool = False) -> None:
+def write_stl(
+    mesh: Mesh, path: str | os.PathLike, *, ascii: bool = False, force: bool = False
+) -> None:
     """Write an STL file to exactly ``path``: binary (default) or ``ascii=True``.
 
     STL holds triangles only: every polygon is fanned from its first corner
@@ -387,6 +389,8 @@ def write_stl(mesh: Mesh, path: str | os.PathLike, *, ascii: bool = False) -> No
         The file to write; its name is used as given.
     ascii : bool
         Write ASCII STL (exact coordinates) instead of binary (float32).
+    force : bool
+        Replace a read-only file too (see :func:`pentanb.write`).
 
     Raises
     ------
@@ -401,7 +405,9 @@ def write_stl(mesh: Mesh, path: str | os.PathLike, *, ascii: bool = False) -> No
     check_mesh(mesh, "write_stl")
     check_write_options(ascii)
     prepared = prepare(mesh, ascii, "write_stl")
-    write_as(mesh, path, "stl", "write_stl", _write, ascii=ascii, prepared=prepared)
+    write_as(
+        mesh, path, "stl", "write_stl", _write, force=force, ascii=ascii, prepared=prepared
+    )
 
 
 def prepare(mesh: Mesh, ascii: Any = False, caller: str = "write") -> tuple[np.ndarray, ...]:

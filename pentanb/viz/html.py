@@ -43,6 +43,7 @@ import numpy as np
 import pythreejs as P3
 from ipywidgets.embed import dependency_state, escape_script
 
+from ..io._common import as_path, check_force, writable_target, write_atomically
 from ..mesh import Mesh
 from ..subdivision import get_scheme
 from .drawing import camera_fit, counts_text, in_frame, look_at_quaternion, view_frame
@@ -443,6 +444,7 @@ def export_html(
     title: str = "pentanb",
     max_bytes: int = MAX_PAGE_BYTES,
     max_faces: int = PAGE_MAX_FACES,
+    force: bool = False,
 ) -> Path:
     """Write a stand-alone HTML page of a view, an explorer or a step-through.
 
@@ -471,6 +473,8 @@ def export_html(
     max_faces : int >= 1
         Largest mesh (faces) an explorer's page draws for one combination
         of its controls.
+    force : bool
+        Replace a read-only page too (as :func:`pentanb.write`).
 
     Returns
     -------
@@ -483,10 +487,23 @@ def export_html(
         ``offline=True`` without the npm cache (the message says how to fill it).
     TypeError, ValueError
         ``max_bytes`` or ``max_faces`` not an integer >= 1; ``max_bytes``
-        smaller than an explorer's page without any mesh.
+        smaller than an explorer's page without any mesh; ``path`` names
+        something other than a regular file (a folder, a FIFO, a device),
+        or a read-only file without ``force=True``: refused before the
+        page is made.
+
+    Notes
+    -----
+    The page is written as :func:`pentanb.write` writes a mesh: into a new
+    temporary file beside ``path``, then renamed over it, so a full disk
+    leaves the old page whole; a symbolic link is kept and the file it
+    points to replaced.
     """
     max_bytes = integer_argument(max_bytes, "max_bytes", 1)
     max_faces = integer_argument(max_faces, "max_faces", 1)
+    force = check_force(force, "export_html")
+    path = as_path(path, "export_html")
+    writable_target(path, force=force, caller="export_html")  # refused before the work
     scripts = _script_block(offline)
     if not isinstance(obj, Explorer):
         widget, made = _exportable(obj, max_bytes, max_faces)
@@ -513,9 +530,13 @@ def export_html(
             budget = int(budget * (max_bytes - fixed) / (size - fixed) * 0.95)
         else:
             raise ValueError(f"could not fit the explorer's page in max_bytes={max_bytes:,}")
-    path = Path(path)
+    data = page.encode("utf-8")
+
+    def write(fh) -> None:
+        fh.write(data)
+
     try:
-        path.write_text(page, encoding="utf-8")
+        write_atomically(path, write, force=force, caller="export_html")
     finally:
         if made:
             widget.close()
