@@ -184,9 +184,10 @@ def write(
         Before anything is written: a suffix that names no format and no
         ``format`` (the message names the suffix and the known ones), an
         unknown ``format``, a ``format`` that contradicts the suffix, a
-        bad option value, or a read-only ``path`` without ``force=True``.  For binary STL (float32 coordinates) also a
-        ``MeshError``: a vertex float32 cannot hold, or triangles whose
-        corners meet at one float32 point (see :func:`write_stl`).
+        bad option value, or a read-only ``path`` without ``force=True``.
+        For binary STL (float32 coordinates) also a ``MeshError``: a vertex
+        float32 cannot hold, or triangles whose corners meet at one float32
+        point (see :func:`write_stl`).
     TypeError
         ``mesh`` is not a :class:`~pentanb.Mesh`, ``path`` not a path, or an
         option the format does not take.

@@ -642,9 +642,7 @@ def write_ply(
         Replace a read-only file too (see :func:`pentanb.write`).
     """
     check_write_options(ascii, byteorder)
-    write_as(
-        mesh, path, "ply", "write_ply", _write, force=force, ascii=ascii, byteorder=byteorder
-    )
+    write_as(mesh, path, "ply", "write_ply", _write, force=force, ascii=ascii, byteorder=byteorder)
 
 
 def _write(mesh: Mesh, fh: IO[bytes], ascii: bool = False, byteorder: str = "little") -> None:

@@ -405,9 +405,7 @@ def write_stl(
     check_mesh(mesh, "write_stl")
     check_write_options(ascii)
     prepared = prepare(mesh, ascii, "write_stl")
-    write_as(
-        mesh, path, "stl", "write_stl", _write, force=force, ascii=ascii, prepared=prepared
-    )
+    write_as(mesh, path, "stl", "write_stl", _write, force=force, ascii=ascii, prepared=prepared)
 
 
 def prepare(mesh: Mesh, ascii: Any = False, caller: str = "write") -> tuple[np.ndarray, ...]:
