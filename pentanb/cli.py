@@ -177,7 +177,7 @@ def _classroom(args) -> int:
     from .classroom import student_version
 
     try:
-        written = student_version(args.out_dir)
+        written = student_version(args.out_dir, force=args.force)
     except (ImportError, ValueError, OSError) as exc:
         print(f"pentanb classroom: {exc}", file=sys.stderr)
         return 2
@@ -220,6 +220,9 @@ def _parser() -> argparse.ArgumentParser:
         "classroom", help="write the students' notebooks: the teacher's without the solutions"
     )
     c.add_argument("out_dir", metavar="OUT_DIR", help="folder for the students' notebooks")
+    c.add_argument(
+        "--force", action="store_true", help="replace read-only copies in OUT_DIR too"
+    )
     c.set_defaults(func=_classroom)
     return p
 
