@@ -976,6 +976,7 @@ def test_offline_without_cache_says_how_to_fill_it(tmp_path, monkeypatch):
 #: pentanb.viz from the bottom up: a module imports only modules before it.
 LAYERS = [
     "colors",
+    "camera",
     "drawing",
     "stages",
     "mpl",
@@ -989,6 +990,7 @@ LAYERS = [
 #: What each module may import besides the standard library, numpy and pentanb's core.
 THIRD_PARTY = {
     "colors": set(),
+    "camera": set(),
     "drawing": set(),
     "stages": set(),
     "mpl": {"matplotlib", "mpl_toolkits"},
