@@ -220,9 +220,7 @@ def _parser() -> argparse.ArgumentParser:
         "classroom", help="write the students' notebooks: the teacher's without the solutions"
     )
     c.add_argument("out_dir", metavar="OUT_DIR", help="folder for the students' notebooks")
-    c.add_argument(
-        "--force", action="store_true", help="replace read-only copies in OUT_DIR too"
-    )
+    c.add_argument("--force", action="store_true", help="replace read-only copies in OUT_DIR too")
     c.set_defaults(func=_classroom)
     return p
 

@@ -133,7 +133,7 @@ def test_a_read_only_copy_needs_force(teacher, tmp_path, capsys):
     out = tmp_path / "students"
     classroom.student_version(out, [teacher / NOTEBOOK.name])
     (out / NOTEBOOK.name).chmod(0o444)
-    with pytest.raises(ValueError, match="read-only.*force=True"):
+    with pytest.raises(ValueError, match=r"read-only.*force=True"):
         classroom.student_version(out, [teacher / NOTEBOOK.name])
     classroom.student_version(out, [teacher / NOTEBOOK.name], force=True)
     assert stat.S_IMODE((out / NOTEBOOK.name).stat().st_mode) == 0o444
