@@ -12,6 +12,9 @@
 * :mod:`~pentanb.analysis.boundary`: the boundary curve of an open mesh:
   its own subdivision rule (mask), the spectrum of its local matrix, C1 or
   not.
+* :mod:`~pentanb.analysis.limit`: the limit surface at the control vertices
+  (positions and normals from the left eigenvectors of the local matrices,
+  checked against actual subdivision) and curvature measures per element.
 * :mod:`~pentanb.analysis.spectral`: Section 7's open question answered with
   subdivision theory: local subdivision matrices around extraordinary
   vertices and faces, their spectra, characteristic maps, the results table.
@@ -31,6 +34,18 @@ from .boundary import (
     boundary_spectrum,
     boundary_table,
     boundary_test_mesh,
+)
+from .limit import (
+    CurvatureMeasure,
+    LimitConvergence,
+    LimitStencil,
+    curvature_markdown,
+    curvature_measures,
+    curvature_table,
+    limit_convergence,
+    limit_normals,
+    limit_points,
+    limit_stencil,
 )
 from .measures import *  # noqa: F403  (the names of measures.__all__)
 from .spectral import (
@@ -61,5 +76,15 @@ __all__ = [
     "BoundaryRow",
     "boundary_markdown",
     "boundary_test_mesh",
+    "limit_points",
+    "limit_normals",
+    "limit_stencil",
+    "LimitStencil",
+    "limit_convergence",
+    "LimitConvergence",
+    "curvature_measures",
+    "CurvatureMeasure",
+    "curvature_table",
+    "curvature_markdown",
     *(name for name in measures.__all__ if name != "BOX_EDGES"),
 ]
