@@ -27,6 +27,7 @@ import sys
 from fractions import Fraction
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import pentanb
@@ -201,6 +202,62 @@ def test_an_answer_of_the_wrong_kind_gets_a_hint_not_a_traceback(exercise):
         result = classroom.EXERCISES[exercise].check(answer)
         assert result.status == "not quite", (answer, result)
         assert "Traceback" not in result.hint and result.hint
+
+
+class _BadLength(list):
+    def __len__(self):
+        raise RuntimeError("no length")
+
+
+class _BadIteration(tuple):
+    def __iter__(self):
+        raise RuntimeError("no iteration")
+
+
+class _BadString(str):
+    def strip(self, chars=None):
+        raise KeyError("x" * 1_000_000)
+
+
+#: Answers a student may give that used to escape the check or read as an internal error.
+HOSTILE_ANSWERS = [
+    _BadLength([1, 2, 3]),
+    _BadIteration((1, 2, 3)),
+    _BadString("a"),
+    10**400,
+    -(10**5000),
+    (10**5000, 1, 1),
+    (1e300, 2.0, 3.0),
+    (float("inf"), 1, 1),
+    "1e400",
+    "-1e400/3",
+    "1e999999999",
+    "1" * 100_000,
+    "3/0",
+    Fraction(10**400, 3),
+    Fraction(1, 10**400) ** -1,
+    np.longdouble("1e4000") if np.finfo(np.longdouble).max > 1e4000 else 10**400,
+]
+
+
+@pytest.mark.parametrize("exercise", IDS)
+def test_hostile_answers_get_a_hint_never_an_internal_error(exercise):
+    for answer in HOSTILE_ANSWERS:
+        result = classroom.EXERCISES[exercise].check(answer)
+        assert result.status == "not quite", (exercise, answer, result)
+        assert "could not be checked" not in result.hint and "Overflow" not in result.hint
+        assert len(result.hint) < 400, (exercise, result.hint[:200])
+
+
+def test_hostile_answers_get_the_hint_that_fits():
+    assert "far too large" in check("01.2", 10**400).hint
+    assert "far too large" in check("01.2", "1e400").hint
+    assert "far too large" in check("08.1", Fraction(10**400, 3)).hint
+    assert "far too large" in check("02.1", (10**5000, 1, 1)).hint
+    assert "divides by zero" in check("08.1", "3/0").hint
+    assert "100,000 characters" in check("08.1", "1" * 100_000).hint
+    assert "using it raised RuntimeError: no length" in check("02.1", _BadLength([1, 2, 3])).hint
+    assert check("09.2", "13/105").ok and check("08.1", " 0.41 ").ok
 
 
 def test_partial_counts_and_a_function_returning_the_placeholder_are_not_answered_yet():

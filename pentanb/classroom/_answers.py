@@ -13,7 +13,6 @@ import math
 import numbers
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Any
 
 import numpy as np
@@ -113,16 +112,22 @@ class Exercise:
         -------
         Result
         """
-        if _unanswered(answer):
-            return Result(self.id, NOT_ANSWERED)
         try:
+            if _unanswered(answer):
+                return Result(self.id, NOT_ANSWERED)
             hint = self._checker(answer)
         except _NotAnswered:
             return Result(self.id, NOT_ANSWERED)
         except _Hint as h:
             hint = str(h)
+        except OverflowError:
+            hint = _TOO_LARGE
         except Exception as exc:  # never a traceback for a student's answer
-            hint = f"this answer could not be checked ({type(exc).__name__}: {_short(exc)})"
+            hint = (
+                f"your answer could not be read: using it raised {type(exc).__name__}"
+                f"{': ' + _short(exc) if str(exc) else ''}; give a plain value "
+                "(numbers, a string, a tuple or list, a mesh or a function, as asked)"
+            )
         return Result(self.id, RIGHT) if hint is None else Result(self.id, NOT_QUITE, hint)
 
 
@@ -219,8 +224,23 @@ class _NotAnswered(Exception):
 
 
 def _short(exc: BaseException) -> str:
-    text = str(exc).splitlines()[0] if str(exc) else ""
+    """The first line of an exception's message, at most 160 characters."""
+    try:
+        text = str(exc)
+    except Exception:  # a __str__ that raises
+        return type(exc).__name__
+    text = text[: text.find("\n")] if "\n" in text[:161] else text
     return text if len(text) <= 160 else text[:157] + "..."
+
+
+#: The hint for a number too large (or a count too large) to be an answer.
+_TOO_LARGE = "that number is far too large to be the answer: look at your working again"
+
+#: Counts larger than this are no mesh's (and would make hints of megabytes).
+_MAX_COUNT = 10**15
+
+#: The longest string read as a number (a number needs far fewer characters).
+_MAX_NUMBER_TEXT = 100
 
 
 def _unanswered(answer: Any) -> bool:
@@ -240,14 +260,19 @@ def _counts(answer: Any, what: str = "(V, E, F)") -> tuple[int, ...]:
     example = "(4, 6, 4)"  # the tetrahedron's: never an exercise's answer
     if isinstance(answer, (str, bytes)) or not isinstance(answer, (tuple, list, np.ndarray)):
         raise _Hint(f"give three whole numbers {what} in brackets, like {example}")
-    if len(answer) != 3:
-        raise _Hint(f"give three numbers {what}, not {len(answer)}")
+    if isinstance(answer, np.ndarray) and answer.ndim != 1:
+        raise _Hint(f"give three whole numbers {what} in brackets, like {example}")
+    n = len(answer)
+    if n != 3:
+        raise _Hint(f"give three numbers {what}, not {n:,}")
     values = []
-    for x in answer:
-        if isinstance(x, (float, np.floating)) and float(x).is_integer():
+    for x in tuple(answer)[:3]:
+        if isinstance(x, (float, np.floating)) and math.isfinite(x) and float(x).is_integer():
             x = int(x)
         if not _is_int(x):
             raise _Hint(f"each of {what} is a whole number; {shown(x)} is not")
+        if abs(int(x)) > _MAX_COUNT:
+            raise _Hint(f"{shown(x)} is far too large for a count of this mesh")
         values.append(int(x))
     return tuple(values)
 
@@ -273,17 +298,50 @@ def _number(answer: Any) -> float:
     if isinstance(answer, (bool, np.bool_)):
         raise _Hint("give a number, not True or False")
     if isinstance(answer, str):
-        try:
-            return float(Fraction(answer.strip()))
-        except (ValueError, ZeroDivisionError):
-            hint = f"give a number, like 3 or 0.5 or '2/3'; {shown(answer)} is not one"
-            raise _Hint(hint) from None
+        return _number_text(answer)
     if isinstance(answer, (numbers.Real, np.integer, np.floating)):
-        value = float(answer)
+        try:
+            value = float(answer)
+        except OverflowError:  # an int or a Fraction beyond float64
+            raise _Hint(_TOO_LARGE) from None
         if math.isfinite(value):
             return value
-        raise _Hint("give a finite number")
+        if isinstance(answer, (float, np.floating)) and not math.isfinite(answer):
+            raise _Hint("give a finite number")
+        raise _Hint(_TOO_LARGE)  # a Decimal, numpy longdouble, ... beyond float64
     raise _Hint(f"give a number, like 3 or 0.5; {shown(answer)} is a {type(answer).__name__}")
+
+
+def _number_text(answer: str) -> float:
+    """A number written as a string: ``'3'``, ``'0.5'``, ``'1e-3'`` or a fraction
+    ``'2/3'`` (each part a number), else a hint.  Read with ``float``, never as an
+    exact fraction, so ``'1e999999999'`` costs nothing (and is too large)."""
+    text = answer.strip()
+    example = "give a number, like 3 or 0.5 or '2/3'"
+    if len(text) > _MAX_NUMBER_TEXT:
+        raise _Hint(f"{example}; this is a string of {len(text):,} characters")
+    parts = text.split("/")
+    if len(parts) > 2:
+        raise _Hint(f"{example}; {shown(answer)} is not one")
+    values = []
+    for part in parts:
+        try:
+            values.append(float(part))
+        except ValueError:
+            raise _Hint(f"{example}; {shown(answer)} is not one") from None
+    if not all(math.isfinite(v) for v in values):
+        words = {t.strip().lower().lstrip("+-") for t in parts}
+        if words & {"inf", "infinity", "nan"}:
+            raise _Hint("give a finite number")
+        raise _Hint(_TOO_LARGE)
+    if len(values) == 1:
+        return values[0]
+    if values[1] == 0:
+        raise _Hint(f"{shown(answer)} divides by zero")
+    value = values[0] / values[1]
+    if not math.isfinite(value):
+        raise _Hint(_TOO_LARGE)
+    return value
 
 
 def _whole(answer: Any) -> int:
