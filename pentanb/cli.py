@@ -114,25 +114,28 @@ def _figures(args) -> int:
     return 1 if regressed else 0
 
 
-def _usage_error(message: str) -> None:
+def _usage_error(message: str, command: str = "figures") -> None:
     """One line on standard error (the caller exits with status 2)."""
-    print(f"pentanb figures: {message}", file=sys.stderr)
+    print(f"pentanb {command}: {message}", file=sys.stderr)
 
 
-def _output_folder(name: str) -> Path | None:
-    """The folder for the PNGs, created if needed and checked writable; None after
+def _output_folder(name: str, command: str = "figures") -> Path | None:
+    """The output folder, created if needed and checked writable; None after
     printing a one-line error (an empty name, a file in the way, a read-only or
     virtual file system such as /proc or /sys, no permission)."""
     if not name.strip():
-        _usage_error("--out needs a folder name (use --out . for the current folder)")
+        _usage_error("--out needs a folder name (use --out . for the current folder)", command)
         return None
     out = Path(name)
+    if out.exists() and not out.is_dir():
+        _usage_error(f"cannot write into {name}: it is a file, not a folder", command)
+        return None
     try:
         out.mkdir(parents=True, exist_ok=True)
         with tempfile.TemporaryFile(dir=out):  # can a file be made there?
             pass
     except OSError as exc:
-        _usage_error(f"cannot write into {name}: {exc.strerror or exc}")
+        _usage_error(f"cannot write into {name}: {exc.strerror or exc}", command)
         return None
     return out
 
@@ -158,7 +161,19 @@ def _docs(args) -> int:
             file=sys.stderr,
         )
         return 2
+    if args.out is not None and not args.out.strip():
+        _usage_error("--out needs a folder name", "docs")
+        return 2
     out = Path(args.out) if args.out else root / "docs" / "_build" / "html"
+    if out.exists() and not out.is_dir():
+        _usage_error(f"cannot write into {out}: it is a file, not a folder", "docs")
+        return 2
+    missing_scripts = _site_scripts_missing(root)
+    if missing_scripts:
+        print(f"pentanb docs: {missing_scripts}", file=sys.stderr)
+        return 2
+    if _output_folder(str(out), "docs") is None:
+        return 2
     cmd = [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-b", "html"]
     cmd += ["-c", str(root / "docs"), str(root), str(out)]
     if args.force:  # the executed notebooks are kept beside the output folder
@@ -170,6 +185,36 @@ def _docs(args) -> int:
     if status == 0:
         print(f"open {out / 'index.html'}", file=sys.stderr)
     return status
+
+
+#: Run in a child process (docs/conf.py sets environment variables as it loads):
+#: exits 3 after printing what is missing when the site's scripts are not there.
+_SITE_SCRIPTS_CHECK = """
+import runpy, sys
+try:
+    runpy.run_path(sys.argv[1])["site_scripts"]()
+except FileNotFoundError as exc:
+    print(str(exc).splitlines()[0] if str(exc) else "a script of the site is missing")
+    sys.exit(3)
+"""
+
+
+def _site_scripts_missing(root: Path) -> str | None:
+    """What the site's scripts miss (the npm cache not filled), in one line, or
+    None when they are all there (or docs/conf.py cannot tell: Sphinx will say)."""
+    import subprocess
+
+    conf = root / "docs" / "conf.py"
+    done = subprocess.run(
+        [sys.executable, "-c", _SITE_SCRIPTS_CHECK, str(conf)],
+        capture_output=True,
+        text=True,
+        check=False,
+        cwd=root,
+    )
+    if done.returncode == 3:
+        return done.stdout.strip() or "a script of the site is missing"
+    return None
 
 
 def _classroom(args) -> int:
@@ -238,18 +283,32 @@ def main(argv: Sequence[str] | None = None) -> int:
     int
         Exit status: 0 when every claim's verdict is the recorded one
         (findings included); 1 when one is not (a regression); 2 for an
-        unknown figure or an output folder that cannot be written;
+        unknown figure or an output folder that cannot be written, a
+        standard output that is closed or cannot be written (a full disk),
+        and for ``docs`` without the npm cache's scripts (one line on
+        standard error each);
         :data:`PIPE_CLOSED` (141, as a shell reports a program that
         SIGPIPE ended) when the output's reader went away early
         (``python -m pentanb demo | head``), without a word on standard error.
     """
+    command = "pentanb"
     try:
         args = _parser().parse_args(argv)
+        command = f"pentanb {args.command or 'demo'}"
+        if sys.stdout is None:  # started with standard output closed (>&-)
+            print(
+                f"{command}: standard output is closed; give it a file (> out.txt)", file=sys.stderr
+            )
+            return 2
         status = _demo(args) if args.command is None else args.func(args)
         sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit
     except BrokenPipeError:
         _silence()
         return PIPE_CLOSED
+    except OSError as exc:  # writing the output: a full disk (> /dev/full), an I/O error
+        print(f"{command}: cannot write the output: {exc.strerror or exc}", file=sys.stderr)
+        _silence(streams=(sys.stdout,))  # what is left in its buffer goes nowhere
+        return 2
     return status
 
 
@@ -257,11 +316,12 @@ def main(argv: Sequence[str] | None = None) -> int:
 PIPE_CLOSED = 141
 
 
-def _silence() -> None:
-    """Point standard output and error at the null device, so that nothing
-    more is written to a closed pipe (the interpreter flushes both at exit,
-    which would fail again and print "Exception ignored ... BrokenPipeError")."""
-    for stream in (sys.stdout, sys.stderr):
+def _silence(streams: tuple | None = None) -> None:
+    """Point standard output and error (or ``streams``) at the null device, so
+    that nothing more is written to a closed pipe or a full disk (the
+    interpreter flushes both at exit, which would fail again and print
+    "Exception ignored ... BrokenPipeError")."""
+    for stream in (sys.stdout, sys.stderr) if streams is None else streams:
         try:
             null = os.open(os.devnull, os.O_WRONLY)
             try:

@@ -5,7 +5,9 @@ The ``figures`` subcommand is run end to end in :mod:`test_figures`.
 
 from __future__ import annotations
 
+import importlib.util
 import inspect
+import os
 import subprocess
 import sys
 
@@ -167,3 +169,72 @@ def test_a_finding_that_starts_to_hold_is_a_regression_too(monkeypatch, tmp_path
     _swap_claims(monkeypatch, "fig02", [now_holds])
     assert main(["figures", "--out", str(tmp_path), "--only", "2"]) == 1
     assert "REGRESSION (recorded: does not hold as stated)" in capsys.readouterr().out
+
+
+# -- output that cannot be written (issue 38, item 15): one line, a non-zero exit --------
+
+
+def _run_shell(command: str) -> subprocess.CompletedProcess:
+    """``python -m pentanb`` with shell redirections (``>&-``, ``> /dev/full``)."""
+    import shlex
+
+    return subprocess.run(
+        ["sh", "-c", f"{shlex.quote(sys.executable)} -m pentanb {command}"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full here")
+def test_a_full_disk_is_one_line_and_status_2():
+    done = _run_shell("demo > /dev/full")
+    assert done.returncode == 2
+    assert done.stderr == "pentanb demo: cannot write the output: No space left on device\n"
+
+
+def test_a_closed_standard_output_is_one_line_and_status_2():
+    done = _run_shell("demo >&-")
+    assert done.returncode == 2
+    assert done.stderr == ("pentanb demo: standard output is closed; give it a file (> out.txt)\n")
+
+
+def test_an_os_error_while_printing_is_one_line(monkeypatch, capsys):
+    def full(args):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(pentanb.cli, "_demo", full)
+    silenced = []
+    monkeypatch.setattr(pentanb.cli, "_silence", lambda streams=None: silenced.append(streams))
+    assert main([]) == 2
+    assert capsys.readouterr().err == (
+        "pentanb demo: cannot write the output: No space left on device\n"
+    )
+    assert silenced == [(sys.stdout,)]
+
+
+needs_sphinx = pytest.mark.skipif(
+    importlib.util.find_spec("sphinx") is None or importlib.util.find_spec("myst_nb") is None,
+    reason="the docs extra is not installed",
+)
+
+
+@needs_sphinx
+def test_docs_out_naming_a_file_is_one_line(tmp_path, capsys):
+    target = tmp_path / "site.html"
+    target.write_text("a page")
+    assert main(["docs", "--out", str(target)]) == 2
+    err = capsys.readouterr().err
+    assert err == f"pentanb docs: cannot write into {target}: it is a file, not a folder\n"
+    assert target.read_text() == "a page"
+
+
+@needs_sphinx
+def test_docs_without_the_npm_cache_is_one_line(tmp_path, monkeypatch, capsys):
+    monkeypatch.setenv("PENTANB_JS_DIR", str(tmp_path / "no-npm-cache"))
+    out = tmp_path / "site"
+    assert main(["docs", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("pentanb docs: ")
+    assert "npm install --prefix" in err and "Traceback" not in err
+    assert not out.exists()  # refused before anything was made
