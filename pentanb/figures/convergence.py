@@ -12,8 +12,11 @@ spectrum predicts for pentagon preservation
 (:func:`pentanb.analysis.convergence.predicted_crease_rate`), drawn through
 the rabbit's last level.  Its panels are charts: :func:`panels` is empty.
 
-A falling crease angle is necessary for a G1 limit, not sufficient: the
-claims here test that necessary condition only, on every mesh of the study
+A G1 limit needs the crease angles to tend to 0 (necessary, not
+sufficient); an angle that falls at every level is evidence of that, but
+neither necessary (it may fall unevenly and still tend to 0) nor enough (it
+may fall towards a positive limit).  The claims here test that the largest
+crease angle falls at every level, on every mesh of the study
 (four levels; the rabbit five, its creases under pentagon preservation
 falling at the slow rate the spectrum of a triangle predicts).  The
 uniformity under more and more duals on fixed connectivity is measured on
@@ -197,8 +200,8 @@ RECORDED_UNIFORM = {
 CREASE_READING = (
     "a G1 limit needs the angle between neighbouring faces to tend to 0 everywhere as the "
     "levels go on; read as the part of it that can be measured: the largest crease angle of "
-    "the mesh (at the extraordinary vertices or elsewhere) falls at every level (necessary "
-    "for G1, not sufficient)"
+    "the mesh (at the extraordinary vertices or elsewhere) falls at every level (evidence "
+    "that it tends to 0, which G1 needs; neither necessary nor sufficient for G1)"
 )
 
 

@@ -9,8 +9,10 @@ itself by a fixed local subdivision matrix
 modulus, are in Reif's *standard setting* when ``1 = lambda0 > |lambda1| =
 |lambda2| > |lambda3|`` (Reif 1995; Peters and Reif, *Subdivision
 Surfaces*, 2008, Ch. 5): the setting in which a regular, injective
-characteristic map makes the surface C1 there.  It is sufficient (with the
-map), not necessary; what rules a tangent plane out, for generic control
+characteristic map makes the surface C1 there, given a C1 surface on the
+rings.  It is a hypothesis of Reif's sufficient condition, not sufficient by
+itself (the condition needs the map and the rings too), and not necessary;
+what rules a tangent plane out, for generic control
 points, is a simple ``lambda1`` whose eigenvector is invariant under the
 turn by one sector (Fourier mode 0), or three or more eigenvalues of the
 subdominant modulus.

@@ -385,6 +385,15 @@ def ngonalization_exists_with_boundary(n: int) -> bool:
     whose hexagons fail on the sphere): a boundary absorbs what the sphere's
     curvature cannot.
 
+    This is counting, not a scheme.  For ``n = 6`` it allows hexagon
+    *preservation* on open surfaces, but no *local* hexagon conversion
+    scheme can exist, open meshes or not: a local scheme makes each output
+    face from a bounded neighbourhood of the input, so one that turned
+    every open mesh into hexagons would, on a large sphere mesh, make every
+    face as it does on the disk left by removing a face far from it, and
+    give the sphere an all-hexagon mesh, which :func:`ngonalization_exists`
+    rules out.
+
     Parameters
     ----------
     n : int
