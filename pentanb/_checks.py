@@ -10,9 +10,10 @@ Every public function checks its arguments here before any work starts:
 * :func:`number` -- a real number (not a bool, not a string) in a range.
 * :func:`callback` -- a callable, or one of a few accepted constants.
 * :func:`steps` -- at most :data:`MAX_STEPS` operations in one call.
-* :func:`shown` and :func:`excerpt` -- values and strings quoted in a
-  message without echoing megabytes of them (a 5,000-digit integer or a
-  100,000-character string is described, not printed).
+* :func:`shown`, :func:`excerpt` and :func:`bounded` -- values, strings and
+  whole messages quoted in a message without echoing megabytes of them (a
+  5,000-digit integer or a 100,000-character string is described, not
+  printed).
 
 Imports nothing from pentanb (numpy only), so every module may use it.
 """
@@ -26,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["MAX_STEPS", "count", "number", "callback", "steps", "shown", "excerpt"]
+__all__ = ["MAX_STEPS", "count", "number", "callback", "steps", "shown", "excerpt", "bounded"]
 
 #: Most steps (remeshings and duals together) one call may take: more would
 #: run for hours without the counts changing (duals, or triangulate after
@@ -229,3 +230,32 @@ def excerpt(text: str, start: int, stop: int | None = None, width: int = 24) -> 
     return repr(f"{lead}{before}[{part}]{after}{tail}") + (
         f" (at position {start:,} of {len(text):,} characters)"
     )
+
+
+#: The longest error message :func:`bounded` lets through whole.
+MAX_MESSAGE = 2_000
+
+
+def bounded(message: str, limit: int = MAX_MESSAGE) -> str:
+    """An error message of at most about ``limit`` characters.
+
+    A longer one (a face of a million indices listed whole) keeps its start
+    and its end, each about ``limit // 2`` characters, and says how long
+    it was: ``"... [1,234,567 characters in all] ..."``.
+
+    Parameters
+    ----------
+    message : str
+        The message.
+    limit : int
+        The most characters kept whole.
+
+    Returns
+    -------
+    str
+        ``message`` itself when it is short enough, else its excerpt.
+    """
+    if len(message) <= limit:
+        return message
+    half = limit // 2
+    return f"{message[:half]} ... [{len(message):,} characters in all] ... {message[-half:]}"

@@ -536,3 +536,15 @@ def test_the_default_limit_counts_the_address_space_limit(tmp_path, monkeypatch)
 def test_the_step_cap_is_one_constant():
     assert pentanb.subdivision.MAX_STEPS == MAX_STEPS == 100_000
     assert re.search(r"MAX_STEPS", smoothing.smooth.__doc__)
+
+
+def test_bounded_keeps_a_short_message_and_cuts_a_long_one():
+    from pentanb._checks import bounded
+
+    assert bounded("face 3 repeats vertex 2") == "face 3 repeats vertex 2"
+    long = "face 0 [" + ", ".join(["0, 1, 2"] * 300_000) + "] repeats vertex 0"
+    cut = bounded(long)
+    assert len(cut) < 2_100
+    assert cut.startswith("face 0 [0, 1, 2") and cut.endswith("repeats vertex 0")
+    assert f"[{len(long):,} characters in all]" in cut
+    assert bounded("x" * 50, limit=10) == "xxxxx ... [50 characters in all] ... xxxxx"

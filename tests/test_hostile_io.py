@@ -624,3 +624,16 @@ def test_binary_stl_write_checks_exactly_when_the_quick_check_is_unsure(tmp_path
     triangles, _ = m.fan_triangles()
     back = read(tmp_path / "m.stl")
     assert np.array_equal(back.vertices[back.corners], m.vertices[triangles.ravel()])
+
+
+# ---------------------------------------------------------------- bounded messages
+def test_a_huge_face_that_repeats_a_vertex_gets_a_bounded_message():
+    """Issue 38, item 13: a face of 10**6 indices once gave a message of megabytes."""
+    face = " ".join(["1 2 3 4"] * 250_000)
+    text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf " + face + "\n"
+    with pytest.raises(MeshError) as info:
+        read(io.BytesIO(text.encode()), format="obj")
+    message = str(info.value)
+    assert len(message) < 2_200
+    assert message.startswith("<BytesIO>: face 0")
+    assert "characters in all]" in message

@@ -37,6 +37,7 @@ from typing import IO, Any
 
 import numpy as np
 
+from .._checks import bounded
 from ..mesh import Mesh, MeshError
 from ..mesh import check_mesh as check_mesh  # (the readers and writers take it from here)
 from ..mesh.build import adopted
@@ -673,12 +674,13 @@ def finish(path: Path, vertices: np.ndarray, corners: np.ndarray, offsets: np.nd
     Raises
     ------
     MeshError
-        The mesh's own message, prefixed with the file name.
+        The mesh's own message, prefixed with the file name, and cut to an
+        excerpt with its length when it is long (:func:`pentanb._checks.bounded`).
     """
     try:
         mesh = adopted(vertices, corners, offsets)
     except MeshError as exc:
-        raise MeshError(f"{path}: {exc}") from None
+        raise MeshError(bounded(f"{path}: {exc}")) from None
     return mesh
 
 
