@@ -84,16 +84,16 @@ def student_version(
         If a notebook cannot be read or ``out_dir`` cannot be written.
     """
     force = check_force(force, "student_version")
+    if not os.fspath(out_dir).strip():
+        raise ValueError(
+            "student_version: the output folder's name is empty; name a folder "
+            "(use '.' for the current one, if it is not the teacher's)"
+        )
     paths = _default_notebooks() if notebooks is None else [Path(p) for p in notebooks]
     if not paths:
         raise ValueError(
             "student_version: no notebooks found (run it from a clone of the repository, "
             "or pass notebooks=)"
-        )
-    if not os.fspath(out_dir).strip():
-        raise ValueError(
-            "student_version: the output folder's name is empty; name a folder "
-            "(use '.' for the current one, if it is not the teacher's)"
         )
     out = Path(out_dir)
     names: dict[str, Path] = {}
