@@ -94,12 +94,12 @@ _ABSOLUTE = 2**62
 #: module's docstring for how these were measured.
 REMESH: dict[str, float] = {
     "pentagonalize": 1.2,
-    "preserve_pentagons": 1.1,
+    "preserve_pentagons": 1.2,
     "triangulate": 1.5,
     "loop_remesh": 1.4,
     "sqrt3_remesh": 1.2,
     "vertex_insertion": 1.4,
-    "corner_cutting": 1.5,
+    "corner_cutting": 1.6,
     "preserve_hexagons": 1.9,
     "honeycomb": 1.6,
 }

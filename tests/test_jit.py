@@ -607,25 +607,6 @@ def tri(m: pentanb.Mesh) -> tuple[np.ndarray, list[list[int]]]:
     return m.vertices, [[f[0], f[i], f[i + 1]] for f in m.faces for i in range(1, len(f) - 1)]
 
 
-@pytest.mark.slow
-@pytest.mark.parametrize("dt", [np.int32, np.int64])
-def test_the_open_rings_are_the_numpy_ones_in_either_index_dtype(compiled, dt):
-    # the producers written for an output of int64 indices (a mesh of more
-    # than 2**31 corners) take the input's int32 arrays as they are
-    from pentanb.schemes import pentagonal
-
-    m = holed(reverse=True)
-    for rings_of, p, H_out in (
-        (pentagonal._pentagonalized_open_rings, 3, 5 * m.n_halfedges),
-        (pentagonal._preserved_open_rings, 2, 6 * m.n_halfedges),
-    ):
-        B = m.n_boundary_edges
-        hole = (H_out + np.random.default_rng(p).permutation(p * B)).reshape(B, p)
-        a, b = both(lambda f=rings_of, hole=hole: rings(f(fresh(m), hole, np.dtype(dt))))
-        for x, y in zip(a, b):
-            assert same_bytes(x, y) and x.dtype == dt
-
-
 def rings(made):
     """The rings and offsets a producer made (with the faces of its entries or not)."""
     return made["vertex_ring"] if isinstance(made, dict) else made

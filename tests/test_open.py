@@ -1208,23 +1208,6 @@ def test_a_running_sum_of_a_few_places_is_the_cumulative_sum(places):
     assert got.dtype == np.int32 and got.tolist() == np.cumsum(dense).tolist()
 
 
-@pytest.mark.parametrize("block", [1, 2, 5, 64])
-@pytest.mark.parametrize("name", ["holed grid", "open disk", "torus without three faces"])
-def test_pentagonalizations_open_rings_are_the_derived_ones_whatever_the_edge_blocks(
-    name, block, monkeypatch
-):
-    # the numpy path writes the trisection points' rings edge block by edge
-    # block: blocks with and without boundary edges, of one edge or more
-    from pentanb.schemes import pentagonal
-
-    monkeypatch.setattr(pentagonal, "EDGE_BLOCK", block)
-    out = pb.pentagonalize(WRITTEN[name]())
-    assert out.n_halfedges < pb._jit.MIN_CORNERS  # (the numpy path)
-    ring, off = out.vertex_ring
-    want, want_off = Mesh(out.vertices, face_lists(out)).vertex_ring
-    assert ring.tolist() == want.tolist() and off.tolist() == want_off.tolist()
-
-
 @pytest.mark.parametrize("block", [1, 2, 7, 64])
 @pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons", None])
 @pytest.mark.parametrize("name", ["holed grid", "open disk", "annulus"])
@@ -1272,26 +1255,6 @@ def test_open_outputs_connectivity_is_the_same_whichever_is_asked_for_first(name
     assert out.twin.tolist() == made.twin.tolist() and out.twin.dtype == made.twin.dtype
     assert out.boundary_halfedges.tolist() == made.boundary_halfedges.tolist()
     assert _loops(out) == _loops(made)
-
-
-@pytest.mark.parametrize("scheme", ["pentagonalize", "preserve_pentagons"])
-def test_the_dual_of_an_open_scheme_output_does_not_write_its_twins(scheme, monkeypatch):
-    from pentanb.schemes import pentagonal
-
-    m = WRITTEN["holed grid"]()
-    want = pb.dual(Mesh(*_arrays(pb.SCHEMES[scheme](m))))
-
-    def refused(*args):
-        raise AssertionError("the output's twins were written")
-
-    monkeypatch.setattr(pentagonal, "_pentagonalized_open_twin", refused)
-    monkeypatch.setattr(pentagonal, "_preserved_open_twin", refused)
-    out = pb.SCHEMES[scheme](m)
-    got = pb.dual(out)
-    assert face_lists(got) == face_lists(want)
-    assert np.array_equal(got.vertices, want.vertices)
-    with pytest.raises(AssertionError, match="twins were written"):
-        out.twin  # noqa: B018 - (the check above can fail)
 
 
 def _arrays(m: Mesh) -> tuple[np.ndarray, list[list[int]]]:

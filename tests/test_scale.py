@@ -304,7 +304,7 @@ def test_face_means_with_a_few_shorter_faces_are_numpys_sums_bit_for_bit(few):
 
 
 # ====================================================================== operators' hand-over
-HANDED_OVER = [n for n in pentanb.SCHEMES if n not in ("pentagonalize", "triangulate")]
+HANDED_OVER = [n for n in pentanb.SCHEMES if n != "triangulate"]  # (it keeps triangles)
 
 
 @pytest.mark.parametrize("name", HANDED_OVER)
@@ -315,12 +315,6 @@ def test_twins_and_rings_handed_over_are_the_derived_ones(corpus_mesh, name):
     assert np.array_equal(out.twin, again.twin)
     for a, b in zip(out.vertex_ring, again.vertex_ring):
         assert np.array_equal(a, b)  # the same start: the dual's faces start there
-
-
-def test_pentagonalize_hands_over_twins_and_rings(corpus_mesh):
-    out = pentanb.pentagonalize(corpus_mesh)
-    assert "twin" in out._shared.producers and "vertex_ring" in out._shared.producers
-    check_valid(out)  # twins equal, rings equal up to their start
 
 
 def test_a_slot_of_a_handed_over_twin_that_is_wrong_is_caught():

@@ -47,25 +47,14 @@ _Op = TypeVar("_Op", bound=Callable[..., Mesh])
 BLOCK = 1 << 13
 
 
-#: Room an open output keeps after its corners and after its offsets, per
-#: boundary half-edge of the output, for the faces its dual of a dual adds
-#: (:class:`pentanb.mesh.build.Room`): a quad along the half-edge, and at most
-#: one more quad where it ends at a corner; one face for each.
-ROOM_CORNERS, ROOM_OFFSETS = 8, 2
-
-
-def with_room(size: int, boundary: int, per: int, dtype: np.dtype) -> np.ndarray:
-    """An empty buffer of ``size`` entries and ``per`` more for each of an open
-    output's ``boundary`` half-edges (its array is the first ``size``)."""
-    return np.empty(size + per * boundary, dtype=dtype)
-
-
 def index_dtype(n_vertices: int, n_corners: int) -> np.dtype:
     """The dtype of an output's index arrays (int32 when its counts allow)."""
     return _index_dtype(n_vertices, n_corners)
 
 
-def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray:
+def edge_points(
+    mesh: Mesh, k: int, out: np.ndarray | None = None, t: np.ndarray | None = None
+) -> np.ndarray:
     """Points splitting every edge into ``k + 1`` equal parts.
 
     Parameters
@@ -74,6 +63,8 @@ def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray
     k : int
     out : (E * k, 3) float, optional
         Where to write them (a block of an operator's output positions).
+    t : (k,) float, optional
+        The fractions, from the smaller vertex (``(j + 1) / (k + 1)`` by default).
 
     Returns
     -------
@@ -85,7 +76,8 @@ def edge_points(mesh: Mesh, k: int, out: np.ndarray | None = None) -> np.ndarray
     edges, v = mesh.edges, mesh.vertices
     E = edges.shape[0]
     res = np.empty((E * k, 3)) if out is None else out
-    t = np.arange(1, k + 1, dtype=np.float64) / (k + 1)
+    if t is None:
+        t = np.arange(1, k + 1, dtype=np.float64) / (k + 1)
     jit = _jit.kernels(2 * E)
     if jit is not None and v.flags.c_contiguous:  # the same products and sums, compiled
         jit.edge_points(v, edges, t, res)
@@ -153,28 +145,6 @@ def concat_faces(*parts: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.
         offs.append(o[1:].astype(np.int64) + shift)
         shift += int(o[-1])
     return corners, np.concatenate(offs)
-
-
-def affine(part: np.ndarray, scale: int, add: int, dt: np.dtype) -> np.ndarray:
-    """``scale * part + add`` as a new contiguous array of dtype ``dt``."""
-    col = part.astype(dt, copy=True)
-    if scale != 1:
-        col *= scale
-    if add:
-        col += add
-    return col
-
-
-def columns(dt: np.dtype, rows: int, *cols: np.ndarray | int) -> np.ndarray:
-    """A (rows, len(cols)) array whose column s is ``cols[s]`` (an array or an int).
-
-    Written one column at a time: numpy is slow on arrays whose last axis
-    is short (``np.stack(..., axis=1)`` of a few long columns).
-    """
-    out = np.empty((rows, len(cols)), dtype=dt)
-    for s, col in enumerate(cols):
-        out[:, s] = col
-    return out
 
 
 def inverse(ring: np.ndarray) -> np.ndarray:
@@ -416,18 +386,6 @@ def face_of(offsets: np.ndarray, h: np.ndarray) -> np.ndarray:
     return f
 
 
-def boundary_prev(offsets: np.ndarray, h: np.ndarray, k: int = 0) -> np.ndarray:
-    """(k,) int64: ``prev[h]`` of a few half-edges ``h``, from the faces' offsets alone
-    (``k``: every face has k sides, when the caller knows it; 0: read the offsets)."""
-    h = np.asarray(h, dtype=np.int64)
-    if k:
-        return np.where(h % k == 0, h + (k - 1), h - 1)
-    o = np.asarray(offsets)
-    f = face_of(o, h)
-    first = o[f].astype(np.int64)
-    return np.where(h == first, o[f + 1].astype(np.int64) - 1, h - 1)
-
-
 def boundary_next(offsets: np.ndarray, h: np.ndarray, k: int = 0) -> np.ndarray:
     """(k,) int64: ``next[h]`` of a few half-edges ``h``, from the faces' offsets alone
     (``k``: every face has k sides, when the caller knows it; 0: read the offsets)."""
@@ -440,38 +398,6 @@ def boundary_next(offsets: np.ndarray, h: np.ndarray, k: int = 0) -> np.ndarray:
     f = face_of(o, h)
     last = o[f + 1].astype(np.int64) - 1
     return np.where(h == last, o[f].astype(np.int64), h + 1)
-
-
-def remeshed(
-    mesh: Mesh,
-    vertices: np.ndarray,
-    corners: np.ndarray,
-    offsets: np.ndarray,
-    dt: np.dtype,
-    twin_of: Callable[[Any, np.dtype], np.ndarray],
-    rings_of: Callable[[Any, np.dtype], Rings | Several],
-    size_counts: tuple[tuple[int, int], ...] | None = None,
-) -> Mesh:
-    """:func:`output` of a remeshing of ``mesh``, its connectivity written from ``mesh``'s.
-
-    The output's twins and vertex rings are ``twin_of(faces, dt)`` and
-    ``rings_of(faces, dt)``, run only when first asked for, ``faces`` being
-    ``mesh``'s faces without its positions (so the output does not keep
-    them alive).  Those write a closed mesh's; an open mesh's output derives
-    them from its faces.
-    """
-    if not mesh.is_closed:
-        return output(vertices, corners, offsets, size_counts=size_counts)
-    faces = _mesh.faces_only(mesh)
-    return output(
-        vertices,
-        corners,
-        offsets,
-        twin=lambda: twin_of(faces, dt),
-        rings=lambda: rings_of(faces, dt),
-        size_counts=size_counts,
-        closed=True,
-    )
 
 
 def scale_safe(op: _Op) -> _Op:

@@ -52,24 +52,18 @@ import numpy as np
 
 from .. import _jit
 from ..mesh import Mesh
-from ..mesh import build as _mesh
 from ._build import (
-    affine,
     check_mesh,
     check_scale,
     check_vertex_faces,
-    columns,
     corner_ids,
-    edge_points,
     fixed_size,
     index_dtype,
-    inverse,
     open_vertex_faces,
     output,
-    remeshed,
     scale_safe,
-    start_at_max,
 )
+from .table import Table
 
 __all__ = [
     "triangulate",
@@ -121,19 +115,85 @@ def triangulate(mesh: Mesh) -> Mesh:
     return output(vertices, corners, offsets, closed=mesh.is_closed)
 
 
-@scale_safe
-def loop_remesh(mesh: Mesh) -> Mesh:
-    """Loop's remeshing (Figure 3): a triangle-preserving scheme on any mesh.
+#: Figure 3: "we first subdivide every edge at its midpoint and connect these
+#: midpoints to create a central face in the middle of each original face and
+#: triangles in each corner."
+LOOP = Table(
+    "loop_remesh",
+    label="Loop remeshing",
+    edge_points=(0.5,),
+    faces=(
+        ("face", ("E0",)),  # the central face: the midpoints, in face order
+        ("halfedge", ("E0", "n:V", "n:E0")),  # the corner triangle (m_h, w, m_next)
+    ),
+)
 
-    "We first subdivide every edge at its midpoint and connect these
-    midpoints to create a central face in the middle of each original face
-    and triangles in each corner."
+#: sqrt(3)'s remeshing: a centroid fan, then every old edge flipped: half-edge
+#: h = (u, w) of face f, its twin in face g, gives (u, c_g, c_f); on the boundary
+#: (no face across) the edge is kept: (u, w, c_f).
+SQRT3 = Table(
+    "sqrt3_remesh",
+    label="sqrt(3) remeshing",
+    face_points=True,
+    faces=(("halfedge", ("V", "t:F|n:V", "F")),),
+)
+
+#: Catmull-Clark's remeshing: a point on every edge and face; every n-gon gives
+#: n quads (m_h, w, m_next, c_f).
+VERTEX_INSERTION = Table(
+    "vertex_insertion",
+    label="Vertex insertion (Catmull-Clark)",
+    edge_points=(0.5,),
+    face_points=True,
+    faces=(("halfedge", ("E0", "n:V", "n:E0", "F")),),
+)
+
+#: Doo-Sabin's remeshing (closed meshes; the open boundary rule is below): a
+#: point per corner, c_f + scale (v - c_f); a copy of every face, a quad across
+#: every edge, a face round every vertex.
+CORNER_CUTTING = Table(
+    "corner_cutting",
+    label="Corner cutting (Doo-Sabin)",
+    vertices=False,
+    corner_points=("V", "scale"),
+    options={"scale": 0.5},
+    faces=(
+        ("face", ("C",)),  # the face's copy
+        ("edge", ("n:C", "C", "tn:C", "t:C")),  # the quad between the copies across h
+        ("vertex", ("C",)),  # the vertex's face, through its corners' points
+    ),
+)
+
+#: The dual of Loop's remeshing (closed meshes; the open rule is below): every
+#: face's copy, and a hexagon (k(b,f), k(a,f), a, k(a,g), k(b,g), b) per edge.
+PRESERVE_HEXAGONS = Table(
+    "preserve_hexagons",
+    label="Hexagon preservation (dual of Loop)",
+    corner_points=("V", "scale"),
+    options={"scale": 0.5},
+    faces=(("face", ("C",)), ("edge", ("n:C", "C", "V", "tn:C", "t:C", "t:V"))),
+)
+
+#: The dual of sqrt(3)'s remeshing (closed meshes; the open rule is below): a
+#: point per half-edge at the centroid of (u, w, c_f); every face's copy, and a
+#: 2k-gon round every k-valent vertex.
+HONEYCOMB = Table(
+    "honeycomb",
+    label="Honeycomb (dual of sqrt(3))",
+    vertices=False,
+    face_points=False,
+    corner_points={"V": 1 / 3, "n:V": 1 / 3, "F": 1 / 3},
+    faces=(("face", ("C",)), ("vertex", ("C", "p:C"))),
+)
+
+
+def loop_remesh(mesh: Mesh) -> Mesh:
+    """Loop's remeshing (Figure 3): a triangle-preserving scheme on any mesh (:data:`LOOP`).
 
     Parameters
     ----------
     mesh : Mesh
-        A manifold polygon mesh, closed or open (the module docstring says
-        what a boundary edge becomes).
+        A manifold polygon mesh, closed or open (every edge split at its midpoint).
 
     Returns
     -------
@@ -142,65 +202,11 @@ def loop_remesh(mesh: Mesh) -> Mesh:
         the central faces (one n-gon per n-gon) then the corner triangles
         ``(m_h, w, m_next)``.
     """
-    check_mesh(mesh, "loop_remesh")
-    n, E, H = mesh.n_vertices, mesh.n_edges, mesh.n_halfedges
-    dt = index_dtype(n + E, 4 * H)
-    mid = affine(mesh.halfedge_edge, 1, n, dt)
-    corners = np.empty(4 * H, dtype=dt)
-    corners[:H] = mid
-    corners[H:].reshape(H, 3)[:] = columns(dt, H, mid, mesh.head, mid[mesh.next])
-    offsets = np.concatenate([mesh.offsets, np.arange(H + 3, 4 * H + 1, 3, dtype=dt)])
-    vertices = np.empty((n + E, 3))
-    vertices[:n] = mesh.vertices
-    edge_points(mesh, 1, out=vertices[n:])
-    return remeshed(mesh, vertices, corners, offsets, dt, _loop_twin, _loop_rings)
+    return LOOP(mesh)
 
 
-def _loop_twin(m, dt: np.dtype) -> np.ndarray:
-    """Twins of ``loop_remesh``: central h and ``H + 3h + 2``; ``H + 3h`` and
-    ``H + 3 prev[twin[h]] + 1``."""
-    H = m.n_halfedges
-    nxt, prv, twin = m.next, m.prev, m.twin
-    tri = columns(
-        dt, H, affine(prv[twin], 3, H + 1, dt), affine(twin[nxt], 3, H, dt), np.arange(H, dtype=dt)
-    )
-    return np.concatenate([np.arange(H + 2, 4 * H, 3, dtype=dt), tri.reshape(-1)])
-
-
-def _loop_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
-    """Rings of ``loop_remesh``: old vertex ``H + 3 prev[h] + 1`` for its h; midpoint
-    of edge e (forward h, twin t):
-    ``H + 3h, h, H + 3 prev[h] + 2, H + 3t, t, H + 3 prev[t] + 2``."""
-    H, E = m.n_halfedges, m.n_edges
-    prv, twin = m.prev, m.twin
-    ring, ring_off = m.vertex_ring
-    h = m.edge_halfedge
-    t = twin[h]
-    mids = columns(
-        dt,
-        E,
-        affine(h, 3, H, dt),
-        h,
-        affine(prv[h], 3, H + 2, dt),
-        affine(t, 3, H, dt),
-        t,
-        affine(prv[t], 3, H + 2, dt),
-    )
-    rings = np.concatenate(
-        [
-            start_at_max(affine(prv[ring], 3, H + 1, dt), ring_off),
-            start_at_max(mids.reshape(-1), None, 6),
-        ]
-    )
-    offsets = np.concatenate([ring_off, np.arange(H + 6, H + 6 * E + 1, 6, dtype=dt)])
-    return rings, offsets
-
-
-@scale_safe
 def sqrt3_remesh(mesh: Mesh) -> Mesh:
-    """The remeshing of sqrt(3) subdivision: a centroid fan, then every old edge flipped.
-
-    A triangulization (conversion) scheme: the result is all triangles.
+    """The remeshing of sqrt(3) subdivision (:data:`SQRT3`), a triangulization.
 
     Parameters
     ----------
@@ -215,123 +221,24 @@ def sqrt3_remesh(mesh: Mesh) -> Mesh:
         ``(u, c_g, c_f)`` for every half-edge ``h = (u, w)`` of face f whose
         twin lies in face g.
     """
-    check_mesh(mesh, "sqrt3_remesh")
-    n, F, H = mesh.n_vertices, mesh.n_faces, mesh.n_halfedges
-    dt = index_dtype(n + F, 3 * H)
-    c = affine(mesh.halfedge_face, 1, n, dt)
-    if mesh.is_closed:
-        tris = columns(dt, H, mesh.corners, c[mesh.twin], c)
-    else:  # a boundary half-edge (u, w) of f keeps its edge: (u, w, c_f)
-        twin = mesh.twin
-        across = np.where(twin < H, c[np.minimum(twin, H - 1)], mesh.head.astype(dt))
-        tris = columns(dt, H, mesh.corners, across, c)
-    corners, offsets = fixed_size(tris)
-    vertices = np.empty((n + F, 3))
-    vertices[:n] = mesh.vertices
-    vertices[n:] = mesh.face_centroids
-    return remeshed(mesh, vertices, corners, offsets, dt, _sqrt3_twin, _sqrt3_rings)
+    return SQRT3(mesh)
 
 
-def _sqrt3_twin(m, dt: np.dtype) -> np.ndarray:
-    """Twins of ``sqrt3_remesh``: ``3h`` and ``3 next[twin[h]] + 2``; ``3h + 1`` and
-    ``3 twin[h] + 1``; ``3h + 2`` and ``3 twin[prev[h]]``."""
-    H = m.n_halfedges
-    twin = m.twin
-    return columns(
-        dt, H, affine(m.next[twin], 3, 2, dt), affine(twin, 3, 1, dt), affine(m.rotation, 3, 0, dt)
-    ).reshape(-1)
-
-
-def _sqrt3_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
-    """Rings of ``sqrt3_remesh``: old vertex ``3h`` for its h; centroid of f
-    ``3h + 2, 3 twin[h] + 1`` for f's half-edges in order."""
-    H = m.n_halfedges
-    ring, ring_off = m.vertex_ring
-    centre = columns(dt, H, np.arange(2, 3 * H, 3, dtype=dt), affine(m.twin, 3, 1, dt))
-    rings = np.concatenate(
-        [
-            start_at_max(affine(ring, 3, 0, dt), ring_off),
-            start_at_max(centre.reshape(-1), 2 * m.offsets.astype(np.int64)),
-        ]
-    )
-    offsets = np.concatenate([ring_off, H + 2 * m.offsets[1:].astype(dt)])
-    return rings, offsets
-
-
-@scale_safe
 def vertex_insertion(mesh: Mesh) -> Mesh:
-    """Catmull-Clark's remeshing (vertex insertion), a quadrilateralization.
-
-    A point on every edge midpoint and at every face centroid; every n-gon
-    becomes n quads ``(m_h, w, m_next, c_f)``.
+    """Catmull-Clark's remeshing, a quadrilateralization (:data:`VERTEX_INSERTION`).
 
     Parameters
     ----------
     mesh : Mesh
-        A manifold polygon mesh, closed or open (the module docstring says
-        what a boundary edge becomes).
+        A manifold polygon mesh, closed or open (every edge split at its midpoint).
 
     Returns
     -------
     Mesh
-        V + E + F vertices (old, midpoints, centroids), 4E edges, 2E quads.
+        V + E + F vertices (old, midpoints, centroids), 4E edges, 2E quads
+        ``(m_h, w, m_next, c_f)``.
     """
-    check_mesh(mesh, "vertex_insertion")
-    n, E, F, H = mesh.n_vertices, mesh.n_edges, mesh.n_faces, mesh.n_halfedges
-    dt = index_dtype(n + E + F, 4 * H)
-    mid = affine(mesh.halfedge_edge, 1, n, dt)
-    quads = columns(dt, H, mid, mesh.head, mid[mesh.next], affine(mesh.halfedge_face, 1, n + E, dt))
-    corners, offsets = fixed_size(quads)
-    vertices = np.empty((n + E + F, 3))
-    vertices[:n] = mesh.vertices
-    edge_points(mesh, 1, out=vertices[n : n + E])
-    vertices[n + E :] = mesh.face_centroids
-    return remeshed(mesh, vertices, corners, offsets, dt, _insertion_twin, _insertion_rings)
-
-
-def _insertion_twin(m, dt: np.dtype) -> np.ndarray:
-    """Twins of ``vertex_insertion``: ``4h`` and ``4 prev[twin[h]] + 1``; ``4h + 2``
-    and ``4 next[h] + 3``."""
-    H = m.n_halfedges
-    nxt, prv, twin = m.next, m.prev, m.twin
-    return columns(
-        dt,
-        H,
-        affine(prv[twin], 4, 1, dt),
-        affine(twin[nxt], 4, 0, dt),
-        affine(nxt, 4, 3, dt),
-        affine(prv, 4, 2, dt),
-    ).reshape(-1)
-
-
-def _insertion_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
-    """Rings of ``vertex_insertion``: old vertex ``4 prev[h] + 1``; midpoint of e
-    (forward h, twin t) ``4h, 4 prev[h] + 2, 4t, 4 prev[t] + 2``; centroid of f
-    ``4h + 3`` for f's half-edges in order."""
-    H, E = m.n_halfedges, m.n_edges
-    prv, twin = m.prev, m.twin
-    ring, ring_off = m.vertex_ring
-    h = m.edge_halfedge
-    t = twin[h]
-    mids = columns(
-        dt,
-        E,
-        affine(h, 4, 0, dt),
-        affine(prv[h], 4, 2, dt),
-        affine(t, 4, 0, dt),
-        affine(prv[t], 4, 2, dt),
-    )
-    rings = np.concatenate(
-        [
-            start_at_max(affine(prv[ring], 4, 1, dt), ring_off),
-            start_at_max(mids.reshape(-1), None, 4),
-            start_at_max(np.arange(3, 4 * H, 4, dtype=dt), m.offsets),
-        ]
-    )
-    offsets = np.concatenate(
-        [ring_off, np.arange(H + 4, H + 4 * E + 1, 4, dtype=dt), 3 * H + m.offsets[1:].astype(dt)]
-    )
-    return rings, offsets
+    return VERTEX_INSERTION(mesh)
 
 
 def _corner_points(mesh: Mesh, scale: float) -> np.ndarray:
@@ -376,19 +283,7 @@ def corner_cutting(mesh: Mesh, scale: float = 0.5) -> Mesh:
     check_vertex_faces(mesh, "corner_cutting")
     if not mesh.is_closed:
         return _open_corner_cutting(mesh, s)
-    H, E = mesh.n_halfedges, mesh.n_edges
-    dt = index_dtype(H, 4 * H)
-    nxt, twin = mesh.next, mesh.twin
-    eh = mesh.edge_halfedge
-    t = twin[eh]
-    quads = columns(dt, E, nxt[eh], eh, nxt[t], t)
-    ring, ring_off = mesh.vertex_ring
-    corners = np.concatenate([np.arange(H, dtype=dt), quads.reshape(-1), ring.astype(dt)])
-    offsets = np.concatenate(
-        [mesh.offsets, np.arange(H + 4, 3 * H + 1, 4, dtype=dt), 3 * H + ring_off[1:].astype(dt)]
-    )
-    points = _corner_points(mesh, s)
-    return remeshed(mesh, points, corners, offsets, dt, _cutting_twin, _cutting_rings)
+    return CORNER_CUTTING(mesh, scale=s)
 
 
 def _open_corner_cutting(mesh: Mesh, s: float) -> Mesh:
@@ -436,65 +331,6 @@ def _open_corner_cutting(mesh: Mesh, s: float) -> Mesh:
     return output(points, corners, offsets)
 
 
-def _edge_slot(m, h: np.ndarray, per: int, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
-    """``H + per edge[h] + (forward if h is its edge's forward half-edge else backward)``:
-    the corner of a face made for every edge (``per`` corners each, after the H
-    copied ones)."""
-    col = affine(m.halfedge_edge[h], per, m.n_halfedges + backward, dt)
-    if forward != backward:  # (one byte per half-edge, not a where() of ints)
-        col += _mesh.forward(m)[h].view(np.int8) * np.int8(forward - backward)
-    return col
-
-
-def _quad_slot(m, h: np.ndarray, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
-    """The corner of the quad of ``h``'s edge (see :func:`_edge_slot`)."""
-    return _edge_slot(m, h, 4, forward, backward, dt)
-
-
-def _cutting_twin(m, dt: np.dtype) -> np.ndarray:
-    """Twins of ``corner_cutting``.  Copy h and the quad of its edge (slot 0 for
-    the forward half-edge, 2 for the other); quad slots 1 and 3 and the vertex
-    faces: slot 1 of edge (h, t) is the twin of the vertex-face half-edge at
-    ``next[t]``, slot 3 of that at ``next[h]``."""
-    H = m.n_halfedges
-    nxt, twin = m.next, m.twin
-    ring, _ = m.vertex_ring
-    pos = inverse(ring)
-    eh = m.edge_halfedge
-    t = twin[eh]
-    h_all = np.arange(H, dtype=dt)
-    copies = _quad_slot(m, h_all, 0, 2, dt)
-    quads = columns(
-        dt, eh.size, eh, affine(pos[nxt[t]], 1, 3 * H, dt), t, affine(pos[nxt[eh]], 1, 3 * H, dt)
-    )
-    faces = _quad_slot(m, m.rotation[ring], 1, 3, dt)
-    return np.concatenate([copies, quads.reshape(-1), faces])
-
-
-def _cutting_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
-    """Rings of ``corner_cutting``: the point of h, ``3H + pos[h]``, its edge's
-    quad (slot 1 forward, 3 backward), h's copy, the quad of prev[h]'s edge
-    (slot 0 forward, 2 backward)."""
-    H = m.n_halfedges
-    ring, _ = m.vertex_ring
-    pos = inverse(ring.astype(dt, copy=False))
-    jit = _jit.kernels(4 * H)
-    if jit is not None:  # the same rings, written in one pass
-        edge, prv = m.halfedge_edge.astype(dt, copy=False), m.prev.astype(dt, copy=False)
-        rings = jit.cutting_rings(pos, edge, _mesh.forward(m), prv)
-        return rings, np.arange(0, 4 * H + 1, 4, dtype=dt)
-    h = np.arange(H, dtype=dt)
-    rings = columns(
-        dt,
-        H,
-        affine(pos, 1, 3 * H, dt),
-        _quad_slot(m, h, 1, 3, dt),
-        h,
-        _quad_slot(m, m.prev, 0, 2, dt),
-    )
-    return rings.reshape(-1), np.arange(0, 4 * H + 1, 4, dtype=dt)
-
-
 @scale_safe
 def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     """Hexagon preservation: the dual of Loop's remeshing (Conway's chamfer).
@@ -524,21 +360,7 @@ def preserve_hexagons(mesh: Mesh, scale: float = 0.5) -> Mesh:
     s = check_scale(scale)
     if not mesh.is_closed:
         return _open_hexagons(mesh, s)
-    n, H = mesh.n_vertices, mesh.n_halfedges
-    dt = index_dtype(n + 2 * mesh.n_edges, 4 * H)
-    k = np.arange(n, n + H, dtype=dt)
-    nxt, twin, tail = mesh.next, mesh.twin, mesh.corners
-    h = mesh.edge_halfedge
-    g = twin[h]
-    # h = (a, b) in face f, g = (b, a) in face g:
-    # hexagon (k(b,f), k(a,f), a, k(a,g), k(b,g), b)
-    hexagons = columns(dt, h.size, k[nxt[h]], k[h], tail[h], k[nxt[g]], k[g], tail[g])
-    corners = np.concatenate([k, hexagons.reshape(-1)])
-    offsets = np.concatenate([mesh.offsets, np.arange(H + 6, 4 * H + 1, 6, dtype=dt)])
-    vertices = np.empty((n + H, 3))
-    vertices[:n] = mesh.vertices
-    vertices[n:] = _corner_points(mesh, s)
-    return remeshed(mesh, vertices, corners, offsets, dt, _hexagons_twin, _hexagons_rings)
+    return PRESERVE_HEXAGONS(mesh, scale=s)
 
 
 def _open_hexagons(mesh: Mesh, s: float) -> Mesh:
@@ -585,56 +407,6 @@ def _open_hexagons(mesh: Mesh, s: float) -> Mesh:
     return output(vertices, corners, offsets)
 
 
-def _hex_slot(m, h: np.ndarray, forward: int, backward: int, dt: np.dtype) -> np.ndarray:
-    """The corner of the hexagon of ``h``'s edge (see :func:`_edge_slot`)."""
-    return _edge_slot(m, h, 6, forward, backward, dt)
-
-
-def _hexagons_twin(m, dt: np.dtype) -> np.ndarray:
-    """Twins of ``preserve_hexagons``: copy h and its edge's hexagon (slot 0 forward,
-    3 backward); slot 1 of (h, g) and the hexagon of prev[h] (slot 5 forward,
-    2 backward); slot 2 and that of next[g] (1, 4); slot 4 and prev[g] (5, 2);
-    slot 5 and next[h] (1, 4)."""
-    H = m.n_halfedges
-    nxt, prv, twin = m.next, m.prev, m.twin
-    h = m.edge_halfedge
-    g = twin[h]
-    hexagons = columns(
-        dt,
-        h.size,
-        h,
-        _hex_slot(m, prv[h], 5, 2, dt),
-        _hex_slot(m, nxt[g], 1, 4, dt),
-        g,
-        _hex_slot(m, prv[g], 5, 2, dt),
-        _hex_slot(m, nxt[h], 1, 4, dt),
-    )
-    return np.concatenate([_hex_slot(m, np.arange(H, dtype=dt), 0, 3, dt), hexagons.reshape(-1)])
-
-
-def _hexagons_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
-    """Rings of ``preserve_hexagons``: old vertex, for its h in order, its edge's
-    hexagon (slot 2 forward, 5 backward); copy vertex of h: h, the hexagon of
-    prev[h] (slot 0 forward, 3 backward), that of h (1 forward, 4 backward)."""
-    H = m.n_halfedges
-    ring, ring_off = m.vertex_ring
-    offsets = np.concatenate([ring_off, np.arange(H + 3, 4 * H + 1, 3, dtype=dt)])
-    jit = _jit.kernels(4 * H)
-    if jit is not None:  # the same rings, each written turned, in one pass
-        edge, prv = m.halfedge_edge.astype(dt, copy=False), m.prev.astype(dt, copy=False)
-        ring = ring.astype(dt, copy=False)
-        return jit.hexagons_rings(ring, ring_off, edge, _mesh.forward(m), prv), offsets
-    h = np.arange(H, dtype=dt)
-    copies = columns(dt, H, h, _hex_slot(m, m.prev, 0, 3, dt), _hex_slot(m, h, 1, 4, dt))
-    rings = np.concatenate(
-        [
-            start_at_max(_hex_slot(m, ring, 2, 5, dt), ring_off),
-            start_at_max(copies.reshape(-1), None, 3),
-        ]
-    )
-    return rings, offsets
-
-
 @scale_safe
 def honeycomb(mesh: Mesh) -> Mesh:
     """Honeycomb subdivision: the dual of sqrt(3)'s remeshing (Conway's zip).
@@ -661,20 +433,7 @@ def honeycomb(mesh: Mesh) -> Mesh:
     check_mesh(mesh, "honeycomb")
     if not mesh.is_closed:
         return _open_honeycomb(mesh)
-    H = mesh.n_halfedges
-    dt = index_dtype(H, 3 * H)
-    ring, ring_off = mesh.vertex_ring
-    # around vertex v: z(h_0), z(prev h_0), z(h_1), z(prev h_1), ...
-    vfaces = columns(dt, H, ring, mesh.prev[ring])
-    corners = np.concatenate([np.arange(H, dtype=dt), vfaces.reshape(-1)])
-    offsets = np.concatenate([mesh.offsets, H + 2 * ring_off[1:].astype(dt)])
-    v, centres = mesh.vertices, mesh.face_centroids
-    jit = _jit.kernels(H)
-    if jit is not None and v.flags.c_contiguous:  # the same sums, one pass, no temporaries
-        points = jit.honeycomb_points(v, mesh.corners, mesh.head, centres, mesh.halfedge_face)
-    else:
-        points = (v[mesh.corners] + v[mesh.head] + centres[mesh.halfedge_face]) / 3.0
-    return remeshed(mesh, points, corners, offsets, dt, _honeycomb_twin, _honeycomb_rings)
+    return HONEYCOMB(mesh)
 
 
 def _open_honeycomb(mesh: Mesh) -> Mesh:
@@ -701,31 +460,3 @@ def _open_honeycomb(mesh: Mesh) -> Mesh:
     points[H : H + B] = 0.5 * a + 0.5 * b
     points[H + B :] = v[at]
     return output(points, corners, offsets)
-
-
-def _honeycomb_twin(m, dt: np.dtype) -> np.ndarray:
-    """Twins of ``honeycomb``: copy h and ``H + 2 pos[next[h]]`` (the vertex-face
-    half-edge ``H + 2i``, from the point of ``ring[i]`` to that of its prev);
-    ``H + 2i + 1`` and ``H + 2 pos[next[twin[prev[ring[i]]]]] + 1``."""
-    H = m.n_halfedges
-    nxt = m.next
-    ring, _ = m.vertex_ring
-    pos = inverse(ring)
-    before = m.prev[ring]
-    faces = columns(dt, H, before, affine(pos[nxt[m.twin[before]]], 2, H + 1, dt))
-    return np.concatenate([affine(pos[nxt], 2, H, dt), faces.reshape(-1)])
-
-
-def _honeycomb_rings(m, dt: np.dtype) -> tuple[np.ndarray, np.ndarray]:
-    """Rings of ``honeycomb``: the point of h: ``h, H + 2 pos[h], H + 2 pos[next[h]] + 1``."""
-    H = m.n_halfedges
-    ring, _ = m.vertex_ring
-    pos = inverse(ring.astype(dt, copy=False))
-    jit = _jit.kernels(3 * H)
-    if jit is not None:  # the same rings, each written turned, in one pass
-        rings = jit.honeycomb_rings(pos, m.next.astype(dt, copy=False))
-        return rings, np.arange(0, 3 * H + 1, 3, dtype=dt)
-    rings = columns(
-        dt, H, np.arange(H, dtype=dt), affine(pos, 2, H, dt), affine(pos[m.next], 2, H + 1, dt)
-    )
-    return start_at_max(rings.reshape(-1), None, 3), np.arange(0, 3 * H + 1, 3, dtype=dt)
