@@ -21,6 +21,7 @@ from .notation import ConvergenceError, canonical, conway, planarize
 from .schemes import (
     SCHEMES,
     Scheme,
+    Table,
     corner_cutting,
     dual,
     honeycomb,
@@ -54,6 +55,7 @@ __all__ = [
     "subdivide",
     "SCHEMES",
     "Scheme",
+    "Table",
     "predict_counts",
     "max_iterations",
     "read",

@@ -104,6 +104,11 @@ REMESH: dict[str, float] = {
     "honeycomb": 1.6,
 }
 
+#: Peak of one iteration of a table of one's own (:class:`pentanb.Table`) per
+#: byte of its output: the engine's, the largest factor of the built-in tables
+#: (1.9) and a margin.
+TABLE = 2.2
+
 #: Peak of a dual per byte of its input and output together.
 DUAL = 1.7
 
@@ -125,11 +130,12 @@ def _iteration_bytes(s: Scheme, counts: Counts, duals: int, later: bool) -> int:
     """Peak bytes of one iteration on a mesh of ``counts`` (``later``: built by this call)."""
     V2, E2, F2 = s.counts(*counts)
     held = mesh_bytes(*counts) if later else 0
-    if s.name not in REMESH:  # Conway notation: several operators, not measured one by one
+    factor = REMESH.get(s.name, TABLE if s.table is not None else None)
+    if factor is None:  # Conway notation: several operators, not measured one by one
         return math.ceil(FIXED + held + UNKNOWN * _largest_mesh_bytes(max(E2, counts[1])))
     out = mesh_bytes(V2, E2, F2)
     # the same counts: the mesh is handed back as it is (triangulate, all triangles)
-    need = 0.0 if (V2, E2, F2) == tuple(counts) else REMESH[s.name] * out
+    need = 0.0 if (V2, E2, F2) == tuple(counts) else factor * out
     if duals:
         need = max(need, DUAL * (out + mesh_bytes(F2, E2, V2)))
     return math.ceil(FIXED + held + need)

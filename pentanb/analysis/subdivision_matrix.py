@@ -63,6 +63,7 @@ import numpy as np
 from .. import _checks
 from .. import schemes as _schemes
 from ..mesh import Mesh, MeshError
+from ..schemes.refs import parse_ref
 from ..schemes.registry import Scheme
 from ..subdivision import estimate_bytes, get_scheme, predict_counts, subdivide
 
@@ -227,11 +228,14 @@ class _Rows:
         r = np.arange(n, dtype=np.int64)
         self.add(r, r, np.full(n, self.weight(1), dtype=object if self.exact else np.float64), n)
 
-    def edge_points(self, mesh: Mesh, k: int) -> None:
-        """Rows ``k e + j`` at ``(j + 1) / (k + 1)`` from the edge's smaller vertex."""
+    def edge_points(self, mesh: Mesh, k: int, fractions=None) -> None:
+        """Rows ``k e + j`` at ``(j + 1) / (k + 1)`` (or ``fractions[j]``) from the
+        edge's smaller vertex."""
         E = mesh.n_edges
         a, b = mesh.edges[:, 0], mesh.edges[:, 1]
-        if self.exact:
+        if fractions is not None:
+            t = np.array(fractions, dtype=object if self.exact else np.float64)
+        elif self.exact:
             t = np.array([Fraction(j, k + 1) for j in range(1, k + 1)], dtype=object)
         else:
             t = np.arange(1, k + 1, dtype=np.float64) / (k + 1)
@@ -359,22 +363,50 @@ def _dual(mesh: Mesh, out: Mesh | None = None, *, exact: bool = False):
     return rows.matrix()
 
 
-def _pentagonalize(mesh: Mesh, out: Mesh, *, exact: bool = False):
-    r = _Rows(mesh.n_vertices, exact)
-    r.identity()
-    r.edge_points(mesh, 2)
-    r.centroids(mesh)
-    return r.matrix()
+def table_rows(table, mesh: Mesh, out: Mesh | None = None, *, exact: bool = False, **options):
+    """The matrix of a :class:`~pentanb.Table`, read off its points' weights.
 
-
-def _preserve_pentagons(mesh: Mesh, out: Mesh, scale: float = 0.75, *, exact: bool = False):
+    Its blocks in output order: the old vertices (identity), its edge points
+    at the table's fractions, the face centroids, and its corner points (a
+    face's polygon of V or of an edge point scaled about its centroid, or an
+    affine rule over V, ``n:V``, E points and F).  None for a rule beyond
+    these (a corner point over other half-edges): such a table is probed.
+    """
     r = _Rows(mesh.n_vertices, exact)
-    s = r.weight(scale)
-    r.identity()
-    r.edge_points(mesh, 1)
-    # copy of the midpoint of h about the face's centre (the mean of its
-    # edge midpoints, which is the mean of its vertices)
-    r.per_halfedge(mesh, s / 2, s / 2, 1 - s)
+
+    def frac(x: float):  # (1/3 given as a float is the fraction 1/3)
+        return Fraction(x).limit_denominator(10**6) if exact else float(x)
+
+    if table.vertices:
+        r.identity()
+    if table.edge_points:
+        r.edge_points(mesh, len(table.edge_points), [frac(t) for t in table.edge_points])
+    if table.face_points:
+        r.centroids(mesh)
+    cp = table.corner_points
+    if cp is None:
+        return r.matrix()
+    w = {"tail": 0 * frac(0), "head": 0 * frac(0), "centre": 0 * frac(0)}
+    if isinstance(cp, dict):
+        terms = [(parse_ref(k, table.name), frac(v)) for k, v in cp.items()]
+    else:
+        elem, scale = cp
+        sc = r.weight(
+            options.get(scale, table.options.get(scale)) if isinstance(scale, str) else scale
+        )
+        terms = [(parse_ref(elem, table.name), sc), (parse_ref("F", table.name), 1 - sc)]
+    for ref, x in terms:
+        if ref.path not in ("", "n") or (ref.path == "n" and ref.elem != "V"):
+            return None
+        if ref.elem == "F":
+            w["centre"] += x
+        elif ref.elem == "V":
+            w["head" if ref.path else "tail"] += x
+        else:  # E_j of h: (1 - t) tail + t head
+            t = frac(table.edge_points[ref.j])
+            w["tail"] += x * (1 - t)
+            w["head"] += x * t
+    r.per_halfedge(mesh, w["tail"], w["head"], w["centre"])
     return r.matrix()
 
 
@@ -442,26 +474,35 @@ def _honeycomb(mesh: Mesh, out: Mesh, *, exact: bool = False):
 
 
 _RULES: dict[Callable, Callable] = {
-    _schemes.pentagonalize: _pentagonalize,
-    _schemes.preserve_pentagons: _preserve_pentagons,
     _schemes.triangulate: _triangulate,
-    _schemes.loop_remesh: _loop_remesh,
-    _schemes.sqrt3_remesh: _sqrt3_remesh,
-    _schemes.vertex_insertion: _vertex_insertion,
     _schemes.corner_cutting: _corner_cutting,
     _schemes.preserve_hexagons: _preserve_hexagons,
     _schemes.honeycomb: _honeycomb,
     _schemes.dual: _dual,
 }
 
-#: Names of the registered schemes whose matrix is written from their rules
-#: (every other callable is probed).
-RULE_SCHEMES = tuple(s.name for s in _schemes.SCHEMES.values() if s.func in _RULES)
+#: Names of the registered schemes whose matrix is written from their rules or
+#: their tables' weights (every other callable is probed).
+RULE_SCHEMES = tuple(
+    s.name for s in _schemes.SCHEMES.values() if s.func in _RULES or s.table is not None
+)
 
 
 def _rule_of(scheme) -> Callable | None:
     func = scheme.func if isinstance(scheme, Scheme) else scheme
-    return _RULES.get(func)
+    if func in _RULES:
+        return _RULES[func]
+    table = scheme.table if isinstance(scheme, Scheme) else None
+    if table is None:
+        table = getattr(func, "__self__", None)  # (a page's function: its table's call)
+    if isinstance(table, _schemes.Table):
+        rows = table
+
+        def rule(mesh: Mesh, out: Mesh, *, exact: bool = False, **options):
+            return table_rows(rows, mesh, out, exact=exact, **options)
+
+        return rule
+    return None
 
 
 # ---------------------------------------------------------------------------
@@ -617,6 +658,8 @@ def remesh_matrix(mesh: Mesh, scheme, *, probe: bool | None = None, **options):
         raise ValueError(f"scheme {_name(s)} has no rules here; it can only be probed")
     if rule is not None and not probe:
         S = rule(mesh, out, **options)
+        if S is None:  # (a table whose corner points are beyond the rows: probed)
+            return probe_matrix(mesh, lambda m: s(m, **options), out), out
         err = _relative_error(S @ np.asarray(mesh.vertices), out.vertices)
         if S.shape[0] != out.n_vertices or err > RTOL:
             raise RuntimeError(  # pragma: no cover - a broken numbering contract
@@ -663,7 +706,10 @@ def exact_remesh_matrix(mesh: Mesh, scheme, out: Mesh | None = None, **options) 
         raise ValueError(f"scheme {_name(s)} has no rules here: no exact matrix")
     if out is None:
         out = mesh
-    return rule(mesh, out, exact=True, **options)
+    got = rule(mesh, out, exact=True, **options)
+    if got is None:
+        raise ValueError(f"scheme {_name(s)}'s corner points have no exact rule here")
+    return got
 
 
 def exact_dual_matrix(mesh: Mesh) -> ExactMatrix:

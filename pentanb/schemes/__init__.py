@@ -6,7 +6,11 @@
   (Sections 3 and 6);
 * :mod:`~pentanb.schemes.smoothing`: the dual and ``smooth`` (the paper's
   smoothing);
-* :mod:`~pentanb.schemes.registry`: :data:`SCHEMES`, one table naming them all.
+* :mod:`~pentanb.schemes.registry`: :data:`SCHEMES`, one table naming them all;
+* :mod:`~pentanb.schemes.table`, :mod:`~pentanb.schemes.engine`: a scheme as
+  data (:class:`Table`) and the one engine that evaluates every table
+  (:mod:`~pentanb.schemes.probe` checks a table and derives its twins' and
+  rings' formulas; :mod:`~pentanb.schemes.refs` names its points).
 
 Every operator is a pure function ``Mesh -> Mesh``, on closed and open
 meshes alike (:func:`boundary_corners` names the boundary vertices the dual
@@ -26,8 +30,9 @@ from .classic import (
     vertex_insertion,
 )
 from .pentagonal import pentagonalize, preserve_pentagons
-from .registry import SCHEMES, Scheme, get_scheme
+from .registry import SCHEMES, Scheme, from_table, get_scheme
 from .smoothing import dual, smooth
+from .table import Table
 
 __all__ = [
     "pentagonalize",
@@ -44,6 +49,8 @@ __all__ = [
     "SCHEMES",
     "Scheme",
     "get_scheme",
+    "from_table",
+    "Table",
     "boundary_corners",
     "CORNER_ANGLE",
 ]

@@ -21,7 +21,17 @@ from typing import Any
 import numpy as np
 
 from ..mesh import Mesh
-from .engine import PATHS, Compiled, _bases, _Walk, faces_of, rings_of, slot_index, twins_of
+from .engine import (
+    PATHS,
+    Compiled,
+    _bases,
+    _Walk,
+    faces_of,
+    positions,
+    rings_of,
+    slot_index,
+    twins_of,
+)
 from .refs import Ref, parse_ref
 
 __all__ = ["compile_table", "probes"]
@@ -154,6 +164,7 @@ def compile_table(table: Any) -> Any:
             )
             raise ValueError(f"{name}, {_where(decls_t, int(d[0]), int(s[0]))}: {why}")
         runs.append((walk, starts, twin, corners, offsets))
+    _check_orientation(table, draft, closed[1], name)  # (a prism: convex)
     turns = tuple(_turn(runs[0][0], decls_t, d, name) for d in range(len(decls_t)))
     twins = tuple(
         tuple(_formula(runs, decls_t, turns, d, s, name) for s in range(len(refs)))
@@ -205,6 +216,20 @@ def _open_rule(decls: tuple, table: Any) -> str | None:
             if not safe(ref):
                 return f"{ref} crosses the boundary and has no fallback ('{ref}|...')"
     return None
+
+
+def _check_orientation(table: Any, compiled: Any, mesh: Mesh, name: str) -> None:
+    """The faces must turn as the input's do (counter-clockwise seen from outside):
+    on a convex probe, the output encloses a volume of the input's sign."""
+    walk = _Walk(mesh, table, np.int64)
+    corners, offsets, _ = faces_of(walk, compiled, np.int64)
+    v = positions(walk, table, compiled, dict(table.options))
+    out = Mesh.from_csr(v, corners, offsets, validate=False)
+    if out.volume * mesh.volume <= 0:
+        raise ValueError(
+            f"{name}: its faces turn clockwise seen from outside (an orientation flip): "
+            "list every face's corners counter-clockwise, as the input's"
+        )
 
 
 def _check_faces(corners, offsets, starts, decls, name: str) -> None:

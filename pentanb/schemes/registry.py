@@ -29,6 +29,7 @@ from typing import Any
 
 from ..mesh import Mesh
 from . import classic, pentagonal
+from .table import Table
 
 __all__ = [
     "Scheme",
@@ -39,6 +40,7 @@ __all__ = [
     "OpenCounts",
     "dual_counts",
     "open_counts_after",
+    "from_table",
 ]
 
 Counts = tuple[int, int, int]
@@ -81,6 +83,9 @@ class Scheme:
         with B boundary edges and C corners (B = C = 0: closed, and
         ``counts`` is its first three); None for a scheme whose open counts
         are not known.
+    table : Table or None
+        The scheme as data (:class:`~pentanb.schemes.table.Table`), where it
+        is one: its points' weights and faces (what the analysis reads).
     """
 
     name: str
@@ -94,6 +99,7 @@ class Scheme:
     exact_counts: bool = True
     bound: str = ""
     open_counts: Callable[[int, int, int, int, int], OpenCounts] | None = None
+    table: Table | None = None
 
     def __call__(self, mesh: Mesh, **options) -> Mesh:
         return self.func(mesh, **options)
@@ -122,6 +128,34 @@ class Scheme:
         if self.exact_counts:
             return text
         return text + " at most" + (f" ({self.bound})" if self.bound else "")
+
+
+def from_table(table: Table, paper: str = "", family: str = "comparison") -> Scheme:
+    """A :class:`Scheme` of a :class:`~pentanb.schemes.table.Table`, its counts the table's.
+
+    Closed meshes: the table's counts; open ones (tables without faces round
+    vertices): its boundary terms, the dual's corners C carried over (a
+    boundary vertex of one face stays one).  A user's own table gets what
+    the built-in schemes get: :func:`pentanb.subdivide`, the memory guard,
+    :func:`pentanb.predict_counts`, the explorer, the analysis.
+    """
+
+    def open_counts(V: Any, E: Any, F: Any, B: Any, C: Any) -> OpenCounts:
+        V2, E2, F2, B2 = table.open_counts(V, E, F, B)
+        return V2, E2, F2, B2, C
+
+    return Scheme(
+        table.name,
+        table,
+        table.label,
+        paper or "a table of your own",
+        None,
+        table.counts,
+        options=dict(table.options),
+        family=family,
+        open_counts=None if table.compiled.open_rule else open_counts,
+        table=table,
+    )
 
 
 def count_formula(counts: Callable[..., tuple], boundary: bool = False) -> str:
@@ -275,6 +309,7 @@ _LIST = [
         # a pentagon per half-edge (2E - B), every edge in three (3B on the boundary)
         open_counts=lambda V, E, F, B, C: (V + 2 * E + F, 5 * E - B, 2 * E - B, 3 * B, C),
         family="pentagonal",
+        table=pentagonal.PENTAGONALIZE,
     ),
     _scheme(
         "preserve_pentagons",
@@ -286,6 +321,7 @@ _LIST = [
         open_counts=lambda V, E, F, B, C: (V + 3 * E - B, 6 * E - 2 * B, F + 2 * E - B, 2 * B, C),
         options={"scale": 0.75},
         family="pentagonal",
+        table=pentagonal.PRESERVE_PENTAGONS,
     ),
     _scheme(
         "triangulate",
@@ -308,6 +344,7 @@ _LIST = [
         "Section 3, Figure 3",
         "subdivide",
         open_counts=lambda V, E, F, B, C: (V + E, 4 * E - B, F + 2 * E - B, 2 * B, C),
+        table=classic.LOOP,
     ),
     _scheme(
         "sqrt3_remesh",
@@ -318,6 +355,7 @@ _LIST = [
         # the boundary kept: a triangle (u, w, c_f) on every boundary half-edge
         # (which gives a corner a second face)
         open_counts=lambda V, E, F, B, C: (V + F, 3 * E - B, 2 * E - B, B, 0),
+        table=classic.SQRT3,
     ),
     _scheme(
         "vertex_insertion",
@@ -326,6 +364,7 @@ _LIST = [
         "Section 3",
         "ortho",
         open_counts=lambda V, E, F, B, C: (V + E + F, 4 * E - B, 2 * E - B, 2 * B, C),
+        table=classic.VERTEX_INSERTION,
     ),
     _scheme(
         "corner_cutting",
@@ -336,6 +375,7 @@ _LIST = [
         # a point per half-edge, two per boundary edge (Chaikin's), the corners kept
         open_counts=lambda V, E, F, B, C: (2 * E + B + C, 4 * E + B + C, V + E + F, 2 * B + C, C),
         options={"scale": 0.5},
+        table=classic.CORNER_CUTTING,
     ),
     _scheme(
         "preserve_hexagons",
@@ -347,6 +387,7 @@ _LIST = [
         # gets a second face
         open_counts=lambda V, E, F, B, C: (V + 2 * E + B, 4 * E + B, F + E, 3 * B, 0),
         options={"scale": 0.5},
+        table=classic.PRESERVE_HEXAGONS,
     ),
     _scheme(
         "honeycomb",
@@ -356,6 +397,7 @@ _LIST = [
         "zip",
         # a point per half-edge and per boundary edge (its midpoint), the corners kept
         open_counts=lambda V, E, F, B, C: (2 * E + C, 3 * E + C, V + F, B + C, C),
+        table=classic.HONEYCOMB,
     ),
 ]
 
@@ -372,13 +414,15 @@ def get_scheme(scheme: str | Scheme | Callable) -> Scheme | Callable:
 
     Parameters
     ----------
-    scheme : str, Scheme or callable
-        A key of :data:`SCHEMES`, or a scheme or ``Mesh -> Mesh`` callable.
+    scheme : str, Scheme, Table or callable
+        A key of :data:`SCHEMES`, a scheme, a table of one
+        (:class:`~pentanb.schemes.table.Table`) or a ``Mesh -> Mesh`` callable.
 
     Returns
     -------
     Scheme or callable
-        The registered :class:`Scheme`, or ``scheme`` itself.
+        The registered :class:`Scheme`, a table's (:func:`from_table`), or
+        ``scheme`` itself.
 
     Raises
     ------
@@ -388,6 +432,8 @@ def get_scheme(scheme: str | Scheme | Callable) -> Scheme | Callable:
     TypeError
         For neither a string, a Scheme nor a callable (``5``, None, a list).
     """
+    if isinstance(scheme, Table):
+        return from_table(scheme)
     if isinstance(scheme, Scheme) or (callable(scheme) and not isinstance(scheme, str)):
         return scheme
     if not isinstance(scheme, str):

@@ -59,7 +59,7 @@ __all__ = ["Table", "KINDS"]
 KINDS = ("halfedge", "face", "vertex", "edge")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Table:
     """A local remeshing scheme as data (see the module docstring for the slots).
 
@@ -190,7 +190,15 @@ class Table:
     def counts(self, V: Any, E: Any, F: Any) -> tuple[Any, Any, Any]:
         """(V', E', F') of the output on a closed mesh of V vertices, E edges, F faces.
 
-        Linear in its arguments (works on symbols: the registry prints it).
+        Parameters
+        ----------
+        V, E, F : int
+            The input's vertices, edges and faces (or symbols: the count is
+            linear, and the registry prints it as a formula).
+
+        Returns
+        -------
+        (V', E', F')
         """
         v, e, f, _ = self.open_counts(V, E, F, 0 * V)
         return v, e, f
@@ -198,8 +206,16 @@ class Table:
     def open_counts(self, V: Any, E: Any, F: Any, B: Any) -> tuple[Any, Any, Any, Any]:
         """(V', E', F', B') on a mesh with B boundary edges (the table's own count).
 
-        Faces round vertices are for closed meshes (B = 0).  Evaluated as
-        integer combinations of the arguments, so it works on symbols too.
+        Parameters
+        ----------
+        V, E, F, B : int
+            The input's vertices, edges, faces and boundary edges (B = 0:
+            closed; faces round vertices are for closed meshes).  Evaluated
+            as integer combinations, so symbols work too.
+
+        Returns
+        -------
+        (V', E', F', B')
         """
         H = (0, 2, 0, -1)  # half-edges: 2E - B, as coefficients of (V, E, F, B)
         unit = {"V": (1, 0, 0, 0), "E": (0, 1, 0, 0), "F": (0, 0, 1, 0), "H": H}
