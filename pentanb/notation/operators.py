@@ -58,6 +58,7 @@ from ..schemes._build import (
 )
 from ..schemes.registry import SCHEMES, Counts, count_formula
 from ..schemes.smoothing import dual
+from ..schemes.table import Table
 
 __all__ = [
     "ambo",
@@ -83,6 +84,20 @@ def _check_sides(n, what: str) -> int | None:
     return _checks.count(n, what, 3)
 
 
+#: ambo: the midpoints; every face's copy through them, a face round every vertex.
+AMBO = Table("ambo", vertices=False, edge_points=(0.5,), faces=(("face", "E0"), ("vertex", "E0")))
+#: kis: a flat pyramid (u, w, c_f) on every half-edge.
+KIS = Table("kis", face_points=True, faces=(("halfedge", ("V", "n:V", "F")),))
+#: join: a quad (u, c_g, w, c_f) across every edge.
+JOIN = Table("join", face_points=True, faces=(("edge", ("V", "t:F", "n:V", "F")),))
+#: propeller: the face's inner n-gon through t1, a quad (t1, t2, w, t1') per half-edge.
+PROPELLER = Table(
+    "propeller",
+    edge_points=(1 / 3, 2 / 3),
+    faces=(("face", "E0"), ("halfedge", ("E0", "E1", "n:V", "n:E0"))),
+)
+
+
 def ambo(mesh: Mesh) -> Mesh:
     """Conway's ambo ``a`` (rectification): a vertex at every edge midpoint.
 
@@ -103,10 +118,7 @@ def ambo(mesh: Mesh) -> Mesh:
         vertex (its outgoing edges counter-clockwise).
     """
     check_closed(mesh, "ambo")
-    e = mesh.halfedge_edge
-    ring, ring_off = mesh.vertex_ring
-    corners, offsets = concat_faces((e, mesh.offsets), (e[ring], ring_off))
-    return output(edge_points(mesh, 1), corners, offsets)
+    return AMBO(mesh)
 
 
 def truncate(mesh: Mesh, n: int | None = None, ratio: float = 1.0 / 3.0) -> Mesh:
@@ -203,6 +215,8 @@ def kis(mesh: Mesh, n: int | None = None) -> Mesh:
     """
     check_closed(mesh, "kis")
     n = _check_sides(n, "kis's face size n")
+    if n is None:
+        return KIS(mesh)
     chosen = np.ones(mesh.n_faces, dtype=bool) if n is None else mesh.face_sizes == n
     if not chosen.any():
         return mesh
@@ -240,11 +254,7 @@ def join(mesh: Mesh) -> Mesh:
         the left of ``u -> w``.
     """
     check_closed(mesh, "join")
-    h = mesh.edge_halfedge
-    c = mesh.n_vertices + mesh.halfedge_face
-    quads = np.stack([mesh.corners[h], c[mesh.twin[h]], mesh.head[h], c[h]], axis=1)
-    corners, offsets = fixed_size(quads)
-    return output(np.concatenate([mesh.vertices, mesh.face_centroids]), corners, offsets)
+    return JOIN(mesh)
 
 
 def snub(mesh: Mesh) -> Mesh:
@@ -302,11 +312,7 @@ def propeller(mesh: Mesh) -> Mesh:
         lies in its old face's plane.
     """
     check_closed(mesh, "propeller")
-    t1, t2 = _thirds(mesh)
-    quads = np.stack([t1, t2, mesh.head, t1[mesh.next]], axis=1)
-    corners, offsets = concat_faces((t1, mesh.offsets), fixed_size(quads))
-    vertices = np.concatenate([mesh.vertices, edge_points(mesh, 2)])
-    return output(vertices, corners, offsets)
+    return PROPELLER(mesh)
 
 
 def whirl(mesh: Mesh) -> Mesh:
