@@ -106,7 +106,7 @@ def test_import_pentanb_loads_no_heavy_module():
 
 
 def _private_members() -> set[str]:
-    names = set(Mesh.__slots__) | {n for n in vars(Mesh) if n.startswith("_")}
+    names = set(Mesh.__slots__) | {n for n in dir(Mesh) if n.startswith("_")}
     return {n for n in names if n.startswith("_") and not n.startswith("__")}
 
 

@@ -28,7 +28,7 @@ extension, bit for bit.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from typing import Any, Generic, TypeVar, overload
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -36,6 +36,7 @@ from numpy.typing import ArrayLike, NDArray
 from .. import _jit
 from .boundary import CLOSED as _CLOSED
 from .boundary import describe_boundary, open_twins
+from .cache import Several, _Connectivity, _connectivity
 from .coerce import (
     FloatArray,
     IntArray,
@@ -49,9 +50,7 @@ from .coerce import (
     frozen,
     readonly,
 )
-from .geometry import face_means, scaled_newell
 from .halfedge import (
-    fan_triangle_corners,
     halfedge_face,
     head_of,
     heads_at,
@@ -63,108 +62,17 @@ from .halfedge import (
     vertex_rings,
     walk_rings,
 )
+from .pieces import Pieces
+from .positions import Positions
 from .validate import validate as validate_mesh
 from .validate import validate_rings
 
 __all__ = ["Mesh", "Rings", "Several", "check_mesh", "check_closed"]
 
 Rings = tuple[IntArray, IntArray]
-_T = TypeVar("_T")
 
 
-class Several(dict):
-    """Connectivity values one producer wrote together, by property name.
-
-    A producer handed over for one property (say ``vertex_ring``) may
-    return this instead of the value alone: every value in it is cached at
-    once (so that one pass can write two arrays that are read together).
-    """
-
-
-class _Connectivity:
-    """The faces of a mesh and everything derived from them alone.
-
-    Shared by every mesh with these faces (:meth:`Mesh.with_vertices`, the
-    dual of a dual), so each array is derived once for all of them.
-
-    Attributes
-    ----------
-    corners, offsets : read-only int arrays
-        The faces in CSR form.
-    values : dict
-        Derived arrays (read-only) and numbers, by property name.
-    producers : dict
-        Zero-argument callables an operator handed over to write a derived
-        array on first use (see :meth:`Mesh._new`); each runs at most once
-        and is then dropped.
-    """
-
-    __slots__ = ("corners", "offsets", "values", "producers")
-
-    def __init__(self, corners: IntArray, offsets: IntArray) -> None:
-        self.corners = corners
-        self.offsets = offsets
-        self.values: dict[str, Any] = {}
-        self.producers: dict[str, Callable[[], Any]] = {}
-
-
-class _Derived(Generic[_T]):
-    """A read-only property of a mesh computed on first use and cached.
-
-    With ``connectivity=True`` the value depends on the faces alone and is
-    kept in the mesh's shared :class:`_Connectivity`; an operator may have
-    handed over a producer for it, which then replaces the computation.
-    Otherwise (positions are involved) it is kept by the mesh itself.
-    """
-
-    def __init__(self, func: Callable[[Mesh], _T], connectivity: bool) -> None:
-        self.func = func
-        self.name = func.__name__
-        self.connectivity = connectivity
-        self.__doc__ = func.__doc__
-
-    @overload
-    def __get__(self, mesh: None, owner: type | None = None) -> _Derived[_T]: ...
-
-    @overload
-    def __get__(self, mesh: Mesh, owner: type | None = None) -> _T: ...
-
-    def __get__(self, mesh: Mesh | None, owner: type | None = None) -> _T | _Derived[_T]:
-        if mesh is None:
-            return self
-        shared = mesh._shared
-        store = shared.values if self.connectivity else mesh._own
-        try:
-            return store[self.name]
-        except KeyError:
-            pass
-        producer = shared.producers.pop(self.name, None) if self.connectivity else None
-        if producer is None:
-            value = self.func(mesh)
-        else:
-            value = producer()
-            if isinstance(value, Several):  # several values written in one pass
-                for name, made in value.items():
-                    if name != self.name:
-                        shared.producers.pop(name, None)
-                        store.setdefault(name, frozen(made))
-                value = value[self.name]
-            value = frozen(value)
-        store[self.name] = value
-        return value
-
-
-def _connectivity(func: Callable[[Mesh], _T]) -> _Derived[_T]:
-    """Decorator: a cached property that depends on the faces alone."""
-    return _Derived(func, connectivity=True)
-
-
-def _geometry(func: Callable[[Mesh], _T]) -> _Derived[_T]:
-    """Decorator: a cached property that depends on the vertex positions."""
-    return _Derived(func, connectivity=False)
-
-
-class Mesh:
+class Mesh(Positions, Pieces):
     """An oriented 2-manifold polygon mesh, closed or with boundary (immutable).
 
     Parameters
@@ -936,174 +844,6 @@ class Mesh:
             if name in self._shared.values:
                 shared.values[name] = self._shared.values[name]
         return _Faces(shared, self.n_vertices)
-
-    # ------------------------------------------------------------------ geometry
-    @_geometry
-    def _extent(self) -> float:
-        """The largest absolute coordinate (an upper bound, for operator outputs).
-
-        Operators place new points by affine combinations with non-negative
-        weights, which never move a point outside the box of its input, so
-        an output inherits its input's extent (see :meth:`_note_extent`).
-        Above :data:`SAFE_EXTENT` sums of coordinates could overflow, and
-        the geometry is computed on positions scaled by a power of two
-        (exact) instead.
-        """
-        v = self._vertices
-        if v.size == 0:
-            return 0.0
-        return float(max(v.max(), -v.min()))
-
-    def _note_extent(self, bound: float) -> None:
-        """Record an upper bound of :attr:`_extent` known without a pass over the positions."""
-        self._own.setdefault("_extent", float(bound))
-
-    @_geometry
-    def face_centroids(self) -> FloatArray:
-        """(m, 3) float: the plain mean of each face's vertices."""
-        means = face_means(
-            self._vertices, self._corners, self._offsets, self._uniform_size, self._extent
-        )
-        return readonly(means)
-
-    def face_means(self, values: ArrayLike) -> np.ndarray:
-        """Average per-vertex values over every face.
-
-        Parameters
-        ----------
-        values : (n,) or (n, d) float
-
-        Returns
-        -------
-        (m,) or (m, d) float
-            A new array (the caller's to keep).  Finite for any finite
-            ``values``: sums that would overflow are taken on values scaled
-            down by a power of two.
-
-        Notes
-        -----
-        The corners are gathered in blocks of faces, so the memory beyond
-        the result stays small whatever the mesh's size.
-        """
-        values = np.asarray(values, dtype=np.float64)
-        flat = values.reshape(values.shape[0], -1)
-        extent = float(np.abs(flat).max()) if flat.size else 0.0
-        means = face_means(flat, self._corners, self._offsets, self._uniform_size, extent)
-        return means.reshape((self.n_faces,) + values.shape[1:])
-
-    @_geometry
-    def face_normals(self) -> FloatArray:
-        """(m, 3) float: unit normals (Newell's method; zero for degenerate faces).
-
-        Faces whose cross products would overflow or underflow (coordinates
-        near 1e-150 or 1e150 and beyond) are computed again from their
-        corners relative to the first, scaled per face by a power of two,
-        so their normals neither vanish nor become NaN.
-        """
-        p = self._vertices[self._corners]
-        q = self._vertices[self.head]
-        with np.errstate(over="ignore", under="ignore", invalid="ignore"):
-            cross = np.cross(p, q)
-            n = np.add.reduceat(cross, self._offsets[:-1], axis=0)
-            length = np.linalg.norm(n, axis=1, keepdims=True)
-        # lengths outside [2**-800, 2**800] may have lost everything to
-        # underflow or overflow: those faces again, rescaled
-        redo = np.flatnonzero(~((length[:, 0] >= 2.0**-800) & (length[:, 0] <= 2.0**800)))
-        if redo.size:
-            n[redo] = scaled_newell(self._vertices, self._corners, self._offsets, redo)
-            length = np.linalg.norm(n, axis=1, keepdims=True)
-        return readonly(np.divide(n, length, out=np.zeros_like(n), where=length > 0))
-
-    @property
-    def volume(self) -> float:
-        """Signed enclosed volume (positive for outward-oriented faces).
-
-        Each face is fanned from its centroid; the tetrahedra to the origin
-        are summed.  Coordinates beyond 2**300 (or below 2**-300) are
-        scaled by a power of two first, so the result is ``inf`` (or 0)
-        only when the volume itself is beyond float64's range.
-
-        Closed meshes only: an open surface encloses nothing (the sum would
-        depend on where the origin is).
-
-        Raises
-        ------
-        MeshError
-            For an open mesh, naming its boundary loops.
-        """
-        check_closed(self, "volume")
-        extent = self._extent
-        if extent == 0 or 2.0**-300 < extent < 2.0**300:
-            c = self.face_centroids[self.halfedge_face]
-            p = self._vertices[self._corners]
-            q = self._vertices[self.head]
-            return float(np.einsum("ij,ij->", c, np.cross(p, q)) / 6.0)
-        shift = int(np.frexp(extent)[1])
-        small = self._rescaled(-shift)
-        with np.errstate(over="ignore", under="ignore"):
-            return float(np.ldexp(small.volume, 3 * shift))
-
-    @property
-    def bounds(self) -> FloatArray:
-        """(2, 3) float: the lower and upper corners of the bounding box (read-only)."""
-        return readonly(np.stack([self._vertices.min(axis=0), self._vertices.max(axis=0)]))
-
-    def fan_triangles(self) -> tuple[IntArray, IntArray]:
-        """Fan triangulation of every face from its first corner (for drawing).
-
-        Returns
-        -------
-        triangles : (H - 2m, 3) int
-            Vertex indices, counter-clockwise like their faces: triangle
-            ``k`` of face ``f`` is its corners ``0, k + 1, k + 2``.
-        triangle_face : (H - 2m,) int
-            The face each triangle comes from.
-
-        See Also
-        --------
-        fan_triangle_corners : the same triangles as corner indices.
-        """
-        return self._fan
-
-    @_connectivity
-    def _fan(self) -> tuple[IntArray, IntArray]:
-        tri_corners, tri_face = fan_triangle_corners(self._offsets)
-        return readonly(self._corners[tri_corners]), tri_face
-
-    def component_labels_of_faces(self) -> IntArray:
-        """The connected component of every face.
-
-        Returns
-        -------
-        (m,) int
-            The label (see :attr:`component_labels`) of every face, read-only.
-        """
-        return readonly(self.component_labels[self._corners[self._offsets[:-1]]])
-
-    @_connectivity
-    def component_labels(self) -> IntArray:
-        """(n,) int: a component label (its smallest vertex index) per vertex.
-
-        Shiloach-Vishkin style: hook the larger root of every edge whose ends
-        disagree onto the smaller one, then jump pointers until every vertex
-        points at its root; a few rounds on any mesh.
-        """
-        u, w = self.edges[:, 0], self.edges[:, 1]
-        lab = np.arange(self.n_vertices, dtype=np.int64)
-        while True:
-            lu, lw = lab[u], lab[w]
-            differ = lu != lw
-            if not differ.any():
-                return readonly(lab)
-            lu, lw = lu[differ], lw[differ]
-            np.minimum.at(lab, np.maximum(lu, lw), np.minimum(lu, lw))
-            while True:
-                jumped = lab[lab]
-                if np.array_equal(jumped, lab):
-                    break
-                lab = jumped
-
-    # ------------------------------------------------------------------ checks
 
 
 class _Faces:
