@@ -105,7 +105,7 @@ class Table:
     """
 
     name: str
-    faces: tuple[tuple[str, tuple[str, ...]], ...]
+    faces: Any
     vertices: bool = True
     edge_points: tuple[float, ...] = ()
     face_points: bool = False
