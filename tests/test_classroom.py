@@ -6,7 +6,7 @@ sections, and the students' version of the notebooks.
   a hint, never a traceback, on an answer of the wrong kind.  The teacher's answers
   are written here from the paper's count formulas and by hand, not computed by the
   checks.
-* Every numbered notebook ends with an "Exercises" section of two to four exercises:
+* Every numbered notebook ends with an "Exercises" section of two to five exercises:
   a question, an answer cell calling ``check`` and a solution cell tagged
   ``solution``.
 * :func:`pentanb.classroom.student_version` (``python -m pentanb classroom OUT_DIR``)
@@ -83,6 +83,13 @@ TEACHER = {
     "06.2": "preserve_pentagons",
     "06.3": ["sqrt3_remesh", "vertex_insertion", "pentagonalize", "triangulate"],
     "06.4": "octahedron",  # triangles stay: 6 + 8 vertices would be V + F
+    # pentagonalization's pentagon with two more edge points: one heptagon per half-edge
+    "06.5": pentanb.Table(
+        "heptagons",
+        edge_points=(0.2, 0.4, 0.6, 0.8),
+        face_points=True,
+        faces=(("halfedge", ("E0", "E1", "E2", "E3", "n:V", "n:E0", "F")),),
+    ),
     # rabbit: 136 triangles, 81 quads, 14 pentagons: 3 * 136 + 4 * 81 + 5 * 14
     "07.1": 802,
     "07.2": 136 + 81,
@@ -129,6 +136,7 @@ WRONG = {
     "06.2": "loop_remesh",
     "06.3": ["pentagonalize", "vertex_insertion"],
     "06.4": "cube",
+    "06.5": pentanb.SCHEMES["pentagonalize"].table,  # pentagons
     "07.1": 801,
     "07.2": 231,
     "07.3": _TETRAHEDRON_OBJ,
@@ -355,7 +363,7 @@ def test_a_notebook_ends_with_its_exercises(path):
     ]
     solved = [_CHECK.findall(_source(c)) for c in section if classroom.SOLUTION_TAG in _tags(c)]
     ids = [e.id for e in classroom.exercises(number)]
-    assert 2 <= len(ids) <= 4
+    assert 2 <= len(ids) <= 5
     assert [a for a in asked if a] == [[i] for i in ids], "one answer cell per exercise"
     assert solved == [[i] for i in ids], "one solution cell per exercise"
     headings = [_source(c).splitlines()[0] for c in section if c["cell_type"] == "markdown"][1:]

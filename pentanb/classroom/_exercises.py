@@ -377,6 +377,31 @@ def _ex_06_4(answer: Any) -> str | None:
     return "on this mesh triangulate gives exactly V + F, 3E, 2E; what does it do to a triangle?"
 
 
+def _heptagon_hint(table: Any) -> str | None:
+    """None when ``table`` makes only heptagons on a cube and a tetrahedron, else a hint."""
+    from ..schemes.table import Table
+
+    if not isinstance(table, Table):
+        return "give a pentanb.Table, like pentanb.Table('mine', edge_points=..., faces=...)"
+    for name in ("cube", "tetrahedron"):
+        mesh = shapes.get(name)
+        faces = table.counts(*_vef(mesh))[2]
+        if faces > MAX_FACES:
+            return f"on the {name} your table makes {faces:,} faces: a smaller table will do"
+        sizes = table(mesh).face_size_histogram()
+        if set(sizes) != {7}:
+            return (
+                f"on the {name} its faces are {_fmt_hist(sizes)}: every kind of face needs "
+                "7 corners on every mesh (a 'face' kind copies the input's face sizes)"
+            )
+    return None
+
+
+@_exercise("06.5", "extend", "a table whose every face is a heptagon")
+def _ex_06_5(answer: Any) -> str | None:
+    return _heptagon_hint(answer)
+
+
 # --------------------------------------------------------------------------------------
 # 07 complex model
 # --------------------------------------------------------------------------------------
