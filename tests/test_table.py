@@ -126,6 +126,10 @@ GYRO = ("E0", "E1", "n:V", "n:E0", "F")
         (dict(faces=(("halfedge", GYRO[::-1]),)), "turn clockwise seen from outside"),
         (dict(faces=(("halfedge", ("E0", "n:V", "F")),)), r"slot 0 .*twins do not pair"),
         (dict(faces=(("halfedge", GYRO),), edge_points=(0.3, 0.5)), "must be symmetric"),
+        (
+            dict(faces=(("halfedge", ("V", "n:V", "F")),)),
+            "the edge points of the table are in no face",
+        ),
         (dict(faces=(("halfedge", GYRO),), edge_points=(2 / 3, 1 / 3)), "must increase"),
         (
             dict(faces=(("halfedge", GYRO),), corner_points={"V": 0.5, "n:V": 0.4}),

@@ -356,7 +356,12 @@ def _derived_rings(corners: np.ndarray, offsets: np.ndarray) -> tuple:
 def _ordered(runs: list, compiled: Any, block: str, group: list, name: str) -> tuple:
     """The rules of ``group`` in their order round the point, from the first probe."""
     if not group:
-        raise ValueError(f"{name}: a point of block {block} has no edge (a table bug)")
+        what = {"V": "the old vertices", "E": "the edge points", "F": "the face points"}
+        point = what.get(block, "the corner points")
+        raise ValueError(
+            f"{name}: {point} of the table are in no face; every point must be a corner of "
+            "some face (drop it, or use it in faces)"
+        )
     walk, starts, _, corners, offsets = runs[0]
     m = walk.m
     vals = np.stack([slot_index(walk, compiled, starts, r) for r in group], 1)  # (H, c)
