@@ -85,7 +85,9 @@ def _check_sides(n, what: str) -> int | None:
 
 
 #: ambo: the midpoints; every face's copy through them, a face round every vertex.
-AMBO = Table("ambo", vertices=False, edge_points=(0.5,), faces=(("face", ("E0",)), ("vertex", ("E0",))))
+AMBO = Table(
+    "ambo", vertices=False, edge_points=(0.5,), faces=(("face", ("E0",)), ("vertex", ("E0",)))
+)
 #: kis: a flat pyramid (u, w, c_f) on every half-edge.
 KIS = Table("kis", face_points=True, faces=(("halfedge", ("V", "n:V", "F")),))
 #: join: a quad (u, c_g, w, c_f) across every edge.
