@@ -119,7 +119,7 @@ class _Walk:
         if path in self._at:
             return self._at[path]
         m = self.m
-        move = {"n": m.next, "p": m.prev, "t": m.twin}[path[-1]]
+        move = getattr(m, {"n": "next", "p": "prev", "t": "twin"}[path[-1]])  # (that one only)
         if len(path) == 1:
             got: tuple[np.ndarray, np.ndarray | None] = (move, None)
         else:
@@ -166,6 +166,15 @@ class _Walk:
         full = self.full(ref.elem, ref.j)
         if not ref.path:
             return full[: self.H]
+        k = _mesh.uniform_size(self.m)
+        if ref.path in ("n", "p") and k and not self.bh.size:  # k-gons: the face's next row
+            rows, got = full.reshape(-1, k), np.empty_like(full)
+            turn = got.reshape(-1, k)
+            if ref.path == "n":
+                turn[:, :-1], turn[:, -1] = rows[:, 1:], rows[:, 0]
+            else:
+                turn[:, 1:], turn[:, 0] = rows[:, :-1], rows[:, -1]
+            return got
         x, bad = self.at(ref.path)
         got = full[x]
         lost = got < 0 if ref.elem in "FC" and self.bh.size else None
